@@ -1,0 +1,2 @@
+"""camtrain: valve-train tribology and mechanics from a text deck."""
+__version__ = "0.1.0"

@@ -1,0 +1,52 @@
+"""The public Python API: load a deck, resolve its plan, run it, write its outputs.
+
+    >>> import camtrain.api as ct
+    >>> deck = ct.load("decks/harrison_flat.toml")      # doctest: +SKIP
+    >>> result = ct.run(deck)                          # doctest: +SKIP
+    >>> result["lift"], result.metrics                  # doctest: +SKIP
+
+The command line is a thin layer over these functions.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from camtrain.deck.load import LoadedDeck, load_deck, load_deck_text
+from camtrain.deck.schema import Deck
+from camtrain.result import Result
+from camtrain.scene import Plan, resolve
+
+
+def load(path: str | Path) -> LoadedDeck:
+    """Read and validate a deck file ('-' for standard input). Raises InputError."""
+    return load_deck(str(path))
+
+
+def loads(text: str, name: str = "<text>") -> LoadedDeck:
+    """Validate deck text (TOML)."""
+    return load_deck_text(text, name)
+
+
+def plan(deck: LoadedDeck | Deck) -> Plan:
+    """The effects this deck calls for, with the reason for each."""
+    return resolve(_model(deck))
+
+
+def run(deck: LoadedDeck | Deck | str | Path) -> Result:
+    """Run a deck (object or path) and return its Result."""
+    from camtrain.runner import run_plan
+
+    if isinstance(deck, str | Path):
+        deck = load(deck)
+    return run_plan(_model(deck))
+
+
+def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0) -> list[Path]:
+    """Write summary.json and cycle.csv into ``out_dir`` atomically."""
+    from camtrain.report.tables import write_outputs
+
+    return write_outputs(result, deck, Path(out_dir), wall_time)
+
+
+def _model(deck: LoadedDeck | Deck) -> Deck:
+    return deck.model if isinstance(deck, LoadedDeck) else deck

@@ -1,0 +1,175 @@
+"""Read a deck (file or standard input), parse TOML, validate it into the SI model.
+
+Every failure a user can cause becomes an :class:`InputError` listing all problems found.
+"""
+from __future__ import annotations
+
+import csv
+import dataclasses
+import hashlib
+import io
+import math
+import tomllib
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from camtrain.deck.fields import build_section, schema_paths
+from camtrain.deck.schema import Deck
+from camtrain.errors import InputError, Problem
+
+MAX_DECK_BYTES = 20 * 1024 * 1024
+
+
+@dataclass(frozen=True)
+class LoadedDeck:
+    """A validated deck with where it came from."""
+
+    model: Deck
+    path: str
+    sha256: str
+    text: str
+
+
+def read_text(path: str) -> tuple[str, str]:
+    """Return (display name, text) of a deck path, or '-' for standard input."""
+    import sys
+
+    if path == "-":
+        data = sys.stdin.buffer.read(MAX_DECK_BYTES + 1)
+        name = "<stdin>"
+    else:
+        p = Path(path)
+        if not p.exists():
+            raise InputError(Problem("", f"deck file {path!r} does not exist"))
+        if p.is_dir():
+            raise InputError(Problem("", f"{path!r} is a directory, not a deck file"))
+        try:
+            with p.open("rb") as fh:
+                data = fh.read(MAX_DECK_BYTES + 1)
+        except OSError as exc:
+            raise InputError(Problem("", f"cannot read {path!r}: {exc.strerror}")) from None
+        name = path
+    if len(data) > MAX_DECK_BYTES:
+        raise InputError(Problem("", f"{name} is larger than {MAX_DECK_BYTES // 2**20} MiB; "
+                                     "a deck is a small text file"))
+    if b"\x00" in data:
+        raise InputError(Problem("", f"{name} is a binary file, not a TOML deck"))
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(Problem("", f"{name} is not UTF-8 text (byte {exc.start})")) from None
+    return name, text
+
+
+def parse_toml(text: str, name: str) -> dict:
+    """Parse TOML text; errors carry line and column."""
+    if not text.strip():
+        raise InputError(Problem("", "the deck is empty"), source=name)
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(Problem("", f"malformed TOML: {exc}"), source=name) from None
+
+
+def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
+    """Validate raw TOML data into the immutable SI model, reporting every problem at once."""
+    problems: list[Problem] = []
+    deck = build_section(Deck, raw, "", problems, schema_paths(Deck))
+    if deck is None or problems:
+        raise InputError(problems or [Problem("", "invalid deck")], source=name)
+    deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
+    return deck
+
+
+def load_deck(path: str) -> LoadedDeck:
+    """Read, parse and validate a deck file ('-' for standard input)."""
+    name, text = read_text(path)
+    raw = parse_toml(text, name)
+    base = Path(path).resolve().parent if path != "-" else Path.cwd()
+    model = validate(raw, name, base)
+    return LoadedDeck(model, name, hashlib.sha256(text.encode()).hexdigest(), text)
+
+
+def load_deck_text(text: str, name: str = "<text>", base_dir: Path | None = None) -> LoadedDeck:
+    """Parse and validate deck text (for scripts and tests)."""
+    raw = parse_toml(text, name)
+    model = validate(raw, name, base_dir)
+    return LoadedDeck(model, name, hashlib.sha256(text.encode()).hexdigest(), text)
+
+
+# --------------------------------------------------------------------------- lift tables
+
+def _resolve_lift_table(deck: Deck, base_dir: Path, name: str) -> Deck:
+    """Read a lift table file into the model and store its angles in radians."""
+    table = deck.lift.table
+    if table is None:
+        return deck
+    path = "lift.table"
+    if table.file is not None:
+        angles, lifts = read_lift_csv(table.file, base_dir, name)
+        # lifts from a file are in mm like inline lifts; convert to SI here
+        lifts = tuple(v * 1e-3 for v in lifts)
+    else:
+        angles, lifts = table.angles, table.lifts
+    factor = math.pi / 180.0 if table.angle_unit == "deg" else 1.0
+    angles = tuple(a * factor for a in angles)
+    problems = []
+    for i in range(1, len(angles)):
+        if not angles[i] > angles[i - 1]:
+            what = "repeats" if angles[i] == angles[i - 1] else "decreases"
+            problems.append(Problem(f"{path}.angles[{i}]", f"angle {what}",
+                                    round(angles[i] / factor, 10),
+                                    f"angles strictly increasing (previous "
+                                    f"{round(angles[i - 1] / factor, 10)})"))
+            break
+    if angles and angles[-1] - angles[0] > 2 * math.pi + 1e-12:
+        problems.append(Problem(f"{path}.angles", "span more than one revolution", None,
+                                "a span of at most 360 deg"))
+    if problems:
+        raise InputError(problems, source=name)
+    new_table = dataclasses.replace(table, angles=angles, lifts=lifts, file=None)
+    return dataclasses.replace(deck, lift=dataclasses.replace(deck.lift, table=new_table))
+
+
+def read_lift_csv(ref: str, base_dir: Path, name: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """Read (angle, lift) pairs from a CSV file; '#' lines are comments, a header row is skipped."""
+    field = "lift.table.file"
+    if ref.startswith("package:"):
+        res = resources.files("camtrain.data").joinpath(ref.removeprefix("package:"))
+        if not res.is_file():
+            available = sorted(p.name for p in resources.files("camtrain.data").iterdir()
+                               if p.name.endswith(".csv"))
+            raise InputError(Problem(field, "no such data set shipped with camtrain", ref,
+                                     "one of " + ", ".join(f"package:{a}" for a in available)),
+                             source=name)
+        text = res.read_text(encoding="utf-8")
+    else:
+        p = (base_dir / ref) if not Path(ref).is_absolute() else Path(ref)
+        if not p.is_file():
+            raise InputError(Problem(field, "file not found", str(ref),
+                                     "a CSV file relative to the deck"), source=name)
+        text = p.read_text(encoding="utf-8", errors="replace")
+    angles: list[float] = []
+    lifts: list[float] = []
+    rows = csv.reader(io.StringIO(text))
+    for lineno, row in enumerate(rows, start=1):
+        cells = [c.strip() for c in row if c.strip()]
+        if not cells or cells[0].startswith("#"):
+            continue
+        try:
+            a, v = float(cells[0]), float(cells[1])
+        except (ValueError, IndexError):
+            if not angles:  # header row
+                continue
+            raise InputError(Problem(field, f"line {lineno} is not two numbers", ",".join(row)),
+                             source=name) from None
+        if not (math.isfinite(a) and math.isfinite(v)):
+            raise InputError(Problem(field, f"line {lineno} holds a non-finite value",
+                                     ",".join(row)), source=name)
+        angles.append(a)
+        lifts.append(v)
+    if len(angles) < 8:
+        raise InputError(Problem(field, f"holds {len(angles)} data points", ref,
+                                 "at least 8"), source=name)
+    return tuple(angles), tuple(lifts)

@@ -1,0 +1,407 @@
+"""The valve-train deck: every section and field, with its unit, range and prompt.
+
+This module is the single description of a deck. Validation, the SI model, the commented
+templates (`camtrain template`) and the JSON Schema (`camtrain schema`) are all derived from it.
+Field docs are written as prompts, in the spirit of Ball's (1988) template input file.
+Values in the model are SI; units below are the units written in the deck.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from camtrain.deck.fields import option, quantity, section
+from camtrain.errors import Problem
+from camtrain.units import from_si
+
+MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
+PIVOTED = ("finger", "rocker")
+LIFT_FORMS = ("four_power", "multipol", "table", "exp_poly", "polynomial",
+              "williams_elementary", "williams_low_jerk")
+
+
+def _mm(x: float) -> str:
+    return f"{from_si(x, 'mm'):g} mm"
+
+
+# --------------------------------------------------------------------------- speed
+
+@dataclass(frozen=True, kw_only=True)
+class Speed:
+    """Operating speed. Give the camshaft speed (as Ball's template) or the engine speed."""
+
+    camshaft: float | None = quantity(
+        "Camshaft rotational speed", "rpm", default=None, ge=0, example=2500.0)
+    engine: float | None = quantity(
+        "Engine (crankshaft) speed, instead of camshaft; camshaft speed = engine speed / 2",
+        "rpm", default=None, ge=0)
+
+    def problems(self, path: str) -> list[Problem]:
+        given = [n for n in ("camshaft", "engine") if getattr(self, n) is not None]
+        if len(given) != 1:
+            return [Problem(path, "give exactly one of speed.camshaft or speed.engine",
+                            given or None, "one speed in rpm")]
+        return []
+
+    @property
+    def omega(self) -> float:
+        """Camshaft angular speed [rad/s] (the model stores speeds in rad/s)."""
+        if self.camshaft is not None:
+            return self.camshaft
+        return self.engine / 2.0
+
+
+# --------------------------------------------------------------------------- mechanism
+
+@dataclass(frozen=True, kw_only=True)
+class Mechanism:
+    """The follower and how it drives the valve. Pivot geometry follows Dyson's (1980) notation."""
+
+    type: Literal["flat", "domed", "finger", "rocker", "pushrod", "desmodromic"] = option(
+        "Follower type: flat (bucket tappet), domed (curved translating), finger (end-pivoted), "
+        "rocker (centrally pivoted), pushrod (push rod and rocker), desmodromic (opening and "
+        "closing cams)", example="flat")
+    rotation: Literal["clockwise", "anticlockwise"] = option(
+        "Direction of cam rotation, viewed with the pivot to the right of the cam centre "
+        "(clockwise as Dyson and Lim)", default="clockwise")
+    follower_radius: float | None = quantity(
+        "Radius of curvature of the follower face in contact with the cam, r_f", "mm",
+        default=None, gt=0, applies="domed, finger, rocker, pushrod")
+    offset: float = quantity(
+        "Offset of the follower axis from the cam centre (domed follower)", "mm", default=0.0,
+        applies="domed")
+    face_length: float | None = quantity(
+        "Usable length (flat: diameter) of the follower face; contact must stay on it", "mm",
+        default=None, gt=0)
+    A: float | None = quantity(
+        "A: pivot to the centre of curvature of the follower face (UQ)", "mm", default=None,
+        gt=0, applies="finger, rocker")
+    B: float | None = quantity(
+        "B: pivot to the centre of the valve-contact pad (UV)", "mm", default=None, gt=0,
+        applies="finger, rocker")
+    D: float | None = quantity(
+        "D: cam centre to pivot (OU)", "mm", default=None, gt=0, applies="finger, rocker")
+    kappa: float | None = quantity(
+        "kappa (CHI): angle between OU and the direction of valve motion", "deg", default=None,
+        gt=-360, lt=360, applies="finger, rocker")
+    lambda_: float | None = quantity(
+        "lambda: angle VUQ between the valve arm and the cam arm of the follower", "deg",
+        default=None, gt=-360, lt=360, applies="finger, rocker", key="lambda")
+    min_concave_radius: float | None = quantity(
+        "Minimum cam concavity: the largest grinding-wheel radius; concave flanks must be "
+        "less curved", "mm", default=None, gt=0)
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        needs_rf = ("domed", "finger", "rocker", "pushrod")
+        if self.type in needs_rf and self.follower_radius is None:
+            out.append(Problem(f"{path}.follower_radius",
+                               f"is required for a {self.type} follower", None,
+                               "a radius > 0 in mm"))
+        if self.type == "flat" and self.follower_radius is not None:
+            out.append(Problem(f"{path}.follower_radius", "does not apply to a flat follower",
+                               _mm(self.follower_radius), "no value",
+                               "remove it, or choose type = \"domed\""))
+        if self.type in PIVOTED:
+            for name in ("A", "B", "D", "kappa", "lambda_"):
+                if getattr(self, name) is None:
+                    key = "lambda" if name == "lambda_" else name
+                    out.append(Problem(f"{path}.{key}",
+                                       f"is required for a {self.type} follower (pivot geometry)",
+                                       None, "a value"))
+        if self.offset != 0.0 and self.type != "domed":
+            out.append(Problem(f"{path}.offset", "applies to a domed follower only",
+                               _mm(self.offset), "0 or no value"))
+        return out
+
+
+# --------------------------------------------------------------------------- cam
+
+@dataclass(frozen=True, kw_only=True)
+class Cam:
+    """The cam lobe."""
+
+    base_radius: float = quantity("Base-circle radius r_B", "mm", gt=0, example=18.0)
+    width: float | None = quantity(
+        "Cam (lobe) width L; needed for contact loads, Hertz stress and friction", "mm",
+        default=None, gt=0, example=12.0)
+    taper_angle: float = quantity(
+        "Taper angle of a tapered cam (with a domed follower, Yang 1992)", "deg", default=0.0,
+        ge=0, lt=45, applies="domed")
+
+
+# --------------------------------------------------------------------------- lift
+
+@dataclass(frozen=True, kw_only=True)
+class Ramps:
+    """Constant-velocity ramps before and after the event (lift at the end of the ramp)."""
+
+    opening_height: float = quantity("Opening ramp height", "mm", default=0.0, ge=0,
+                                     example=0.5)
+    opening_length: float = quantity("Opening ramp length", "deg", default=0.0, ge=0, lt=180,
+                                     example=25.0)
+    closing_height: float = quantity("Closing ramp height", "mm", default=0.0, ge=0, example=0.5)
+    closing_length: float = quantity("Closing ramp length", "deg", default=0.0, ge=0, lt=180,
+                                     example=25.0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class FourPower:
+    """Ball's four-power polynomial: l = Y_R + l_max + sum C_n (phi/phi_T)^n over |phi| <= phi_T."""
+
+    half_period: float = quantity("Cam half period phi_T (action period)", "deg", gt=0, lt=180,
+                                  example=60.0)
+    max_lift: float = quantity("Maximum lift above the ramp, l_max", "mm", gt=0, example=8.9)
+    exponents: tuple[float, ...] = quantity(
+        "Exponents p, q, r, s", "-", gt=0, le=200, min_items=4, max_items=4,
+        example=[2, 9, 78, 80])
+    coefficients: tuple[float, ...] = quantity(
+        "Coefficients Cp, Cq, Cr, Cs", "mm", min_items=4, max_items=4,
+        example=[-11.6918407, 2.8498942, -0.5894568, 0.5314033])
+
+
+@dataclass(frozen=True, kw_only=True)
+class Segment:
+    """One multipol segment: l = l_start + sum_{k=1..5} C_k (theta/theta_T)^k."""
+
+    length: float = quantity("Segment length theta_T", "deg", gt=0, lt=360)
+    coefficients: tuple[float, ...] = quantity("Coefficients C1..C5", "mm", min_items=1,
+                                               max_items=5)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Multipol:
+    """Ball's multipol: up to 5 polynomial segments from the end of the opening ramp to the nose."""
+
+    segments: tuple[Segment, ...] = section("Segments, from the end of the opening ramp "
+                                            "toward the nose", required=True)
+    closing_segments: tuple[Segment, ...] | None = section(
+        "Segments of the closing half, from the nose (only when the lift is not symmetric)")
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        for name in ("segments", "closing_segments"):
+            segs = getattr(self, name)
+            if segs is not None and not 1 <= len(segs) <= 5:
+                out.append(Problem(f"{path}.{name}", f"has {len(segs)} segments", None,
+                                   "1 to 5 segments"))
+        return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class Table:
+    """Lift given as discrete data points (angle from maximum lift, lift)."""
+
+    angle_unit: Literal["deg", "rad"] = option("Unit of the angles: deg or rad", default="deg")
+    angles: tuple[float, ...] | None = quantity(
+        "Cam angles from the maximum-lift position, increasing (in angle_unit)", "-",
+        default=None, min_items=8)
+    lifts: tuple[float, ...] | None = quantity("Lift at each angle", "mm", default=None,
+                                               min_items=8)
+    file: str | None = option(
+        "CSV file with two columns (angle, lift in mm) instead of angles/lifts; a path relative "
+        "to the deck, or 'package:NAME' for a data set shipped with camtrain", default=None)
+    symmetric: bool = option("Mirror the data about the maximum-lift position", default=False)
+    derivative: Literal["smoothing_spline", "central_difference"] = option(
+        "How derivatives are taken: smoothing_spline (robust to 4-decimal data) or "
+        "central_difference (as Ball 1988, sensitive to data error)",
+        default="smoothing_spline")
+    smoothing: float | None = quantity(
+        "Smoothing level of the spline; omit for the automatic choice", "-", default=None, ge=0)
+
+    def problems(self, path: str) -> list[Problem]:
+        has_inline = self.angles is not None or self.lifts is not None
+        if has_inline == (self.file is not None):
+            return [Problem(path, "give either angles and lifts, or file", None,
+                            "one source of data points")]
+        if has_inline and (self.angles is None or self.lifts is None):
+            return [Problem(path, "angles and lifts must be given together")]
+        if has_inline and len(self.angles) != len(self.lifts):
+            return [Problem(f"{path}.lifts", f"has {len(self.lifts)} values but angles has "
+                            f"{len(self.angles)}", None, "one lift per angle")]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
+class ExpPoly:
+    """Exponential-polynomial fit (Lim et al. 1983): l = exp(a0 + a1 phi + ... + am phi^m), phi in rad."""
+
+    coefficients: tuple[float, ...] = quantity("Coefficients a0, a1, ... (phi in rad, lift in mm)",
+                                               "-", min_items=2, max_items=12)
+    cutoff: float = quantity("Lift below which the valve is taken as closed (base circle)", "mm",
+                             default=0.01, gt=0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Polynomial:
+    """General polynomial (polydyne): l = l_max + sum C_n (phi/phi_T)^n over |phi| <= phi_T."""
+
+    half_period: float = quantity("Half period phi_T", "deg", gt=0, lt=180)
+    max_lift: float = quantity("Lift at the nose above the ramp", "mm", gt=0)
+    exponents: tuple[float, ...] = quantity("Exponents n (e.g. 2, 8, 14, 20, 26)", "-", gt=0,
+                                            le=200, min_items=1, max_items=20)
+    coefficients: tuple[float, ...] = quantity("Coefficients C_n", "mm", min_items=1,
+                                               max_items=20)
+
+    def problems(self, path: str) -> list[Problem]:
+        if len(self.exponents) != len(self.coefficients):
+            return [Problem(f"{path}.coefficients", f"has {len(self.coefficients)} values but "
+                            f"exponents has {len(self.exponents)}", None, "one per exponent")]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
+class Lift:
+    """The lift law. Angles are cam degrees from the maximum-lift (nose) position."""
+
+    form: Literal["four_power", "multipol", "table", "exp_poly", "polynomial",
+                  "williams_elementary", "williams_low_jerk"] = option(
+        "Lift form: four_power, multipol, table, exp_poly, polynomial, williams_elementary, "
+        "williams_low_jerk", example="four_power")
+    measured_at: Literal["valve", "cam"] = option(
+        "Lift given at the valve, or at the cam on an inspection follower", default="valve")
+    inspection_radius: float | None = quantity(
+        "Radius of the inspection follower the cam lift was measured with", "mm", default=None,
+        gt=0, applies="measured_at = \"cam\" with a pivoted or domed follower")
+    ramps: Ramps | None = section("Opening and closing ramps",
+                                  applies="four_power, multipol, polynomial")
+    four_power: FourPower | None = section("Four-power polynomial", applies="form = four_power")
+    multipol: Multipol | None = section("Multipol segments", applies="form = multipol")
+    table: Table | None = section("Data points", applies="form = table")
+    exp_poly: ExpPoly | None = section("Exponential fit", applies="form = exp_poly")
+    polynomial: Polynomial | None = section("Polynomial", applies="form = polynomial")
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        forms_with_section = ("four_power", "multipol", "table", "exp_poly", "polynomial")
+        if self.form in forms_with_section and getattr(self, self.form) is None:
+            out.append(Problem(f"{path}.{self.form}", "is missing", None,
+                               f"a [{path}.{self.form}] section for form = {self.form!r}"))
+        for other in forms_with_section:
+            if other != self.form and getattr(self, other) is not None:
+                out.append(Problem(f"{path}.{other}", f"is given but form = {self.form!r}",
+                                   None, "only the section of the chosen form",
+                                   f"remove it or set form = {other!r}"))
+        return out
+
+
+# --------------------------------------------------------------------------- loads
+
+@dataclass(frozen=True, kw_only=True)
+class Spring:
+    """Valve spring. Omit the section and no contact loads are computed (Ball: Blok film only)."""
+
+    rate: float = quantity("Spring rate k", "N/mm", gt=0, example=38.254)
+    preload_compression: float = quantity(
+        "Initial spring compression delta at zero valve lift", "mm", ge=0, example=6.4)
+    progressive: tuple[float, ...] = quantity(
+        "Extra terms of a progressive spring: force += c2 x^2 + c3 x^3 (x = compression)",
+        "-", default=(), max_items=2)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Masses:
+    """Moving masses, reduced as in Ball (1988) Table 3.1."""
+
+    valve_side: float = quantity(
+        "Equivalent mass at the valve: valve + retainer + collets + 1/3 spring (+ bucket for a "
+        "flat follower)", "kg", gt=0, example=0.172)
+    follower: float = quantity(
+        "Follower (rocker) equivalent mass referred to radius B", "kg", default=0.0, ge=0,
+        applies="finger, rocker")
+    rocker_inertia: float = quantity("Rocker moment of inertia about its pivot", "kg·m²",
+                                     default=0.0, ge=0, applies="finger, rocker, pushrod")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Clearance:
+    """Valve clearance (lash) or a hydraulic lash adjuster."""
+
+    valve_clearance: float = quantity("Valve clearance at the base-circle position", "mm",
+                                      default=0.0, ge=0)
+    lash_adjuster: bool = option("A hydraulic lash adjuster keeps zero clearance",
+                                 default=False)
+    adjuster_load: float = quantity("Base-circle load of the lash adjuster", "N", default=0.0,
+                                    ge=0, applies="lash_adjuster = true")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Materials:
+    """Elastic properties of cam and follower."""
+
+    cam_modulus: float = quantity("Young's modulus of the cam", "GPa", default=207.0, gt=0)
+    cam_poisson: float = quantity("Poisson's ratio of the cam", "-", default=0.29, gt=0, lt=0.5)
+    follower_modulus: float = quantity("Young's modulus of the follower", "GPa", default=207.0,
+                                       gt=0)
+    follower_poisson: float = quantity("Poisson's ratio of the follower", "-", default=0.29,
+                                       gt=0, lt=0.5)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Lubricant:
+    """The oil at the contact."""
+
+    viscosity: float = quantity("Dynamic viscosity at ambient pressure and oil temperature",
+                                "Pa·s", gt=0, example=0.05)
+    pressure_viscosity: float = quantity("Pressure-viscosity coefficient alpha", "1/GPa", ge=0,
+                                         example=22.0)
+    roughness: float = quantity("Composite RMS surface roughness sigma (for lambda = h/sigma)",
+                                "µm", default=0.2, gt=0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Solver:
+    """Resolution knobs (each trades accuracy for time; see `camtrain accuracy`)."""
+
+    angle_points: int = quantity("Number of cam angles over one revolution", "-", default=720,
+                                 ge=16, le=1_000_000)
+    friction_tolerance: float = quantity(
+        "Relative tolerance of the friction/load iteration of pivoted followers", "-",
+        default=1e-6, gt=0, lt=0.1)
+    friction_max_iterations: int = quantity("Maximum friction/load iterations", "-", default=50,
+                                            ge=1, le=10_000)
+
+
+# --------------------------------------------------------------------------- the deck
+
+EFFECT_NAMES = ("kinematics", "loads", "hertz", "film", "friction", "power")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Deck:
+    """A valve-train deck."""
+
+    title: str = option("Name of the valve train", example="Cam and flat-faced follower")
+    effects: Literal["auto"] | tuple[str, ...] = option(
+        "Effects to run: \"auto\" (run what the data allow) or a list, e.g. "
+        "[\"kinematics\", \"loads\"]", default="auto")
+    speed: Speed = section("Operating speed", required=True)
+    mechanism: Mechanism = section("Follower mechanism", required=True)
+    cam: Cam = section("Cam lobe", required=True)
+    lift: Lift = section("Lift law", required=True)
+    spring: Spring | None = section("Valve spring (needed for loads)")
+    masses: Masses | None = section("Moving masses (needed for loads)")
+    clearance: Clearance | None = section("Valve clearance or lash adjuster")
+    materials: Materials = section("Materials (defaults: steel on steel)", default=Materials())
+    lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
+    solver: Solver = section("Solver resolution", default=Solver())
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        if isinstance(self.effects, tuple):
+            for i, name in enumerate(self.effects):
+                if name not in EFFECT_NAMES:
+                    import difflib
+                    close = difflib.get_close_matches(name, EFFECT_NAMES, n=1)
+                    out.append(Problem(f"effects[{i}]", "is not a known effect", name,
+                                       "one of " + ", ".join(EFFECT_NAMES),
+                                       f"did you mean {close[0]!r}?" if close else ""))
+        if self.lift.measured_at == "cam" and self.mechanism.type != "flat" \
+                and self.lift.inspection_radius is None:
+            out.append(Problem("lift.inspection_radius",
+                               "is required when lift is measured at the cam", None,
+                               "the inspection follower radius in mm"))
+        if self.cam.taper_angle and self.mechanism.type != "domed":
+            out.append(Problem("cam.taper_angle", "applies to a domed follower only",
+                               f"{from_si(self.cam.taper_angle, 'deg'):g} deg", "0"))
+        return out

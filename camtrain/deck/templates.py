@@ -1,0 +1,186 @@
+"""Ball-style template decks: every field prompted, with its unit and default, ready to edit.
+
+The text is generated from the schema, so a template always matches what `check` accepts. Example
+values per mechanism come from the data sets of the sources (Harrison, Pinto, Rover).
+"""
+from __future__ import annotations
+
+import dataclasses
+import json
+
+from camtrain.deck.fields import REQUIRED, FieldInfo, Shape, deck_key, section_fields
+from camtrain.deck.schema import LIFT_FORMS, MECHANISMS, Deck
+
+_HARRISON_LIFT = {
+    "lift.form": "four_power",
+    "lift.ramps.opening_height": 0.5, "lift.ramps.opening_length": 25.0,
+    "lift.ramps.closing_height": 0.5, "lift.ramps.closing_length": 25.0,
+    "lift.four_power.half_period": 60.0, "lift.four_power.max_lift": 8.9,
+    "lift.four_power.exponents": [2, 9, 78, 80],
+    "lift.four_power.coefficients": [-11.6918407, 2.8498942, -0.5894568, 0.5314033],
+}
+_HARRISON_LOADS = {
+    "spring.rate": 38.254, "spring.preload_compression": 6.4, "masses.valve_side": 0.172,
+    "lubricant.viscosity": 0.05, "lubricant.pressure_viscosity": 22.0,
+    "clearance.valve_clearance": 0.4,
+}
+
+#: Example values (deck units) per mechanism; sections with any example are written active.
+EXAMPLES: dict[str, dict[str, object]] = {
+    "flat": {"title": "Cam and flat-faced follower (Harrison data, Ball 1988)",
+             "speed.camshaft": 2500.0, "mechanism.type": "flat", "cam.base_radius": 18.0,
+             "cam.width": 12.0, **_HARRISON_LIFT, **_HARRISON_LOADS},
+    "domed": {"title": "Cam and domed tappet (Harrison lift)", "speed.camshaft": 2500.0,
+              "mechanism.type": "domed", "mechanism.follower_radius": 250.0,
+              "mechanism.offset": 0.0, "cam.base_radius": 18.0, "cam.width": 12.0,
+              **_HARRISON_LIFT, **_HARRISON_LOADS},
+    "finger": {"title": "Cam and end-pivoted finger follower (Pinto geometry, Ball 1988)",
+               "speed.camshaft": 2500.0, "mechanism.type": "finger",
+               "mechanism.follower_radius": 44.0, "mechanism.A": 51.80, "mechanism.B": 61.80,
+               "mechanism.D": 46.20, "mechanism.kappa": 39.7, "mechanism.lambda": 31.9,
+               "cam.base_radius": 15.0, "cam.width": 21.0, **_HARRISON_LIFT,
+               "spring.rate": 40.0, "spring.preload_compression": 11.0,
+               "masses.valve_side": 0.148, "lubricant.viscosity": 0.013,
+               "lubricant.pressure_viscosity": 22.0},
+    "rocker": {"title": "Cam and centrally pivoted rocker (Rover 2300, Ball 1988)",
+               "speed.camshaft": 2500.0, "mechanism.type": "rocker",
+               "mechanism.follower_radius": 35.56, "mechanism.A": 50.06, "mechanism.B": 54.00,
+               "mechanism.D": 74.27, "mechanism.kappa": 107.5, "mechanism.lambda": 140.0,
+               "cam.base_radius": 14.30, "cam.width": 17.0, "lift.form": "exp_poly",
+               "lift.exp_poly.coefficients": [2.317111, -0.8104e-3, -1.526837, -0.1552985,
+                                              -1.789897, 0.1171634, -0.2422081],
+               "lift.exp_poly.cutoff": 0.01, "spring.rate": 60.0,
+               "spring.preload_compression": 4.0, "masses.valve_side": 0.10,
+               "lubricant.viscosity": 0.013, "lubricant.pressure_viscosity": 15.0,
+               "materials.cam_poisson": 0.3, "materials.follower_poisson": 0.3},
+    "pushrod": {"title": "Push rod and rocker", "speed.camshaft": 2500.0,
+                "mechanism.type": "pushrod", "mechanism.follower_radius": 250.0,
+                "cam.base_radius": 18.0, "cam.width": 12.0, **_HARRISON_LIFT,
+                **_HARRISON_LOADS},
+    "desmodromic": {"title": "Desmodromic valve train", "speed.camshaft": 2000.0,
+                    "mechanism.type": "desmodromic", "cam.base_radius": 18.0,
+                    "cam.width": 12.0, **_HARRISON_LIFT},
+}
+
+
+def _fmt(value: object) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, list | tuple):
+        return "[" + ", ".join(_fmt(v) for v in value) + "]"
+    return str(value)
+
+
+def _deck_default(value: object, info: FieldInfo) -> object:
+    """A schema default (SI) shown in deck units."""
+    from camtrain.units import UNITS
+
+    factor = UNITS[info.unit][0]
+    if isinstance(value, float) and factor != 1.0:
+        return round(value / factor, 12)
+    return value
+
+
+def _not_here(info: FieldInfo, mechanism: str) -> bool:
+    """True when a field names the mechanisms it applies to and this is not one of them."""
+    applies = {a.strip() for a in info.applies.split(",")} if info.applies else set()
+    return bool(applies & set(MECHANISMS)) and mechanism not in applies
+
+
+def _prompt(info: FieldInfo, shape: Shape, default: object, mechanism: str) -> str:
+    unit = f" [{info.unit}]" if info.unit != "-" else ""
+    if default is REQUIRED:
+        status = "required"
+    elif default is None or default == ():
+        status = "optional"
+    else:
+        status = f"default {_fmt(_deck_default(default, info))}"
+    text = f"# {info.doc}{unit} ({status})"
+    if shape.kind == "choice":
+        text += "\n#   choices: " + ", ".join(_fmt(c) for c in shape.choices)
+    if info.applies:
+        mark = " -- does not apply here, skip" if _not_here(info, mechanism) else ""
+        text += f"\n#   for {info.applies} only{mark}"
+    return text
+
+
+def render_template(mechanism: str) -> str:
+    """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is."""
+    if mechanism not in EXAMPLES:
+        raise KeyError(mechanism)
+    ex = EXAMPLES[mechanism]
+    lines = [
+        f"# camtrain deck: {ex['title']}",
+        "# Every field has a prompt: what it is [unit in this file] (required / default / "
+        "optional).",
+        "# Units are the ones written here (mm, deg, rpm, N/mm, kg, GPa, Pa·s, 1/GPa, µm); "
+        "camtrain works in SI inside.",
+        "# Cam angles are cam degrees from the maximum-lift (nose) position, negative on the "
+        "opening flank.",
+        "# Check it with `camtrain check FILE`, run it with `camtrain run FILE --out DIR`.",
+        "",
+    ]
+    _render_section(Deck, "", ex, mechanism, lines, active=True)
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _has_example(prefix: str, ex: dict) -> bool:
+    return any(k.startswith(prefix + ".") for k in ex)
+
+
+def _render_section(cls: type, prefix: str, ex: dict, mechanism: str, lines: list[str],
+                    active: bool) -> None:
+    c = "" if active else "# "
+    scalars = [(f, s, i) for f, s, i in section_fields(cls) if s.section is None]
+    nested = [(f, s, i) for f, s, i in section_fields(cls) if s.section is not None]
+    for f, shape, info in scalars:
+        key = deck_key(f)
+        path = f"{prefix}.{key}" if prefix else key
+        lines.append(_prompt(info, shape, _default(f), mechanism))
+        if _not_here(info, mechanism) and path not in ex:
+            lines.append(f"# {key} =")
+        elif path in ex:
+            lines.append(f"{c}{key} = {_fmt(ex[path])}")
+        elif f.default is not dataclasses.MISSING and f.default not in (None, ()):
+            lines.append(f"{c}{key} = {_fmt(_deck_default(f.default, info))}")
+        else:
+            example = info.example if info.example is not None else ""
+            lines.append(f"# {key} = {_fmt(example) if example != '' else ''}".rstrip())
+        lines.append("")
+    for f, shape, info in nested:
+        key = deck_key(f)
+        path = f"{prefix}.{key}" if prefix else key
+        sub_active = active and (f.default is dataclasses.MISSING or _has_example(path, ex)
+                                 or (prefix == "" and f.default is not None))
+        if prefix == "lift" and key in LIFT_FORMS:
+            sub_active = active and ex.get("lift.form") == key
+        if shape.kind == "sections":
+            _render_array(shape.section, path, info, ex, mechanism, lines)
+            continue
+        head = f"{'' if sub_active else '# '}[{path}]"
+        note = f"  # {info.doc}"
+        if info.applies:
+            note += f" (for {info.applies} only; otherwise skip)"
+        elif not sub_active:
+            note += " (optional; uncomment to use)"
+        lines.append("#" + "-" * 78)
+        lines.append(head + note)
+        lines.append("")
+        _render_section(shape.section, path, ex, mechanism, lines, sub_active)
+
+
+def _render_array(cls: type, path: str, info: FieldInfo, ex: dict, mechanism: str,
+                  lines: list[str]) -> None:
+    lines.append(f"# [[{path}]]  # {info.doc}; repeat the block for each entry")
+    for f, shape, finfo in section_fields(cls):
+        lines.append(_prompt(finfo, shape, _default(f), mechanism))
+        lines.append(f"# {deck_key(f)} = ")
+    lines.append("")
+
+
+def _default(f: dataclasses.Field) -> object:
+    return REQUIRED if f.default is dataclasses.MISSING else f.default

@@ -1,0 +1,1 @@
+"""Outputs: tables (CSV, JSON), the input echo, terminal report."""

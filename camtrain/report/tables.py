@@ -1,0 +1,85 @@
+"""Machine-readable outputs: summary.json and cycle.csv, written atomically.
+
+Everything is computed before anything is written; each file is written to a temporary name in the
+output directory and renamed into place, so a failed run never leaves a half-written result.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from camtrain import __version__
+from camtrain.deck.load import LoadedDeck
+from camtrain.result import Result
+
+#: Columns whose SI unit is shown in engineering units in cycle.csv.
+_DISPLAY = {"rad": ("deg", 180.0 / math.pi)}
+
+
+def summary_dict(result: Result, deck: LoadedDeck, wall_time: float) -> dict:
+    """The summary of a run as plain data (what summary.json holds)."""
+    metrics = {}
+    for name, m in result.metrics.items():
+        entry = {"value": _finite_or_none(m.value), "unit": m.unit, "description": m.description}
+        if m.angle is not None:
+            entry["angle_deg"] = round(math.degrees(m.angle), 6)
+        metrics[name] = entry
+    return {
+        "camtrain_version": __version__,
+        "deck": {"path": deck.path, "sha256": deck.sha256, "title": deck.model.title},
+        "plan": result.plan.as_dict() if result.plan is not None else None,
+        "not_available": list(result.not_available),
+        "metrics": metrics,
+        "warnings": list(result.warnings),
+        "timings_s": {k: round(v, 6) for k, v in result.timings.items()},
+        "wall_time_s": round(wall_time, 6),
+        "columns": {name: {"unit": c.unit, "description": c.description}
+                    for name, c in result.columns.items()},
+    }
+
+
+def _finite_or_none(x: float):
+    return x if math.isfinite(x) else None
+
+
+def cycle_table(result: Result) -> tuple[list[str], np.ndarray]:
+    """Column headers with units (e.g. ``cam_angle[deg]``) and the data matrix."""
+    headers, cols = [], []
+    for name, col in result.columns.items():
+        unit, factor = _DISPLAY.get(col.unit, (col.unit, 1.0)) if name == "cam_angle" \
+            else (col.unit, 1.0)
+        headers.append(f"{name}[{unit}]")
+        cols.append(col.values * factor)
+    data = np.column_stack(cols) if cols else np.empty((0, 0))
+    return headers, data
+
+
+def _atomic_write(path: Path, text: str) -> None:
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def write_outputs(result: Result, deck: LoadedDeck, out_dir: Path, wall_time: float) -> list[Path]:
+    """Write summary.json and cycle.csv into out_dir; return the paths written."""
+    summary = json.dumps(summary_dict(result, deck, wall_time), indent=2, allow_nan=False) + "\n"
+    headers, data = cycle_table(result)
+    lines = [",".join(headers)]
+    lines += [",".join(f"{v:.10g}" for v in row) for row in data]
+    csv_text = "\n".join(lines) + "\n"
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = []
+    for name, text in (("cycle.csv", csv_text), ("summary.json", summary)):
+        _atomic_write(out_dir / name, text)
+        written.append(out_dir / name)
+    return written
