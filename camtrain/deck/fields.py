@@ -70,6 +70,12 @@ def quantity(doc: str, unit: str = "-", *, default: Any = REQUIRED, gt=None, ge=
     if unit not in UNITS:
         raise ValueError(f"unknown unit {unit!r}")
     info = FieldInfo(doc, unit, gt, ge, lt, le, example, applies, min_items, max_items, key)
+    # defaults are written in deck units, like everything a user sees; the model holds SI
+    factor = UNITS[unit][0]
+    if isinstance(default, float) and factor != 1.0:
+        default = default * factor
+    elif isinstance(default, list | tuple) and factor != 1.0:
+        default = tuple(v * factor for v in default)
     return _field(default, info)
 
 

@@ -1,0 +1,1 @@
+"""Data sets shipped with camtrain (lift tables of the sources)."""

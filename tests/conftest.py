@@ -1,0 +1,36 @@
+"""Shared fixtures: paths and a minimal valid deck as TOML text."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+DECKS = ROOT / "decks"
+
+MINIMAL_DECK = """
+title = "minimal"
+[speed]
+camshaft = 1500
+[mechanism]
+type = "flat"
+[cam]
+base_radius = 18
+[lift]
+form = "four_power"
+[lift.ramps]
+opening_height = 0.5
+opening_length = 25
+closing_height = 0.5
+closing_length = 25
+[lift.four_power]
+half_period = 60
+max_lift = 8.9
+exponents = [2, 9, 78, 80]
+coefficients = [-11.6918407, 2.8498942, -0.5894568, 0.5314033]
+"""
+
+
+@pytest.fixture
+def minimal_deck() -> str:
+    return MINIMAL_DECK
