@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from camtrain import __version__
-from camtrain.errors import EXIT_INTERNAL, EXIT_INVALID_INPUT, CamtrainError
+from camtrain.errors import EXIT_INTERNAL, CamtrainError
 
 MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
 
