@@ -73,13 +73,19 @@ def template(mechanism: str) -> None:
 @main.command()
 @click.option("--out", "out", type=click.Path(dir_okay=False, writable=True), default=None,
               help="Write to this file instead of standard output.")
-def schema(out: str | None) -> None:
+@click.option("--markdown", is_flag=True, help="Write the deck reference page instead.")
+def schema(out: str | None, markdown: bool) -> None:
     """Write the JSON Schema of a deck (for editors that validate while typing)."""
     import json
 
-    from camtrain.deck.jsonschema import deck_json_schema
+    if markdown:
+        from camtrain.deck.reference import markdown as reference
 
-    text = json.dumps(deck_json_schema(), indent=2, ensure_ascii=False) + "\n"
+        text = reference()
+    else:
+        from camtrain.deck.jsonschema import deck_json_schema
+
+        text = json.dumps(deck_json_schema(), indent=2, ensure_ascii=False) + "\n"
     if out:
         Path(out).write_text(text, encoding="utf-8")
     else:

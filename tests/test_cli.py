@@ -137,3 +137,12 @@ def test_console_script_entry_point():
     out = subprocess.run([sys.executable, "-m", "camtrain.cli", "--version"],
                          capture_output=True, text=True)
     assert out.returncode == 0 and "camtrain" in out.stdout
+
+
+def test_deck_reference_doc_is_up_to_date():
+    """docs/deck_reference.md is generated from the schema; regenerate with
+    `camtrain schema --markdown > docs/deck_reference.md`."""
+    from camtrain.deck.reference import markdown
+    from tests.conftest import ROOT
+
+    assert (ROOT / "docs" / "deck_reference.md").read_text() == markdown()
