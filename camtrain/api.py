@@ -41,6 +41,17 @@ def run(deck: LoadedDeck | Deck | str | Path) -> Result:
     return run_plan(_model(deck))
 
 
+def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Result:
+    """Only the lift law of a deck on its angle grid: lift, velocity, acceleration, jerk."""
+    from camtrain.effects.kinematics import lift_columns
+
+    if isinstance(deck, str | Path):
+        deck = load(deck)
+    result = Result()
+    lift_columns(_model(deck), result, points)
+    return result
+
+
 def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0) -> list[Path]:
     """Write summary.json and cycle.csv into ``out_dir`` atomically."""
     from camtrain.report.tables import write_outputs

@@ -137,5 +137,33 @@ def run(deck: str, out: str | None, quiet: bool, as_json: bool) -> None:
         print_run(console, result, written)
 
 
+@main.command("lift")
+@click.argument("deck", type=str)
+@click.option("--out", "out", type=click.Path(file_okay=False), default=None,
+              help="Output directory (default: out/<deck name>).")
+@click.option("--points", type=click.IntRange(16, 1_000_000), default=None,
+              help="Angles over one revolution (default: the deck's solver.angle_points).")
+@click.option("--no-plots", is_flag=True, help="Write the table only.")
+@click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
+def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
+                 quiet: bool) -> None:
+    """Lift, velocity, acceleration and jerk of DECK's lift law: lift.csv and a plot sheet."""
+    from camtrain import api
+    from camtrain.report.tables import write_table
+
+    loaded = api.load(deck)
+    result = api.lift(loaded, points)
+    out_dir = Path(out) if out else Path("out") / (Path(deck).stem if deck != "-" else "stdin")
+    written = [write_table(result, out_dir / "lift.csv")]
+    if not no_plots:
+        from camtrain.report.plots import lift_sheet
+
+        written += lift_sheet(result, f"{loaded.model.title}: lift law", out_dir / "lift")
+    if not quiet:
+        from camtrain.report.console import print_run
+
+        print_run(_console(), result, written)
+
+
 if __name__ == "__main__":  # pragma: no cover
     main()

@@ -80,7 +80,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect("kinematics", "lift law and follower kinematics: lift and derivatives, contact point, "
            "r_c, R, surface, entrainment and sliding velocities",
            (), ("lift", "r_c", "R", "V_c", "V_f", "u_e", "V_s"), _nothing,
-           "camtrain.effects.kinematics:run", available=False, planned_in="issues 3-4"),
+           "camtrain.effects.kinematics:run"),
     Effect("loads", "contact load from the rigid-train D'Alembert balance; loss of contact",
            ("kinematics",), ("load",), _missing_loads,
            "camtrain.effects.loads:run", available=False, planned_in="issue 5"),

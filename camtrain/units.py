@@ -33,6 +33,7 @@ UNITS: dict[str, tuple[float, str]] = {
     "W": (1.0, "W"),
     "N·m": (1.0, "N*m"),
     "mm/deg": (1e-3 / (math.pi / 180.0), "m/rad"),
+    "mm/deg²": (1e-3 / (math.pi / 180.0) ** 2, "m/rad^2"),
 }
 
 

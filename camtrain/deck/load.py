@@ -4,14 +4,11 @@ Every failure a user can cause becomes an :class:`InputError` listing all proble
 """
 from __future__ import annotations
 
-import csv
 import dataclasses
 import hashlib
-import io
 import math
 import tomllib
 from dataclasses import dataclass
-from importlib import resources
 from pathlib import Path
 
 from camtrain.deck.fields import build_section, schema_paths
@@ -101,75 +98,34 @@ def load_deck_text(text: str, name: str = "<text>", base_dir: Path | None = None
 # --------------------------------------------------------------------------- lift tables
 
 def _resolve_lift_table(deck: Deck, base_dir: Path, name: str) -> Deck:
-    """Read a lift table file into the model and store its angles in radians."""
+    """Inline table angles to radians (checked increasing); a table file path made absolute.
+
+    The file itself is read by the lift layer, which owns the lift-table format.
+    """
     table = deck.lift.table
     if table is None:
         return deck
     path = "lift.table"
     if table.file is not None:
-        angles, lifts = read_lift_csv(table.file, base_dir, name)
-        # lifts from a file are in mm like inline lifts; convert to SI here
-        lifts = tuple(v * 1e-3 for v in lifts)
-    else:
-        angles, lifts = table.angles, table.lifts
-    factor = math.pi / 180.0 if table.angle_unit == "deg" else 1.0
-    angles = tuple(a * factor for a in angles)
-    problems = []
-    for i in range(1, len(angles)):
-        if not angles[i] > angles[i - 1]:
-            what = "repeats" if angles[i] == angles[i - 1] else "decreases"
-            problems.append(Problem(f"{path}.angles[{i}]", f"angle {what}",
-                                    round(angles[i] / factor, 10),
-                                    f"angles strictly increasing (previous "
-                                    f"{round(angles[i - 1] / factor, 10)})"))
-            break
-    if angles and angles[-1] - angles[0] > 2 * math.pi + 1e-12:
-        problems.append(Problem(f"{path}.angles", "span more than one revolution", None,
-                                "a span of at most 360 deg"))
-    if problems:
-        raise InputError(problems, source=name)
-    new_table = dataclasses.replace(table, angles=angles, lifts=lifts, file=None)
-    return dataclasses.replace(deck, lift=dataclasses.replace(deck.lift, table=new_table))
-
-
-def read_lift_csv(ref: str, base_dir: Path, name: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """Read (angle, lift) pairs from a CSV file; '#' lines are comments, a header row is skipped."""
-    field = "lift.table.file"
-    if ref.startswith("package:"):
-        res = resources.files("camtrain.data").joinpath(ref.removeprefix("package:"))
-        if not res.is_file():
-            available = sorted(p.name for p in resources.files("camtrain.data").iterdir()
-                               if p.name.endswith(".csv"))
-            raise InputError(Problem(field, "no such data set shipped with camtrain", ref,
-                                     "one of " + ", ".join(f"package:{a}" for a in available)),
-                             source=name)
-        text = res.read_text(encoding="utf-8")
-    else:
-        p = (base_dir / ref) if not Path(ref).is_absolute() else Path(ref)
+        p = Path(table.file)
+        p = p if p.is_absolute() else base_dir / p
         if not p.is_file():
-            raise InputError(Problem(field, "file not found", str(ref),
-                                     "a CSV file relative to the deck"), source=name)
-        text = p.read_text(encoding="utf-8", errors="replace")
-    angles: list[float] = []
-    lifts: list[float] = []
-    rows = csv.reader(io.StringIO(text))
-    for lineno, row in enumerate(rows, start=1):
-        cells = [c.strip() for c in row if c.strip()]
-        if not cells or cells[0].startswith("#"):
-            continue
-        try:
-            a, v = float(cells[0]), float(cells[1])
-        except (ValueError, IndexError):
-            if not angles:  # header row
-                continue
-            raise InputError(Problem(field, f"line {lineno} is not two numbers", ",".join(row)),
-                             source=name) from None
-        if not (math.isfinite(a) and math.isfinite(v)):
-            raise InputError(Problem(field, f"line {lineno} holds a non-finite value",
-                                     ",".join(row)), source=name)
-        angles.append(a)
-        lifts.append(v)
-    if len(angles) < 8:
-        raise InputError(Problem(field, f"holds {len(angles)} data points", ref,
-                                 "at least 8"), source=name)
-    return tuple(angles), tuple(lifts)
+            raise InputError(Problem(f"{path}.file", "file not found", table.file,
+                                     "a CSV file (path relative to the deck)"), source=name)
+        new_table = dataclasses.replace(table, file=str(p))
+    elif table.angles is not None:
+        factor = math.pi / 180.0 if table.angle_unit == "deg" else 1.0
+        angles = tuple(a * factor for a in table.angles)
+        for i in range(1, len(angles)):
+            if not angles[i] > angles[i - 1]:
+                what = "repeats" if angles[i] == angles[i - 1] else "decreases"
+                raise InputError(Problem(
+                    f"{path}.angles[{i}]", f"angle {what}", table.angles[i],
+                    f"angles strictly increasing (previous {table.angles[i - 1]})"), source=name)
+        if angles[-1] - angles[0] > 2 * math.pi + 1e-12:
+            raise InputError(Problem(f"{path}.angles", "span more than one revolution", None,
+                                     "a span of at most 360 deg"), source=name)
+        new_table = dataclasses.replace(table, angles=angles)
+    else:
+        return deck
+    return dataclasses.replace(deck, lift=dataclasses.replace(deck.lift, table=new_table))

@@ -154,12 +154,13 @@ class LiftLaw(ABC):
     def joint_jumps(self) -> list[JointJump]:
         """Jump of lift, velocity, acceleration and jerk at every joint of the law.
 
-        One-sided limits are taken 1e-9 rad either side of the joint; that perturbs a lift jump by
-        at most 2e-9 * |d1| (< 1e-10 m for any real cam), far below anything reported.
+        One-sided limits are taken 1e-10 rad either side of the joint; that perturbs a lift jump
+        by at most 2e-10 * |d1| (< 1e-11 m for any real cam), far below anything reported.
+        Laws with closed-form pieces override this with exact end values.
         """
         out = []
         for angle, label in self.joints():
-            eps = 1e-9 * max(1.0, abs(angle))
+            eps = 1e-10 * max(1.0, abs(angle))
             left = self.evaluate(np.array([angle - eps]))
             right = self.evaluate(np.array([angle + eps]))
             out.append(JointJump(angle, label, *(float(getattr(right, k)[0] - getattr(left, k)[0])

@@ -70,13 +70,24 @@ def _atomic_write(path: Path, text: str) -> None:
         raise
 
 
-def write_outputs(result: Result, deck: LoadedDeck, out_dir: Path, wall_time: float) -> list[Path]:
-    """Write summary.json and cycle.csv into out_dir; return the paths written."""
-    summary = json.dumps(summary_dict(result, deck, wall_time), indent=2, allow_nan=False) + "\n"
+def _csv_text(result: Result) -> str:
     headers, data = cycle_table(result)
     lines = [",".join(headers)]
     lines += [",".join(f"{v:.10g}" for v in row) for row in data]
-    csv_text = "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n"
+
+
+def write_table(result: Result, path: Path) -> Path:
+    """Write the per-angle columns of a result as CSV (atomically)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    _atomic_write(path, _csv_text(result))
+    return path
+
+
+def write_outputs(result: Result, deck: LoadedDeck, out_dir: Path, wall_time: float) -> list[Path]:
+    """Write summary.json and cycle.csv into out_dir; return the paths written."""
+    summary = json.dumps(summary_dict(result, deck, wall_time), indent=2, allow_nan=False) + "\n"
+    csv_text = _csv_text(result)
     out_dir.mkdir(parents=True, exist_ok=True)
     written = []
     for name, text in (("cycle.csv", csv_text), ("summary.json", summary)):

@@ -1,0 +1,97 @@
+"""Lift tables shipped with camtrain (package data in ``camtrain/data``) and a CSV reader.
+
+CSV layout: ``#`` comment lines (the source), one header line naming the columns with their
+units (``angle_deg`` or ``angle_rad``; ``lift_mm`` or ``lift_m``), then one angle,lift pair per
+line. Values keep the precision printed in the source, which the table law uses to judge the
+noise of the data.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from camtrain.lift import _checks as chk
+from camtrain.lift.base import DEG, MM
+
+DATASETS = {
+    "pinto_inlet_cam": "ball1988_pinto_inlet_cam_lift.csv",      # Ball (1988) App E
+    "zeta_intake": "yang1992_zeta_intake_cam_lift.csv",           # Yang (1992) App C
+    "zeta_exhaust": "yang1992_zeta_exhaust_cam_lift.csv",         # Yang (1992) App C
+}
+_ANGLE_UNITS = {"angle_deg": DEG, "angle_rad": 1.0}
+_LIFT_UNITS = {"lift_mm": MM, "lift_m": 1.0}
+
+
+@dataclass(frozen=True)
+class LiftTable:
+    """A lift table in SI (angles rad, lift m), with its source note and printed precision."""
+
+    angles: np.ndarray
+    lift: np.ndarray
+    source: str
+    lift_quantum: float      # smallest printed lift step [m] (0 if not a decimal table)
+
+
+def decimal_quantum(values_in_unit: np.ndarray, max_decimals: int = 9) -> float:
+    """Step of the last printed decimal of ``values_in_unit`` (e.g. 1e-4 for 4-decimal data).
+
+    0.0 if the values do not look rounded to at most ``max_decimals`` decimals.
+    """
+    v = np.asarray(values_in_unit, dtype=float)
+    for k in range(max_decimals + 1):
+        scaled = v * 10.0 ** k
+        if np.all(np.abs(scaled - np.round(scaled)) <= 1e-6 * np.maximum(1.0, np.abs(scaled))):
+            return 10.0 ** -k
+    return 0.0
+
+
+def read_lift_csv(text: str, path: str = "lift.table.file") -> LiftTable:
+    """Parse the CSV layout above (``text`` is the file content)."""
+    notes, rows, header = [], [], None
+    for n, line in enumerate(text.splitlines(), start=1):
+        line = line.strip()
+        if not line:
+            continue
+        if line.startswith("#"):
+            notes.append(line.lstrip("# "))
+            continue
+        cells = [c.strip() for c in line.split(",")]
+        if header is None:
+            header = cells
+            if (len(cells) != 2 or cells[0] not in _ANGLE_UNITS or cells[1] not in _LIFT_UNITS):
+                raise chk.fail(path, f"line {n} is not a valid header", line,
+                               "angle_deg|angle_rad , lift_mm|lift_m")
+            continue
+        if len(cells) != 2:
+            raise chk.fail(path, f"line {n} does not have two columns", line)
+        try:
+            rows.append([float(c) for c in cells])
+        except ValueError:
+            raise chk.fail(path, f"line {n} is not a pair of numbers", line) from None
+    if header is None or not rows:
+        raise chk.fail(path, "contains no lift table", None, "a header line and data lines")
+    data = np.array(rows)
+    lift_unit = _LIFT_UNITS[header[1]]
+    return LiftTable(data[:, 0] * _ANGLE_UNITS[header[0]], data[:, 1] * lift_unit,
+                     " ".join(notes), decimal_quantum(data[:, 1]) * lift_unit)
+
+
+def load_dataset(name: str) -> LiftTable:
+    """One of the shipped tables by name (keys of ``DATASETS``)."""
+    if name not in DATASETS:
+        raise chk.fail("lift.table.dataset", "is not a shipped lift table", name,
+                       ", ".join(sorted(DATASETS)))
+    text = resources.files("camtrain").joinpath("data", DATASETS[name]).read_text("utf-8")
+    return read_lift_csv(text)
+
+
+def load_csv(file: str | Path, path: str = "lift.table.file") -> LiftTable:
+    """A lift table from a CSV file on disk."""
+    try:
+        text = Path(file).read_text("utf-8")
+    except OSError as exc:
+        raise chk.fail(path, "cannot be read", str(file), hint=str(exc.strerror)) from None
+    return read_lift_csv(text, path)
