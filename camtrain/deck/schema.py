@@ -139,8 +139,9 @@ class Ramps:
     opening_height: float = quantity("Opening ramp height", "mm", default=0.0, ge=0,
                                      example=0.5)
     opening_length: float | None = quantity(
-        "Opening ramp length; a multipol may omit it (derived from its start velocity)", "deg",
-        default=0.0, ge=0, lt=180, example=25.0)
+        "Opening ramp length; a multipol may omit it (derived from its start velocity); "
+        "required when the ramp has a height otherwise", "deg", default=None, ge=0, lt=180,
+        example=25.0)
     closing_height: float | None = quantity("Closing ramp height; omit for the opening value",
                                             "mm", default=None, ge=0, example=0.5)
     closing_length: float | None = quantity("Closing ramp length; omit for the opening value",
