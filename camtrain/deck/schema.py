@@ -188,6 +188,9 @@ class Multipol:
     check_continuity: bool = option(
         "Stop when lift, velocity or acceleration jump at a joint (the jumps are always "
         "reported)", default=True)
+    tolerance: float = quantity(
+        "Allowed velocity or acceleration step at a joint, as a fraction of its peak (lift steps "
+        "are limited to 1 µm)", "-", default=0.005, gt=0, lt=1)
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -225,7 +228,7 @@ class Table:
         "Smoothing level of the spline relative to the data precision; omit for the automatic "
         "choice (1)", "-", default=None, ge=0)
     noise: float | None = quantity(
-        "Measurement noise of the lifts; omit to take half the last printed digit", "mm",
+        "Measurement noise (standard deviation) of the lifts; omit for printed step / sqrt(12)", "mm",
         default=None, gt=0)
 
     def problems(self, path: str) -> list[Problem]:
@@ -433,6 +436,28 @@ class Solver:
                                             ge=1, le=10_000)
 
 
+@dataclass(frozen=True, kw_only=True)
+class Tribology:
+    """Tribology model options (Ball 1988 ch. 4; the choices behind his printed results)."""
+
+    entrainment: Literal["mean", "sum"] = option(
+        "Entrainment speed in the film formulas: mean (V_c + V_f)/2, or sum V_c + V_f as Ball's "
+        "'entraining velocity'", default="mean")
+    film_formula: Literal["auto", "dowson_higginson_1977", "dowson_dunn_taylor_1983",
+                          "hamrock_dowson_1977_min", "chittenden_1985_min"] = option(
+        "Minimum-film formula: auto (Dowson-Higginson for line, Hamrock-Dowson for point "
+        "contact with loads; Blok rigid-piezoviscous without loads) or a named formula",
+        default="auto")
+    friction_model: Literal["cap", "lambda", "lambda_cap"] = option(
+        "Friction: cap = min(viscous shear, boundary), lambda = boundary where h/sigma < 1, "
+        "lambda_cap = both", default="cap")
+    boundary_friction: float = quantity(
+        "Boundary friction coefficient (cap and start of the friction/load iteration)", "-",
+        default=0.08, ge=0, le=1)
+    hertz: Literal["exact", "ball_1988"] = option(
+        "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
+
+
 # --------------------------------------------------------------------------- the deck
 
 EFFECT_NAMES = ("kinematics", "loads", "hertz", "film", "friction", "power")
@@ -456,6 +481,7 @@ class Deck:
     materials: Materials = section("Materials (defaults: steel on steel)", default=Materials())
     lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
     solver: Solver = section("Solver resolution", default=Solver())
+    tribology: Tribology = section("Tribology model options", default=Tribology())
 
     def problems(self, path: str) -> list[Problem]:
         out = []

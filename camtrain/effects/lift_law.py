@@ -50,7 +50,7 @@ def build_lift_law(lift: S.Lift) -> L.LiftLaw:
         p = lift.multipol
         return L.MultipolLift(_segments(p.segments), _segments(p.closing_segments),
                               _ramps(lift.ramps), max_order=p.max_order,
-                              check_continuity=p.check_continuity)
+                              check_continuity=p.check_continuity, tolerance=p.tolerance)
     if form == "table":
         return _table(lift.table)
     if form == "exp_poly":

@@ -51,7 +51,7 @@ class FourPowerLift(EvenSeriesLaw):
                  tolerance: float = 1e-6, path: str = "lift") -> None:
         base = f"{path}.{self.form}"
         tp = chk.scalar(half_period, f"{base}.half_period", "angle", minimum=0.0, strict=True)
-        lc = chk.scalar(rise, f"{base}.rise", "length", minimum=0.0, strict=True)
+        lc = chk.scalar(rise, f"{base}.max_lift", "length", minimum=0.0, strict=True)
         exps = chk.exponents(exponents, f"{base}.exponents", count=4)
         coefs = chk.vector(coefficients, f"{base}.coefficients", min_len=4, max_len=4,
                            kind="length")

@@ -150,7 +150,7 @@ class PolynomialLift(EvenSeriesLaw):
                  path: str = "lift") -> None:
         base = f"{path}.{self.form}"
         tp = chk.scalar(half_period, f"{base}.half_period", "angle", minimum=0.0, strict=True)
-        x0 = chk.scalar(rise, f"{base}.rise", "length", minimum=0.0, strict=True)
+        x0 = chk.scalar(rise, f"{base}.max_lift", "length", minimum=0.0, strict=True)
         exps = chk.exponents(exponents, f"{base}.exponents")
         if coefficients is None:
             coefs = polydyne_coefficients(exps)

@@ -110,13 +110,13 @@ class TableLift(LiftLaw):
                  base_tolerance: float = 1e-6, path: str = "lift") -> None:
         base = f"{path}.{self.form}"
         a = chk.vector(angles, f"{base}.angles", min_len=5)
-        y = chk.vector(lift, f"{base}.lift", min_len=a.size, max_len=a.size)
+        y = chk.vector(lift, f"{base}.lifts", min_len=a.size, max_len=a.size)
         self._check_increasing(a, f"{base}.angles")
         if symmetric:
             a, y = self._mirror(a, y, f"{base}.angles")
         method = _ALIASES.get(method, method)
         if method not in METHODS:
-            raise chk.fail(f"{base}.method", "is not a known derivative method", method,
+            raise chk.fail(f"{base}.derivative", "is not a known derivative method", method,
                            " or ".join(METHODS))
         if degree not in (3, 5):
             raise chk.fail(f"{base}.degree", "is not a supported spline degree", degree, "3 or 5")
@@ -126,12 +126,12 @@ class TableLift(LiftLaw):
                            chk.shown(a[-1] - a[0], "angle"), "a span < 360 deg")
         if y.min() < -tol:
             i = int(np.argmin(y))
-            raise chk.fail(f"{base}.lift", f"is negative at {chk.shown(a[i], 'angle')} deg",
+            raise chk.fail(f"{base}.lifts", f"is negative at {chk.shown(a[i], 'angle')} deg",
                            chk.shown(y[i], "length"), "lift >= 0 mm",
                            "a desmodromic closing cam's lift is negated before use")
         for end, i in (("first", 0), ("last", -1)):
             if abs(y[i]) > tol:
-                raise chk.fail(f"{base}.lift", f"does not return to the base circle: the {end} "
+                raise chk.fail(f"{base}.lifts", f"does not return to the base circle: the {end} "
                                f"point ({chk.shown(a[i], 'angle')} deg) is lifted",
                                chk.shown(y[i], "length"),
                                f"at most {chk.shown(tol, 'length')} mm at both ends",
@@ -150,7 +150,7 @@ class TableLift(LiftLaw):
         # the event: from the last base-circle point before the lift to the first one after it
         lifted = np.flatnonzero(y > max(q / 2.0, 1e-12))
         if lifted.size == 0:
-            raise chk.fail(f"{base}.lift", "is zero everywhere", None, "a lift event")
+            raise chk.fail(f"{base}.lifts", "is zero everywhere", None, "a lift event")
         self._open = float(a[max(lifted[0] - 1, 0)])
         self._close = float(a[min(lifted[-1] + 1, a.size - 1)])
         # close the revolution with base-circle zeros at the table spacing

@@ -77,7 +77,7 @@ def test_harrison_joint_report():
     ({"exponents": (2.0, 9.0, 78.0)}, "lift.four_power.exponents", "4 values"),
     ({"half_period": 170 * DEG}, "lift.four_power.half_period", "360 deg"),
     ({"half_period": float("nan")}, "lift.four_power.half_period", "finite"),
-    ({"rise": -1.0}, "lift.four_power.rise", "mm"),
+    ({"rise": -1.0}, "lift.four_power.max_lift", "mm"),
 ])
 def test_bad_input_names_the_field(change, path, words):
     with pytest.raises(InputError) as err:
@@ -90,4 +90,4 @@ def test_bad_input_names_the_field(change, path, words):
 def test_path_prefix_is_used():
     with pytest.raises(InputError) as err:
         FourPowerLift.harrison(rise=0.0, path="valves.inlet.lift")
-    assert problem(err.value).path == "valves.inlet.lift.four_power.rise"
+    assert problem(err.value).path == "valves.inlet.lift.four_power.max_lift"

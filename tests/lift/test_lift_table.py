@@ -177,11 +177,11 @@ def test_angles_in_radians_and_csv_reader():
 BAD_TABLES = [
     ([-10, -5, 0, 5, 5, 10], [0, 1, 2, 1, 1, 0], "lift.table.angles[4]", "duplicate"),
     ([-10, -5, 0, 7, 5, 10], [0, 1, 2, 1, 1, 0], "lift.table.angles[4]", "not increasing"),
-    ([-10, -5, 0, 5, 10], [0, 1, 2, 1, 0.5], "lift.table.lift", "base circle"),
-    ([-10, -5, 0, 5, 10], [0, 1, -2, 1, 0], "lift.table.lift", "negative"),
+    ([-10, -5, 0, 5, 10], [0, 1, 2, 1, 0.5], "lift.table.lifts", "base circle"),
+    ([-10, -5, 0, 5, 10], [0, 1, -2, 1, 0], "lift.table.lifts", "negative"),
     ([-180, -5, 0, 5, 180], [0, 1, 2, 1, 0], "lift.table.angles", "revolution"),
-    ([-10, -5, 0, 5, 10], [0, 1, float("nan"), 1, 0], "lift.table.lift[2]", "finite"),
-    ([-10, -5, 0, 5, 10], [0, 1, 2, 1, 0, 0], "lift.table.lift", "values"),
+    ([-10, -5, 0, 5, 10], [0, 1, float("nan"), 1, 0], "lift.table.lifts[2]", "finite"),
+    ([-10, -5, 0, 5, 10], [0, 1, 2, 1, 0, 0], "lift.table.lifts", "values"),
 ]
 
 
@@ -194,7 +194,7 @@ def test_bad_tables_name_the_field(angles, lift, path, words):
 
 
 @pytest.mark.parametrize("kwargs, path", [
-    ({"method": "splines"}, "lift.table.method"),
+    ({"method": "splines"}, "lift.table.derivative"),
     ({"degree": 4}, "lift.table.degree"),
     ({"smoothing": -1.0}, "lift.table.smoothing"),
     ({"symmetric": True}, "lift.table.angles"),
