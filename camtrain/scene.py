@@ -83,19 +83,19 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            "camtrain.effects.kinematics:run"),
     Effect("loads", "contact load from the rigid-train D'Alembert balance; loss of contact",
            ("kinematics",), ("load",), _missing_loads,
-           "camtrain.effects.loads:run", available=False, planned_in="issue 5"),
+           "camtrain.effects.loads:run"),
     Effect("hertz", "Hertz contact half-width and maximum pressure",
            ("loads",), ("hertz_pmax", "hertz_half_width"), _missing_hertz,
-           "camtrain.effects.hertz:run", available=False, planned_in="issue 5"),
+           "camtrain.effects.hertz:run"),
     Effect("film", "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
            ("kinematics",), ("film_min", "film_central", "lambda"), _missing_film,
-           "camtrain.effects.film:run", available=False, planned_in="issue 5"),
+           "camtrain.effects.film:run"),
     Effect("friction", "friction force and coefficient: viscous shear capped by boundary "
            "friction", ("hertz", "film"), ("friction_force", "friction_coefficient"), _nothing,
-           "camtrain.effects.friction:run", available=False, planned_in="issue 5"),
+           "camtrain.effects.friction:run"),
     Effect("power", "friction torque about the cam axis and power loss",
            ("friction",), ("friction_torque", "power_loss"), _nothing,
-           "camtrain.effects.power:run", available=False, planned_in="issue 5"),
+           "camtrain.effects.power:run"),
 )}
 
 assert tuple(EFFECTS) == EFFECT_NAMES

@@ -11,6 +11,7 @@ import math
 #: label -> (factor to SI, SI label). value_SI = value_deck * factor.
 UNITS: dict[str, tuple[float, str]] = {
     "-": (1.0, "-"),
+    "%": (0.01, "-"),
     "mm": (1e-3, "m"),
     "m": (1.0, "m"),
     "µm": (1e-6, "m"),

@@ -54,6 +54,74 @@ class Speed:
 # --------------------------------------------------------------------------- mechanism
 
 @dataclass(frozen=True, kw_only=True)
+class Pushrod:
+    """Rocker and push rod between the valve and the follower on the cam (Williams 2013 ch 11)."""
+
+    layout: Literal["simple", "four_bar"] = option(
+        "simple: push rod on a translating tappet; four_bar: push rod on a pivoted finger "
+        "follower (mechanism.A, D, follower_radius describe that follower)", default="simple")
+    rocker_pushrod_arm: float = quantity("Rocker arm on the push-rod side, D1", "mm", gt=0,
+                                         example=35.0)
+    rocker_valve_arm: float = quantity("Rocker arm on the valve side, D2", "mm", gt=0,
+                                       example=50.0)
+    rocker_arm_angle: float = quantity("Angle between the two rocker arms, alpha_0", "deg",
+                                       default=0.0, gt=-90, lt=90, example=10.0)
+    valve_axis_angle: float = quantity("Angle between the vertical and the valve axis, gamma",
+                                       "deg", default=0.0, gt=-60, lt=60, example=15.0)
+    perpendicular_lift_fraction: float = quantity(
+        "Fraction of the maximum valve lift at which the valve arm is perpendicular to the "
+        "valve axis", "-", default=0.5, ge=0, le=1)
+    pushrod_length: float = quantity("Push-rod length D_PR", "mm", gt=0, example=200.0)
+    pushrod_cg_fraction: float = quantity(
+        "Distance of the push rod's centre of mass from its lower end, as a fraction of its "
+        "length", "-", default=0.5, ge=0, le=1)
+    tappet_axis_distance: float | None = quantity(
+        "Horizontal distance from the rocker pivot to the tappet axis, x_bar", "mm",
+        default=None, gt=0, example=43.3, applies="layout = simple")
+    rocker_pivot_x: float | None = quantity(
+        "Rocker pivot position relative to the follower pivot, horizontal (a)", "mm",
+        default=None, applies="layout = four_bar")
+    rocker_pivot_y: float | None = quantity(
+        "Rocker pivot position relative to the follower pivot, vertical (b)", "mm",
+        default=None, applies="layout = four_bar")
+    follower_pushrod_arm: float | None = quantity(
+        "Follower pivot to push-rod joint, e", "mm", default=None, gt=0,
+        applies="layout = four_bar")
+    closure: Literal[-1, 1] = option("Side of the line follower pivot - rocker tip on which "
+                                     "the push-rod joint lies", default=-1)
+    branch: Literal[-1, 1] = option("Assembly branch of the follower on the cam side",
+                                    default=1)
+
+    def problems(self, path: str) -> list[Problem]:
+        if self.layout == "simple" and self.tappet_axis_distance is None:
+            return [Problem(f"{path}.tappet_axis_distance", "is required for layout = simple",
+                            None, "a distance in mm")]
+        if self.layout == "four_bar":
+            return [Problem(f"{path}.{n}", "is required for layout = four_bar", None, "mm")
+                    for n in ("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")
+                    if getattr(self, n) is None]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
+class ClosingPair:
+    """The closing cam of a desmodromic train and its end-pivoted follower (Ball 1988 App F)."""
+
+    A: float = quantity("A: pivot to the centre of curvature of the follower face", "mm",
+                        gt=0, example=17.32)
+    B: float = quantity("B: pivot to the valve-contact pad", "mm", gt=0, example=32.39)
+    D: float = quantity("D: cam centre to pivot", "mm", gt=0, example=39.32)
+    kappa: float = quantity("kappa: angle between OU and the direction of valve motion", "deg",
+                            gt=-360, lt=360, example=-7.31)
+    lambda_: float = quantity("lambda: angle VUQ", "deg", gt=-360, lt=360, example=9.41,
+                              key="lambda")
+    follower_radius: float = quantity("Follower face radius r_f", "mm", gt=0, example=20.0)
+    base_radius: float = quantity("Base-circle radius of the closing cam", "mm", gt=0,
+                                  example=25.0)
+    width: float | None = quantity("Closing cam width", "mm", default=None, gt=0)
+
+
+@dataclass(frozen=True, kw_only=True)
 class Mechanism:
     """The follower and how it drives the valve. Pivot geometry follows Dyson's (1980) notation."""
 
@@ -87,13 +155,18 @@ class Mechanism:
     lambda_: float | None = quantity(
         "lambda: angle VUQ between the valve arm and the cam arm of the follower", "deg",
         default=None, gt=-360, lt=360, applies="finger, rocker", key="lambda")
-    min_concave_radius: float | None = quantity(
-        "Minimum cam concavity: the largest grinding-wheel radius; concave flanks must be "
-        "less curved", "mm", default=None, gt=0)
+    grinding_wheel_radius: float | None = quantity(
+        "Largest grinding-wheel radius (Ball's minimum cam concavity); concave flanks must be "
+        "less curved than this", "mm", default=None, gt=0)
+    pushrod: Pushrod | None = section("Push rod and rocker geometry (Williams 2013 ch 11)",
+                                      applies="pushrod")
+    closing: ClosingPair | None = section(
+        "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
+        "(centrally pivoted)", applies="desmodromic")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
-        needs_rf = ("domed", "finger", "rocker", "pushrod")
+        needs_rf = ("domed", "finger", "rocker", "desmodromic")
         if self.type in needs_rf and self.follower_radius is None:
             out.append(Problem(f"{path}.follower_radius",
                                f"is required for a {self.type} follower", None,
@@ -102,8 +175,23 @@ class Mechanism:
             out.append(Problem(f"{path}.follower_radius", "does not apply to a flat follower",
                                _mm(self.follower_radius), "no value",
                                "remove it, or choose type = \"domed\""))
-        if self.type in PIVOTED:
-            for name in ("A", "B", "D", "kappa", "lambda_"):
+        needs_pivot = PIVOTED + ("desmodromic",)
+        if self.type == "pushrod" and self.pushrod is not None \
+                and self.pushrod.layout == "four_bar":
+            needs_pivot = needs_pivot + ("pushrod",)
+            if self.follower_radius is None:
+                out.append(Problem(f"{path}.follower_radius", "is required for a four-bar push "
+                                   "rod (finger follower on the cam)", None, "a radius in mm"))
+        for needed, name in (("pushrod", "pushrod"), ("desmodromic", "closing")):
+            if self.type == needed and getattr(self, name) is None:
+                out.append(Problem(f"{path}.{name}", f"is required for a {needed} mechanism",
+                                   None, f"a [{path}.{name}] section"))
+            if self.type != needed and getattr(self, name) is not None:
+                out.append(Problem(f"{path}.{name}", f"applies to a {needed} mechanism only",
+                                   None, "no such section", f"remove it or set type = {needed!r}"))
+        if self.type in needs_pivot:
+            for name in ("A", "D") if self.type == "pushrod" else \
+                    ("A", "B", "D", "kappa", "lambda_"):
                 if getattr(self, name) is None:
                     key = "lambda" if name == "lambda_" else name
                     out.append(Problem(f"{path}.{key}",
@@ -449,13 +537,40 @@ class Tribology:
         "contact with loads; Blok rigid-piezoviscous without loads) or a named formula",
         default="auto")
     friction_model: Literal["cap", "lambda", "lambda_cap"] = option(
-        "Friction: cap = min(viscous shear, boundary), lambda = boundary where h/sigma < 1, "
-        "lambda_cap = both", default="cap")
+        "Friction: cap (lesser of viscous shear and boundary friction), lambda (boundary "
+        "friction where h/sigma < 1), lambda_cap (both)", default="cap")
     boundary_friction: float = quantity(
         "Boundary friction coefficient (cap and start of the friction/load iteration)", "-",
         default=0.08, ge=0, le=1)
     hertz: Literal["exact", "ball_1988"] = option(
         "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
+
+
+# --------------------------------------------------------------------------- design limits
+
+@dataclass(frozen=True, kw_only=True)
+class Limits:
+    """Design limits, checked over the cycle by `camtrain run --check`; omit a limit to skip it."""
+
+    max_hertz: float | None = quantity("Largest allowed maximum Hertz stress p_max", "MPa",
+                                       default=None, gt=0, example=650.0)
+    min_film: float | None = quantity(
+        "Smallest allowed minimum film thickness h_min anywhere in contact (zero-entrainment "
+        "points give zero film in a quasi-static analysis)", "µm", default=None, ge=0, example=0.05)
+    min_film_at_max_lift: float | None = quantity(
+        "Smallest allowed h_min at the maximum-lift position (Ball's representative nose film)",
+        "µm", default=None, ge=0, example=0.1)
+    min_lambda: float | None = quantity("Smallest allowed film parameter lambda = h_min/sigma",
+                                        "-", default=None, ge=0, example=0.3)
+    min_bounce_margin: float | None = quantity(
+        "Smallest allowed margin of the run speed below the valve-bounce speed, "
+        "100 (1 - n/n_bounce)", "%", default=None, gt=-100, lt=100, example=10.0)
+    max_power_loss: float | None = quantity("Largest allowed cycle-mean frictional power loss",
+                                            "W", default=None, gt=0, example=60.0)
+    max_load: float | None = quantity("Largest allowed cam/follower contact load", "N",
+                                      default=None, gt=0, example=2000.0)
+    max_friction_torque: float | None = quantity("Largest allowed peak friction torque", "N·m",
+                                                 default=None, gt=0, example=2.0)
 
 
 # --------------------------------------------------------------------------- the deck
@@ -482,6 +597,7 @@ class Deck:
     lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
     solver: Solver = section("Solver resolution", default=Solver())
     tribology: Tribology = section("Tribology model options", default=Tribology())
+    limits: Limits | None = section("Design limits checked by run --check")
 
     def problems(self, path: str) -> list[Problem]:
         out = []

@@ -25,6 +25,15 @@ _HARRISON_LOADS = {
     "clearance.valve_clearance": 0.4,
 }
 
+#: Ball (1988) App F.1.1 valve-lift multipol of the desmodromic rig, segment 3 C4 sign corrected
+_APP_F_SEGMENTS = [
+    {"length": 3.0, "coefficients": [0.03700, 0.0, 0.04894, -0.01224, 0.0]},
+    {"length": 8.0, "coefficients": [0.35969, 0.52204, 0.0, 0.0, 0.0]},
+    {"length": 5.0, "coefficients": [0.87736, 0.20392, 0.0, -0.08113, 0.02828]},
+    {"length": 5.0, "coefficients": [1.10212, 0.0, -0.04167, 0.02153, -0.00490]},
+    {"length": 34.0, "coefficients": [7.06324, -2.07447, -1.44115, 0.34428, 0.00640]},
+]
+
 #: Example values (deck units) per mechanism; sections with any example are written active.
 EXAMPLES: dict[str, dict[str, object]] = {
     "flat": {"title": "Cam and flat-faced follower (Harrison data, Ball 1988)",
@@ -53,13 +62,32 @@ EXAMPLES: dict[str, dict[str, object]] = {
                "spring.preload_compression": 4.0, "masses.valve_side": 0.10,
                "lubricant.viscosity": 0.013, "lubricant.pressure_viscosity": 15.0,
                "materials.cam_poisson": 0.3, "materials.follower_poisson": 0.3},
-    "pushrod": {"title": "Push rod and rocker", "speed.camshaft": 2500.0,
-                "mechanism.type": "pushrod", "mechanism.follower_radius": 250.0,
-                "cam.base_radius": 18.0, "cam.width": 12.0, **_HARRISON_LIFT,
+    "pushrod": {"title": "Push rod, rocker and domed tappet (Harrison lift)",
+                "speed.camshaft": 2500.0, "mechanism.type": "pushrod",
+                "mechanism.follower_radius": 250.0, "mechanism.pushrod.layout": "simple",
+                "mechanism.pushrod.rocker_pushrod_arm": 35.0,
+                "mechanism.pushrod.rocker_valve_arm": 50.0,
+                "mechanism.pushrod.rocker_arm_angle": 10.0,
+                "mechanism.pushrod.valve_axis_angle": 15.0,
+                "mechanism.pushrod.pushrod_length": 200.0,
+                "mechanism.pushrod.tappet_axis_distance": 40.66,
+                "cam.base_radius": 20.0, "cam.width": 12.0, **_HARRISON_LIFT,
                 **_HARRISON_LOADS},
-    "desmodromic": {"title": "Desmodromic valve train", "speed.camshaft": 2000.0,
-                    "mechanism.type": "desmodromic", "cam.base_radius": 18.0,
-                    "cam.width": 12.0, **_HARRISON_LIFT},
+    "desmodromic": {"title": "Desmodromic valve train (rig of Ball 1988, App F)",
+                    "speed.camshaft": 2000.0, "mechanism.type": "desmodromic",
+                    "mechanism.follower_radius": 35.0, "mechanism.A": 26.23,
+                    "mechanism.B": 33.29, "mechanism.D": 39.32, "mechanism.kappa": 172.69,
+                    "mechanism.lambda": 125.28, "mechanism.closing.A": 17.32,
+                    "mechanism.closing.B": 32.39, "mechanism.closing.D": 39.32,
+                    "mechanism.closing.kappa": -7.31, "mechanism.closing.lambda": 9.41,
+                    "mechanism.closing.follower_radius": 20.0,
+                    "mechanism.closing.base_radius": 25.0, "cam.base_radius": 17.5,
+                    "cam.width": 12.0, "lift.form": "multipol",
+                    "lift.ramps.opening_height": 0.3333,
+                    "lift.multipol.segments": _APP_F_SEGMENTS,
+                    "spring.rate": 10.0, "spring.preload_compression": 5.0,
+                    "masses.valve_side": 0.0745, "lubricant.viscosity": 0.0147,
+                    "lubricant.pressure_viscosity": 15.0},
 }
 
 
@@ -175,11 +203,21 @@ def _render_section(cls: type, prefix: str, ex: dict, mechanism: str, lines: lis
 
 def _render_array(cls: type, path: str, info: FieldInfo, ex: dict, mechanism: str,
                   lines: list[str]) -> None:
-    lines.append(f"# [[{path}]]  # {info.doc}; repeat the block for each entry")
+    entries = ex.get(path)
+    if not entries:
+        lines.append(f"# [[{path}]]  # {info.doc}; repeat the block for each entry")
+        for f, shape, finfo in section_fields(cls):
+            lines.append(_prompt(finfo, shape, _default(f), mechanism))
+            lines.append(f"# {deck_key(f)} = ")
+        lines.append("")
+        return
+    lines.append(f"# {info.doc}: one [[{path}]] block per entry")
     for f, shape, finfo in section_fields(cls):
         lines.append(_prompt(finfo, shape, _default(f), mechanism))
-        lines.append(f"# {deck_key(f)} = ")
-    lines.append("")
+    for entry in entries:
+        lines.append(f"[[{path}]]")
+        lines += [f"{k} = {_fmt(v)}" for k, v in entry.items()]
+        lines.append("")
 
 
 def _default(f: dataclasses.Field) -> object:

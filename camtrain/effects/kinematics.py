@@ -34,26 +34,27 @@ def lift_columns(deck, result, points: int | None = None):
     i = int(np.argmax(curve.d2))
     result.add_metric("max_acceleration", curve.d2[i], "m/rad^2", "largest d2l/dtheta2",
                       theta[i])
-    _report_law_quality(law, result)
+    _report_law_quality(law, result, float(np.max(np.abs(curve.d1))))
     return law, curve
 
 
-#: jumps larger than these at a joint of a piecewise law are warned about (lift and velocity
-#: must be continuous for a cam that can be ground; acceleration steps are reported as metrics).
+#: A joint of a piecewise law is warned about when lift steps by more than 1 µm or velocity by
+#: more than this fraction of the peak velocity (the multipol joint tolerance): a cam must be
+#: continuous in lift and velocity to be ground. Acceleration steps are reported as metrics.
 #: The outer ends of constant-velocity ramps are exempt from the velocity rule: there the
 #: follower leaves the base circle at the ramp velocity by design (it takes up the clearance).
-_JUMP_WARN = {"lift": 1e-6, "d1": 1e-6}
+_LIFT_STEP = 1e-6
+_VELOCITY_STEP_FRACTION = 0.005
 _RAMP_ENDS = ("opening ramp start", "closing ramp end")
 
 
-def _worth_warning(j) -> bool:
-    limits = dict(_JUMP_WARN)
-    if j.label in _RAMP_ENDS:
-        limits.pop("d1")
-    return any(abs(getattr(j, k)) > tol for k, tol in limits.items())
+def _worth_warning(j, peak_velocity: float) -> bool:
+    if abs(j.lift) > _LIFT_STEP:
+        return True
+    return j.label not in _RAMP_ENDS and abs(j.d1) > _VELOCITY_STEP_FRACTION * peak_velocity
 
 
-def _report_law_quality(law, result) -> None:
+def _report_law_quality(law, result, peak_velocity: float) -> None:
     """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings."""
     jumps = law.joint_jumps()
     if jumps:
@@ -63,7 +64,7 @@ def _report_law_quality(law, result) -> None:
             result.add_metric(f"joint_jump_{what}", abs(getattr(worst, name)), unit,
                               f"largest {what} jump at a joint of the lift law", worst.angle)
         for j in jumps:
-            if _worth_warning(j):
+            if _worth_warning(j, peak_velocity):
                 result.warn(f"lift law is discontinuous: {j.describe()}")
     noise = getattr(law, "noise_estimate", None)
     if callable(noise):
@@ -74,7 +75,107 @@ def _report_law_quality(law, result) -> None:
                           "estimated RMS noise of the table-derived acceleration")
 
 
+#: Kinematics fields written to the result: name in the result, field, unit, description
+_COLUMNS = (
+    ("valve_lift", "valve_lift", "m", "valve lift"),
+    ("valve_velocity", "valve_d1", "m/rad", "dl_v/dtheta"),
+    ("valve_acceleration", "valve_d2", "m/rad^2", "d2l_v/dtheta2"),
+    ("valve_jerk", "valve_d3", "m/rad^3", "d3l_v/dtheta3"),
+    ("cam_lift", "cam_lift", "m", "lift of the follower that touches the cam"),
+    ("contact_x", "contact_x", "m", "contact point on the cam profile, cam frame x"),
+    ("contact_y", "contact_y", "m", "contact point on the cam profile, cam frame y"),
+    ("profile_radius", "profile_r", "m", "polar radius of the cam profile at the contact"),
+    ("profile_angle", "profile_angle", "rad", "polar angle of the cam profile point"),
+    ("eccentricity", "eccentricity", "m", "contact position on the follower face"),
+    ("cam_radius", "cam_radius", "m", "cam radius of curvature r_c (negative: concave)"),
+    ("equivalent_radius", "equivalent_radius", "m", "equivalent radius R, 1/R = 1/r_c + 1/r_f"),
+    ("radius_x", "radius_x", "m", "principal radius in the rolling direction"),
+    ("radius_y", "radius_y", "m", "transverse principal radius (inf: line contact)"),
+    ("v_cam", "v_cam", "m/s", "contact speed relative to the cam surface, V_c"),
+    ("v_follower", "v_follower", "m/s", "contact speed relative to the follower surface, V_f"),
+    ("entrainment", "entrainment", "m/s", "entrainment (mean) velocity (V_c + V_f)/2"),
+    ("sliding", "sliding", "m/s", "sliding velocity V_c - V_f"),
+    ("rocker_ratio", "rocker_ratio", "-", "contact load per valve force (no friction, inertia)"),
+    ("pressure_angle", "pressure_angle", "rad", "pressure angle"),
+    ("friction_arm", "friction_arm", "m", "arm of the friction force about the cam axis"),
+)
+
+
+def kinematics_columns(k, result, prefix: str = "") -> None:
+    """Add the per-angle kinematics; ``prefix`` marks the closing pair of a desmodromic train."""
+    for name, attr, unit, description in _COLUMNS:
+        values = getattr(k, attr)
+        if name == "radius_y" and not np.any(np.isfinite(values)):
+            continue  # line contact: nothing to tabulate
+        result.add_column(prefix + name, values, unit,
+                          description + (" (closing pair)" if prefix else ""))
+
+
+def kinematics_metrics(deck, k, result, prefix: str = "") -> None:
+    """Scalar results a valve-train engineer looks for first."""
+    theta = k.theta
+    nose = int(np.argmax(k.valve_lift))
+    label = " of the closing pair" if prefix else ""
+    add = result.add_metric
+    add(prefix + "max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label,
+        theta[nose])
+    add(prefix + "cam_radius_at_max_lift", k.cam_radius[nose], "m",
+        "cam radius of curvature at maximum lift" + label, theta[nose])
+    add(prefix + "equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
+        "equivalent radius at maximum lift" + label, theta[nose])
+    i = int(np.argmin(k.cam_radius))
+    add(prefix + "cam_radius_min", k.cam_radius[i], "m",
+        "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
+        theta[i])
+    i = int(np.argmax(np.abs(k.eccentricity)))
+    add(prefix + "eccentricity_max", abs(k.eccentricity[i]), "m",
+        "largest distance of the contact from the face centre" + label, theta[i])
+    i = int(np.argmax(np.abs(k.pressure_angle)))
+    add(prefix + "pressure_angle_max", abs(k.pressure_angle[i]), "rad",
+        "largest pressure angle" + label, theta[i])
+    if deck.mechanism.type == "flat" and not prefix:
+        # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
+        add("min_base_radius_convex", float(np.max(-(k.valve_lift + k.valve_d2))), "m",
+            "smallest base radius for which the cam stays convex under a flat follower")
+    zeros = zero_crossings(theta, k.entrainment)
+    for j, angle in enumerate(zeros):
+        add(f"{prefix}zero_entrainment_{j + 1}", angle, "rad",
+            f"cam angle where the entrainment velocity passes through zero{label}", angle)
+    if zeros and deck.speed.omega > 0:
+        where = ", ".join(f"{np.degrees(a):.2f}" for a in zeros)
+        result.warn(f"entrainment velocity passes through zero{label} at {where} deg: the "
+                    "steady EHL film vanishes there (squeeze films are not modelled)")
+
+
+def zero_crossings(theta: np.ndarray, values: np.ndarray) -> list[float]:
+    """Angles where a periodic per-angle quantity changes sign (linear interpolation)."""
+    v = np.asarray(values, dtype=float)
+    v_next = np.roll(v, -1)
+    t_next = np.roll(theta, -1).copy()
+    t_next[-1] += 2.0 * np.pi
+    idx = np.nonzero((v == 0.0) | (np.sign(v) * np.sign(v_next) < 0))[0]
+    out = []
+    for i in idx:
+        if v[i] == 0.0:
+            if v[i - 1] != 0.0:  # a run of exact zeros is reported once, at its start
+                out.append(float(theta[i]))
+            continue
+        frac = v[i] / (v[i] - v_next[i])
+        angle = theta[i] + frac * (t_next[i] - theta[i])
+        out.append(float((angle + np.pi) % (2.0 * np.pi) - np.pi))
+    return out
+
+
 def run(deck, state) -> None:
+    from camtrain.effects.mechanism import kinematics, valve_lift
+
     law, curve = lift_columns(deck, state.result)
-    state.objects["lift_law"] = law
-    state.objects["lift_curve"] = curve
+    valve = valve_lift(deck, curve)
+    opening, closing = kinematics(deck, valve)
+    kinematics_columns(opening, state.result)
+    kinematics_metrics(deck, opening, state.result)
+    if closing is not None:
+        kinematics_columns(closing, state.result, "closing_")
+        kinematics_metrics(deck, closing, state.result, "closing_")
+    state.objects.update(lift_law=law, lift_curve=curve, valve_lift=valve,
+                         kinematics=opening, kinematics_closing=closing)

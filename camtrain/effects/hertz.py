@@ -1,0 +1,74 @@
+"""Hertz effect: contact half-width and maximum pressure from the contact load.
+
+Line contact (flat and pivoted followers, cylindrical pads; radius_y = inf): Ball (1988) eqs.
+3.8-3.10 over the cam width. Point contact (spherical domed follower): exact Hertz ellipse
+(Hamrock & Dowson 1981 ch. 3) or Ball's eq. 3.7 (``tribology.hertz = "ball_1988"``).
+Angles without load give zero size and pressure; angles where the contact is not Hertzian
+(equivalent radius <= 0 or infinite) give NaN with a warning.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure, reduced_modulus
+
+
+def modulus(deck) -> float:
+    m = deck.materials
+    return float(reduced_modulus(m.cam_modulus, m.cam_poisson, m.follower_modulus,
+                                 m.follower_poisson))
+
+
+def is_line(kin) -> bool:
+    return bool(np.all(np.isinf(kin.radius_y)))
+
+
+def contact_hertz(deck, kin, load) -> dict:
+    """Per-angle Hertz fields: ``pmax`` [Pa], ``half_width`` [m] (along the rolling direction),
+    ``half_length`` [m] (transverse: half the cam width for a line contact), ``bad`` mask."""
+    load = np.asarray(load, dtype=float)
+    E_r = modulus(deck)
+    R, Ry = kin.radius_x, kin.radius_y
+    line = is_line(kin)
+    good_r = (R > 0.0) & np.isfinite(R) & (line | ((Ry > 0.0) & np.isfinite(Ry)))
+    use = good_r & (load > 0.0)
+    pmax, bx = np.zeros_like(load), np.zeros_like(load)
+    by = np.zeros_like(load)
+    if np.any(use):
+        if line:
+            h = hertz_line(load[use], R[use], E_r, L=deck.cam.width)
+            pmax[use], bx[use] = h.max_pressure, h.half_width
+            by[use] = 0.5 * deck.cam.width
+        else:
+            h = hertz_point(load[use], R[use], Ry[use], E_r)
+            bx[use], by[use], pmax[use] = h.a_x, h.a_y, h.max_pressure
+            if deck.tribology.hertz == "ball_1988":
+                pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], E_r,
+                                                     method="ball_1988")
+    bad = ~good_r & (load > 0.0)
+    pmax[bad] = bx[bad] = by[bad] = np.nan
+    return {"pmax": pmax, "half_width": bx, "half_length": by, "bad": bad, "line": line}
+
+
+def run(deck, state) -> None:
+    kin, load = state.objects["kinematics"], state.objects["load"]
+    res = state.result
+    hz = contact_hertz(deck, kin, np.maximum(load, 0.0))
+    res.add_column("hertz_pmax", hz["pmax"], "Pa", "maximum Hertz contact pressure")
+    res.add_column("hertz_half_width", hz["half_width"], "m",
+                   "Hertz half-width along the rolling direction")
+    if not hz["line"]:
+        res.add_column("hertz_half_length", hz["half_length"], "m",
+                       "Hertz semi-axis across the rolling direction")
+    if np.any(hz["bad"]):
+        res.warn(f"Hertz contact undefined (equivalent radius <= 0 or infinite) at "
+                 f"{int(hz['bad'].sum())} loaded angles; NaN there")
+    p = np.where(np.isnan(hz["pmax"]), -np.inf, hz["pmax"])
+    i = int(np.argmax(p))
+    res.add_metric("hertz_max", hz["pmax"][i], "Pa", "largest Hertz pressure over the cycle",
+                   kin.theta[i])
+    k = int(np.argmax(kin.valve_lift))
+    res.add_metric("hertz_at_max_lift", hz["pmax"][k], "Pa",
+                   "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)",
+                   kin.theta[k])
+    state.objects["hertz"] = hz

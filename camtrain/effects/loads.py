@@ -1,0 +1,121 @@
+"""Loads effect: cam/follower contact load per angle, friction/load iteration, loss of contact.
+
+Reads the mechanism's Kinematics from ``state.objects["kinematics"]`` and the deck's spring,
+masses and clearance; writes ``load[N]`` and ``valve_force[N]`` columns, the load metrics and the
+camshaft speed of valve bounce. Physics lives in :mod:`camtrain.loads`.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from camtrain.errors import CamtrainError
+from camtrain.loads import bounce_speed, contact_load, contact_mask, iterate_load, valve_force
+from camtrain.units import rad_s_to_rpm
+
+
+def get_kinematics(deck, state):
+    """The run's Kinematics. Until the kinematics effect stores it, translating followers are
+    built here from the lift curve (pivoted and push-rod trains need the kinematics effect)."""
+    kin = state.objects.get("kinematics")
+    if kin is not None:
+        return kin
+    curve = state.objects.get("lift_curve")
+    mech = deck.mechanism
+    if curve is not None and mech.type in ("flat", "domed"):
+        from camtrain import mechanisms as M
+        if mech.type == "flat":
+            kin = M.flat_faced(curve, base_radius=deck.cam.base_radius, omega=deck.speed.omega,
+                               rotation=mech.rotation, offset=mech.offset,
+                               face_length=mech.face_length)
+        else:
+            kin = M.domed(curve, base_radius=deck.cam.base_radius,
+                          follower_radius=mech.follower_radius, omega=deck.speed.omega,
+                          rotation=mech.rotation, offset=mech.offset,
+                          min_concave_radius=mech.min_concave_radius,
+                          face_length=mech.face_length)
+        state.objects["kinematics"] = kin
+        return kin
+    raise CamtrainError(f"no follower kinematics available for a {mech.type} follower; the "
+                        "kinematics effect must provide them")
+
+
+def body_inertia(deck) -> dict[str, float]:
+    """J_b for the inertia keys of the mechanisms, from the deck's masses (Ball Table 3.1)."""
+    m = deck.masses
+    B = deck.mechanism.B or 0.0
+    return {"follower_mass": m.follower,
+            "follower_inertia": m.rocker_inertia + m.follower * B * B,
+            "rocker_inertia": m.rocker_inertia}
+
+
+def load_inputs(deck) -> dict:
+    """Keyword arguments of :func:`camtrain.loads.contact_load` from the deck."""
+    c = deck.clearance
+    lash = c is not None and c.lash_adjuster
+    return dict(rate=deck.spring.rate, preload_compression=deck.spring.preload_compression,
+                valve_mass=deck.masses.valve_side, body_inertia=body_inertia(deck),
+                progressive=tuple(deck.spring.progressive),
+                clearance=0.0 if (c is None or lash) else c.valve_clearance,
+                base_load=c.adjuster_load if lash else 0.0)
+
+
+def _friction_callback(deck, kin):
+    """F(W) for the iteration when the friction chain has its data, else None (mu fixed)."""
+    if deck.lubricant is None or deck.cam.width is None:
+        return None
+    from camtrain.effects.friction import contact_friction
+    return lambda load: contact_friction(deck, kin, load)["friction"]
+
+
+def solve_loads(deck, kin):
+    """LoadSolution for the deck: one pass for followers without a friction arm, otherwise
+    Ball's friction/load iteration (§4.2.3.2) started at the boundary coefficient."""
+    kw = load_inputs(deck)
+    trib = deck.tribology
+    depends = bool(np.any(kin.arm_friction != 0.0))
+    return iterate_load(lambda mu: contact_load(kin, mu, **kw),
+                        _friction_callback(deck, kin) if depends else None,
+                        mu0=trib.boundary_friction, tolerance=deck.solver.friction_tolerance,
+                        max_iterations=deck.solver.friction_max_iterations,
+                        depends_on_mu=depends)
+
+
+def run(deck, state) -> None:
+    kin = get_kinematics(deck, state)
+    res = state.result
+    sol = solve_loads(deck, kin)
+    kw = load_inputs(deck)
+    load = sol.load
+    inside = contact_mask(kin.valve_lift, kw["clearance"])
+    fv = valve_force(kin.valve_lift, kin.valve_d2, kin.omega, rate=kw["rate"],
+                     preload_compression=kw["preload_compression"],
+                     valve_mass=kw["valve_mass"], progressive=kw["progressive"])
+    res.add_column("valve_force", np.where(inside, fv, 0.0), "N",
+                   "valve-side force, spring + valve-side inertia (0 while the valve is seated)")
+    res.add_column("load", load, "N", "normal cam/follower contact load (rigid train; 0 before "
+                   "the cam takes up the valve clearance; negative = loss of contact)")
+    i, j = int(np.argmax(load)), int(np.argmin(np.where(inside, load, np.inf)))
+    res.add_metric("load_max", load[i], "N", "largest contact load", kin.theta[i])
+    if np.any(inside):
+        res.add_metric("load_min", load[j], "N", "smallest contact load while the cam drives "
+                       "the valve", kin.theta[j])
+    res.add_metric("load_iterations", sol.iterations, "-",
+                   f"friction/load iterations (tolerance {sol.tolerance:g})")
+    mu = sol.mu if sol.friction is not None else deck.tribology.boundary_friction
+    b = bounce_speed(kin, mu, **{k: v for k, v in kw.items() if k != "base_load"})
+    if np.isfinite(b.omega):
+        res.add_metric("bounce_speed", rad_s_to_rpm(b.omega), "rpm",
+                       "camshaft speed at which the rigid train first loses contact",
+                       b.angle)
+    lost = inside & (load <= 0.0)
+    if np.any(lost):
+        deg = np.degrees(kin.theta[lost])
+        res.warn(f"valve bounce: the cam loses contact (W <= 0) at {int(lost.sum())} angles "
+                 f"between {deg.min():.1f} and {deg.max():.1f} deg; the rigid-train results "
+                 "there are not physical")
+    if sol.friction is None and np.any(kin.arm_friction != 0.0):
+        res.warn("friction/load iteration skipped (no lubricant or cam width): loads use the "
+                 f"boundary coefficient {deck.tribology.boundary_friction:g} everywhere")
+    state.objects["kinematics"] = kin
+    state.objects["load_solution"] = sol
+    state.objects["load"] = load

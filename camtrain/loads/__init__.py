@@ -1,0 +1,8 @@
+"""Contact loads of a rigid valve train: spring and inertia forces, clearance, friction/load
+iteration and loss of contact. Physics only: inputs are a Kinematics object and SI numbers."""
+from camtrain.loads.bounce import Bounce, bounce_speed, loss_of_contact
+from camtrain.loads.forces import contact_load, contact_mask, load_parts, spring_force, valve_force
+from camtrain.loads.iteration import LoadSolution, iterate_load
+
+__all__ = ["Bounce", "LoadSolution", "bounce_speed", "contact_load", "contact_mask",
+           "iterate_load", "load_parts", "loss_of_contact", "spring_force", "valve_force"]
