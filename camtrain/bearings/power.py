@@ -1,0 +1,63 @@
+"""Friction power of a plain journal bearing: Petroff, steady (Martin 1985) and over an orbit.
+
+Yang (1992) §1.4, eqs 1.17-1.25; Ball (1988) eq. 6.7. The Couette (shear) term is
+``(eta r^3 b / c) J (omega_j - omega_b)^2`` with ``J = 2 pi / sqrt(1 - eps^2)`` for a complete
+(2 pi) film (eq. 1.22) or the integral of ``1/(1 + eps cos)`` over the loaded pi film (eq. 1.21).
+The "all terms" option adds the translatory term ``W . V`` in the frame turning at wbar
+(eq. 1.23, where the pressure term vanishes). Grooving enters through the shear length
+(sum of lands) held by :class:`~camtrain.bearings.geometry.JournalBearing`.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from camtrain.errors import field_error
+from camtrain.formulas.bearings import petroff_power
+
+from .geometry import JournalBearing
+from .mobility import film_factor
+
+__all__ = ["FILMS", "TERMS", "bearing_petroff_power", "shear_power", "check_film", "check_terms"]
+
+FILMS = ("pi", "2pi")
+TERMS = ("shear", "all")
+
+
+def check_film(film: str) -> str:
+    if film not in FILMS:
+        raise field_error("film", "unknown film model", film, " or ".join(FILMS),
+                          "'2pi' reproduces Yang (1992) Tables 2.1-2.4 and 4.1; 'pi' is Ball's")
+    return film
+
+
+def check_terms(terms: str) -> str:
+    if terms not in TERMS:
+        raise field_error("terms", "unknown power terms", terms, " or ".join(TERMS))
+    return terms
+
+
+def bearing_petroff_power(bearing: JournalBearing, omega_journal, omega_bearing=0.0):
+    """Petroff power [W] of a concentric bearing, 2 pi eta r^3 b_shear (omega_j - omega_b)^2 / c.
+
+    Yang (1992) eq. 1.19 with b = sum of lands when grooved (his Tables 2.1-2.4, 4.1 Petroff
+    columns; the relative speed is the engine or camshaft speed). Reuses
+    :func:`camtrain.formulas.bearings.petroff_power`.
+    """
+    rel = np.asarray(omega_journal, dtype=float) - np.asarray(omega_bearing, dtype=float)
+    return petroff_power(bearing.viscosity, rel, bearing.radius, bearing.shear_length,
+                         bearing.clearance)
+
+
+def shear_power(bearing: JournalBearing, eps, delta, omega_rel, film: str = "2pi") -> np.ndarray:
+    """Couette shear power [W] for eccentricity ratios ``eps`` (Yang eqs 1.20-1.22 shear term).
+
+    Args:
+        eps: eccentricity ratio(s), 0 <= eps < 1.
+        delta: squeeze-velocity direction from the line of centres [rad]; fixes the pi-film
+            window (ignored for "2pi"). -pi/2 for pure rotation with wbar > 0.
+        omega_rel: omega_journal - omega_bearing [rad/s].
+    """
+    eps = np.atleast_1d(np.asarray(eps, dtype=float))
+    delta = np.broadcast_to(np.asarray(delta, dtype=float), eps.shape)
+    j = np.array([film_factor(float(e), float(d), film) for e, d in zip(eps, delta, strict=True)])
+    return bearing.shear_coefficient * j * np.asarray(omega_rel, dtype=float) ** 2
