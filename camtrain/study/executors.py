@@ -1,0 +1,163 @@
+"""Where sweep cases run: in this process, in local worker processes, or on a Dask cluster.
+
+Every executor calls the same pure function, :func:`run_case`, on the same picklable job, so the
+results do not depend on the executor; only the order in which they arrive does, and the output
+layer sorts by case index.
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from camtrain.errors import CamtrainError
+from camtrain.study.sweep import Case, Parameter, case_raw
+
+#: Per-angle columns kept for the overlay plots (film, load, stress; lift for kinematics-only runs).
+OVERLAY_COLUMNS = ("film_min", "load", "hertz_pmax", "lift")
+
+
+@dataclass(frozen=True)
+class Job:
+    """Everything one case needs, picklable: the raw datum deck and the case to apply to it."""
+
+    raw: dict
+    params: tuple[Parameter, ...]
+    case: Case
+    name: str
+    base_dir: str
+    keep_curves: bool = False
+
+
+def _contact_lost(metrics: dict) -> bool:
+    load_min = metrics.get("load_min")
+    return load_min is not None and load_min[0] <= 0.0
+
+
+def run_case(job: Job) -> dict:
+    """Build, validate and run one case; never raises for a case that fails.
+
+    Returns a plain record: index, values, status (ok | lost_contact | failed | error), message,
+    metrics {name: (value, unit)} and, if asked, the overlay curves.
+    """
+    from camtrain.deck.load import validate
+    from camtrain.runner import run_plan
+
+    record = {"index": job.case.index, "values": job.case.as_dict(), "status": "ok",
+              "message": "", "metrics": {}, "curves": None}
+    try:
+        raw = case_raw(job.raw, list(job.params), job.case)
+        result = run_plan(validate(raw, job.name, Path(job.base_dir)))
+    except CamtrainError as exc:
+        record.update(status="failed", message=f"{type(exc).__name__}: {exc}")
+        return record
+    except Exception as exc:  # noqa: BLE001 - a bug in one case must not end the sweep
+        record.update(status="error", message=f"internal error {type(exc).__name__}: {exc}")
+        return record
+    record["metrics"] = {n: (m.value, m.unit) for n, m in result.metrics.items()}
+    if _contact_lost(record["metrics"]):
+        # Ball cuts his curves at valve bounce: the case ran, but its results are not physical
+        why = [w for w in result.warnings if "contact" in w or "bounce" in w]
+        record.update(status="lost_contact", message=why[0] if why else "minimum load <= 0")
+    if job.keep_curves and "cam_angle" in result.columns:
+        import math
+
+        curves = {"cam_angle": ("deg", [math.degrees(v) for v in result["cam_angle"]])}
+        for name in OVERLAY_COLUMNS:
+            if name in result.columns:
+                col = result.columns[name]
+                curves[name] = (col.unit, [float(v) for v in col.values])
+        record["curves"] = curves
+    return record
+
+
+class SerialExecutor:
+    """Runs cases one after another in this process (``--jobs 1``)."""
+
+    description = "serial"
+
+    def map(self, fn: Callable, jobs: Iterable) -> Iterator:
+        for job in jobs:
+            yield fn(job)
+
+    def close(self) -> None:
+        pass
+
+
+class ProcessExecutor:
+    """Local worker processes (``--jobs N``). Spawned, not forked: the parent may run threads
+    (the progress bar) and forking a threaded process can deadlock."""
+
+    def __init__(self, jobs: int):
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        self.jobs = jobs
+        self.description = f"{jobs} worker processes"
+        self._pool = ProcessPoolExecutor(max_workers=jobs,
+                                         mp_context=multiprocessing.get_context("spawn"))
+
+    def map(self, fn: Callable, jobs: Iterable) -> Iterator:
+        from concurrent.futures import as_completed
+
+        futures = [self._pool.submit(fn, job) for job in jobs]
+        try:
+            for fut in as_completed(futures):
+                yield fut.result()
+        finally:
+            for fut in futures:
+                fut.cancel()
+
+    def close(self) -> None:
+        self._pool.shutdown(wait=True, cancel_futures=True)
+
+
+class DaskExecutor:
+    """Cases on an existing Dask distributed cluster (``--scheduler ADDRESS``).
+
+    The workers must have camtrain installed; the deck travels inside each job, so the workers
+    need no access to the deck file (a lift-table *file* must be readable by them, though).
+    """
+
+    def __init__(self, address):
+        try:
+            from dask.distributed import Client
+        except ImportError:
+            raise CamtrainError("--scheduler needs Dask: pip install 'camtrain[dask]'") from None
+        try:
+            self._client = Client(address, set_as_default=False)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise CamtrainError(f"--scheduler: cannot connect to {address!r}: {exc}") from None
+        self.description = f"Dask cluster at {self._client.scheduler.address}"
+
+    def map(self, fn: Callable, jobs: Iterable) -> Iterator:
+        # results in submission order: the client is not the process default (set_as_default
+        # is False), so helpers that look up a default client, like as_completed, cannot be used
+        futures = self._client.map(fn, list(jobs), pure=False)
+        try:
+            for fut in futures:
+                yield fut.result()
+        finally:
+            self._client.cancel(futures)
+
+    def close(self) -> None:
+        self._client.close()
+
+
+def default_jobs() -> int:
+    """CPUs this process may use (respects affinity masks and container limits where visible)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def make_executor(jobs: int | None = None, scheduler=None):
+    """Dask if a scheduler is given, else serial for one job, else a local process pool."""
+    if scheduler is not None:
+        return DaskExecutor(scheduler)
+    jobs = default_jobs() if jobs is None else jobs
+    if jobs < 1:
+        raise CamtrainError(f"--jobs: {jobs} is not a number of worker processes (>= 1)")
+    return SerialExecutor() if jobs == 1 else ProcessExecutor(jobs)

@@ -1,0 +1,184 @@
+"""Run a sweep end to end: prepare the cases, run them on an executor, keep sweep.csv current,
+then write the trend table and the plots.
+
+sweep.csv is rewritten atomically as cases finish (at most about once a second) and once more on
+the way out, also after Ctrl-C, so an interrupted sweep keeps what it finished and ``resume``
+runs only the rest.
+"""
+from __future__ import annotations
+
+import json
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from camtrain.errors import InputError, Problem
+from camtrain.study import sweep_output as so
+from camtrain.study.executors import Job, make_executor, run_case
+from camtrain.study.sweep import Case, Parameter, apply_fixed, build_parameters, cases, parse_assignment
+
+
+@dataclass
+class Sweep:
+    """A prepared sweep: the datum deck (raw, with --set applied), its parameters and cases."""
+
+    raw: dict
+    name: str
+    base_dir: str
+    sha256: str
+    params: list[Parameter]
+    fixed: list[Parameter]
+    cases: list[Case]
+    zipped: bool = False
+
+
+@dataclass
+class Outcome:
+    """What a sweep produced: all records (by case index), files written and status counts."""
+
+    records: list[dict]
+    written: list[Path] = field(default_factory=list)
+    reused: int = 0
+    trends: list = field(default_factory=list)
+
+    def count(self, status: str) -> int:
+        return sum(r["status"] == status for r in self.records)
+
+
+def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str] = (),
+            zipped: bool = False) -> Sweep:
+    """Read the deck, resolve and check every parameter, generate the cases.
+
+    ``specs`` = [(name, 'values' | 'range' | 'relative', text)]; ``sets`` = ['path=value', ...].
+    Bad arguments raise InputError naming the option and value; the datum deck (with the
+    ``sets`` applied) must itself be valid.
+    """
+    from camtrain.deck.load import load_deck, parse_toml, validate
+
+    loaded = load_deck(str(deck))
+    raw = parse_toml(loaded.text, loaded.path)
+    base_dir = str(Path(deck).resolve().parent) if str(deck) != "-" else str(Path.cwd())
+    fixed = [parse_assignment(raw, s) for s in sets]
+    raw = apply_fixed(raw, fixed)
+    if fixed:
+        validate(raw, loaded.path, Path(base_dir))
+    params = build_parameters(raw, list(specs))
+    return Sweep(raw, loaded.path, base_dir, loaded.sha256, params, fixed,
+                 cases(params, zipped), zipped)
+
+
+def kept_indices(n: int, most: int) -> set[int]:
+    """Evenly spaced cases whose per-angle curves are kept for the overlays."""
+    if most <= 0 or n == 0:
+        return set()
+    if n <= most:
+        return set(range(n))
+    return {round(i * (n - 1) / (most - 1)) for i in range(most)} if most > 1 else {0}
+
+
+def _manifest(sweep: Sweep) -> dict:
+    from camtrain import __version__
+
+    return {"camtrain_version": __version__, "deck": sweep.name, "deck_sha256": sweep.sha256,
+            "zip": sweep.zipped, "cases": len(sweep.cases),
+            "set": {p.path: p.values[0] for p in sweep.fixed},
+            "parameters": [{"name": p.name, "path": p.path, "unit": p.unit, "datum": p.datum,
+                            "values": list(p.values)} for p in sweep.params]}
+
+
+def _check_resume(out_dir: Path, sweep: Sweep) -> None:
+    path = out_dir / "sweep.json"
+    if not path.is_file():
+        return
+    try:
+        old = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return
+    if old.get("deck_sha256") != sweep.sha256:
+        raise InputError(Problem("--resume", f"the deck {sweep.name} changed since the sweep in "
+                                 f"{out_dir} started", None, "the same deck",
+                                 "start a new sweep (without --resume) or use another --out"))
+
+
+def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, scheduler=None,
+              executor=None, resume: bool = False, plots: bool = True, overlay_max: int = 20,
+              progress: Callable[[dict, int, int], None] | None = None) -> Outcome:
+    """Run every case not already finished in ``out_dir`` and write all outputs.
+
+    ``progress(record, done, total)`` is called as each case finishes (also for reused ones).
+    """
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    csv_path = out_dir / "sweep.csv"
+    keep = kept_indices(len(sweep.cases), overlay_max)
+    done: dict[int, dict] = {}
+    if resume:
+        _check_resume(out_dir, sweep)
+        done = so.read_finished(csv_path, sweep.params, sweep.cases)
+    else:
+        for stale in (out_dir / "curves").glob("case_*.csv"):
+            stale.unlink()
+    reused = len(done)
+    so._atomic_write(out_dir / "sweep.json", json.dumps(_manifest(sweep), indent=2) + "\n")
+    todo = [c for c in sweep.cases if c.index not in done]
+    total = len(sweep.cases)
+    if progress:
+        for rec in sorted(done.values(), key=lambda r: r["index"]):
+            progress(rec, reused, total)
+    own = executor is None and todo
+    if own:
+        jobs = min(jobs, len(todo)) if jobs else jobs
+        executor = make_executor(jobs, scheduler)
+    jobs_list = [Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
+                     c.index in keep) for c in todo]
+    last = time.monotonic()
+    try:
+        if todo:
+            for rec in executor.map(run_case, jobs_list):
+                so.write_curves(out_dir, rec)
+                rec["curves"] = None  # on disk now; keeps memory flat for long sweeps
+                done[rec["index"]] = rec
+                if progress:
+                    progress(rec, len(done), total)
+                if time.monotonic() - last > 1.0:
+                    so.write_csv(csv_path, sweep.params, list(done.values()))
+                    last = time.monotonic()
+    finally:
+        so.write_csv(csv_path, sweep.params, list(done.values()))
+        if own:
+            executor.close()
+    records = sorted(done.values(), key=lambda r: r["index"])
+    outcome = Outcome(records, [csv_path, out_dir / "sweep.json"], reused)
+    outcome.written += _write_trends(out_dir, sweep, outcome)
+    if plots:
+        outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends)
+        kept = [r for r in records if r["index"] in keep]
+        outcome.written += so.overlay_plots(out_dir, sweep.params, kept)
+    return outcome
+
+
+def _write_trends(out_dir: Path, sweep: Sweep, outcome: Outcome) -> list[Path]:
+    import csv
+    import io
+
+    from camtrain.study.trends import trend_table, trends_markdown
+
+    names = so.metric_order(outcome.records)
+    units = so.metric_units(outcome.records)
+    pnames = [p.name for p in sweep.params]
+    outcome.trends = trend_table(outcome.records, pnames, names, zipped=sweep.zipped)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["metric", "unit", "parameter", "trend", "detail", "cases"])
+    for t in outcome.trends:
+        w.writerow([t.metric, units.get(t.metric, ""), t.parameter, t.trend, t.detail, t.points])
+    so._atomic_write(out_dir / "trends.csv", buf.getvalue())
+    counts = ", ".join(f"{s} {outcome.count(s)}" for s in ("ok", "lost_contact", "failed", "error")
+                       if outcome.count(s))
+    head = (f"# Trends: {sweep.name}\n\n{len(outcome.records)} cases ({counts}). "
+            + "; ".join(f"{p.name} = {p.path} [{p.unit}], datum {p.datum:g}" if p.datum is not None
+                        else f"{p.name} = {p.path} [{p.unit}]" for p in sweep.params) + ".\n\n")
+    so._atomic_write(out_dir / "trends.md", head + trends_markdown(outcome.trends, pnames, names,
+                                                                  units))
+    return [out_dir / "trends.csv", out_dir / "trends.md"]

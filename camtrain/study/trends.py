@@ -1,0 +1,101 @@
+"""Trend tables in the manner of Ball's Tables 5.1-5.3: does a metric rise or fall with a parameter?
+
+Only cases that ran normally (status ok) count: Ball cut his curves at valve bounce and at the
+geometry limits, and so do we.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+RISES, FALLS, CONSTANT, NON_MONOTONE, UNKNOWN = "rises", "falls", "constant", "non-monotone", "n/a"
+SYMBOLS = {RISES: "↑", FALLS: "↓", CONSTANT: "–", NON_MONOTONE: "↕", UNKNOWN: "?"}
+
+
+@dataclass(frozen=True)
+class Trend:
+    """Direction of one metric against one parameter; ``detail`` spells out a non-monotone shape."""
+
+    metric: str
+    parameter: str
+    trend: str
+    detail: str = ""
+    points: int = 0
+
+
+def classify(xs: list[float], ys: list[float], rtol: float = 1e-6) -> tuple[str, str]:
+    """(trend, detail) of ys against increasing xs.
+
+    Steps smaller than ``rtol`` times the largest |y| count as flat (numerical noise), so a metric
+    the parameter does not affect comes out 'constant'. A non-monotone series gets its sequence of
+    runs as detail, e.g. 'falls then rises'.
+    """
+    pts = sorted((x, y) for x, y in zip(xs, ys, strict=True) if math.isfinite(y))
+    if len(pts) < 2:
+        return UNKNOWN, "fewer than two finished cases"
+    values = [y for _, y in pts]
+    tol = rtol * max(abs(v) for v in values)
+    runs: list[str] = []
+    for a, b in zip(values, values[1:], strict=False):
+        step = RISES if b - a > tol else FALLS if a - b > tol else None
+        if step and (not runs or runs[-1] != step):
+            runs.append(step)
+    if not runs:
+        return CONSTANT, ""
+    if len(runs) == 1:
+        return runs[0], ""
+    return NON_MONOTONE, " then ".join(runs)
+
+
+def _lines(records: list[dict], param: str, others: list[str]) -> list[list[dict]]:
+    """Group ok records into lines along ``param`` with every other parameter held fixed."""
+    groups: dict[tuple, list[dict]] = {}
+    for r in records:
+        key = tuple(r["values"][o] for o in others)
+        groups.setdefault(key, []).append(r)
+    return list(groups.values())
+
+
+def trend_table(records: list[dict], params: list[str], metrics: list[str],
+                rtol: float = 1e-6, zipped: bool = False) -> list[Trend]:
+    """One Trend per (metric, parameter). In a grid, each line along the parameter is classified;
+    the trend is theirs if they agree, else non-monotone ('differs along the grid'). Zipped
+    parameters move together, so all cases form one line."""
+    ok = [r for r in records if r["status"] == "ok"]
+    out = []
+    for param in params:
+        others = [p for p in params if p != param]
+        lines = [ok] if zipped else _lines(ok, param, others)
+        for metric in metrics:
+            found = []
+            for line in lines:
+                xs = [r["values"][param] for r in line if metric in r["metrics"]]
+                ys = [r["metrics"][metric][0] for r in line if metric in r["metrics"]]
+                found.append(classify(xs, ys, rtol) + (len(xs),))
+            found = [f for f in found if f[0] != UNKNOWN] or found or [(UNKNOWN, "", 0)]
+            kinds = {f[:2] for f in found}
+            n = sum(f[2] for f in found)
+            if len(kinds) == 1:
+                trend, detail = kinds.pop()
+            else:
+                trend, detail = NON_MONOTONE, "differs along the grid"
+            out.append(Trend(metric, param, trend, detail, n))
+    return out
+
+
+def trends_markdown(trends: list[Trend], params: list[str], metrics: list[str],
+                    units: dict[str, str]) -> str:
+    """A metric x parameter table with arrows, like Ball's Tables 5.1-5.3 (↑ rises as the
+    parameter increases, ↓ falls, – unaffected, ↕ non-monotone, ? too few cases)."""
+    by = {(t.metric, t.parameter): t for t in trends}
+    lines = ["| metric | " + " | ".join(f"{p} ↑" for p in params) + " |",
+             "|---|" + "---|" * len(params)]
+    for m in metrics:
+        cells = []
+        for p in params:
+            t = by[(m, p)]
+            cells.append(SYMBOLS[t.trend] + (f" ({t.detail})" if t.detail else ""))
+        lines.append(f"| {m} [{units.get(m, '-')}] | " + " | ".join(cells) + " |")
+    legend = ("\n↑ rises as the parameter increases, ↓ falls, – unaffected, ↕ non-monotone, "
+              "? fewer than two finished cases. Only cases with status ok count.\n")
+    return "\n".join(lines) + "\n" + legend
