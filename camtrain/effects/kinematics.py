@@ -3,8 +3,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from functools import lru_cache
+
 from camtrain.effects.lift_law import build_lift_law
 from camtrain.lift import angle_grid
+
+# Lift laws and their noise estimates depend only on the immutable [lift] model, so they are
+# built once per process: sweeps over speed, spring or geometry reuse them (a table law's spline
+# fit and noise estimate cost far more than the rest of a run).
+_cached_law = lru_cache(maxsize=32)(build_lift_law)
+
+
+@lru_cache(maxsize=32)
+def _cached_noise(lift_model):
+    return _cached_law(lift_model).noise_estimate()
 
 
 def lift_columns(deck, result, points: int | None = None):
@@ -12,7 +24,7 @@ def lift_columns(deck, result, points: int | None = None):
 
     Returns the LiftLaw and the LiftCurve for later effects.
     """
-    law = build_lift_law(deck.lift)
+    law = _cached_law(deck.lift)
     theta = angle_grid(points or deck.solver.angle_points)
     curve = law.evaluate(theta)
     where = "valve" if deck.lift.measured_at == "valve" else "cam (inspection follower)"
@@ -34,7 +46,7 @@ def lift_columns(deck, result, points: int | None = None):
     i = int(np.argmax(curve.d2))
     result.add_metric("max_acceleration", curve.d2[i], "m/rad^2", "largest d2l/dtheta2",
                       theta[i])
-    _report_law_quality(law, result, float(np.max(np.abs(curve.d1))))
+    _report_law_quality(law, result, float(np.max(np.abs(curve.d1))), deck.lift)
     return law, curve
 
 
@@ -54,7 +66,7 @@ def _worth_warning(j, peak_velocity: float) -> bool:
     return j.label not in _RAMP_ENDS and abs(j.d1) > _VELOCITY_STEP_FRACTION * peak_velocity
 
 
-def _report_law_quality(law, result, peak_velocity: float) -> None:
+def _report_law_quality(law, result, peak_velocity: float, lift_model=None) -> None:
     """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings."""
     jumps = law.joint_jumps()
     if jumps:
@@ -66,9 +78,8 @@ def _report_law_quality(law, result, peak_velocity: float) -> None:
         for j in jumps:
             if _worth_warning(j, peak_velocity):
                 result.warn(f"lift law is discontinuous: {j.describe()}")
-    noise = getattr(law, "noise_estimate", None)
-    if callable(noise):
-        est = noise()
+    if callable(getattr(law, "noise_estimate", None)):
+        est = _cached_noise(lift_model)
         result.add_metric("table_noise_velocity", est.d1, "m/rad",
                           "estimated RMS noise of the table-derived velocity")
         result.add_metric("table_noise_acceleration", est.d2, "m/rad^2",
@@ -166,11 +177,26 @@ def zero_crossings(theta: np.ndarray, values: np.ndarray) -> list[float]:
     return out
 
 
+@lru_cache(maxsize=32)
+def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
+    """Cam lift converted to valve lift: depends only on the lift, the pivot geometry and the
+    grid, so a sweep over other parameters converts once (the conversion is a root search per
+    angle). The arrays are made read-only because they are shared between runs."""
+    from camtrain.effects.mechanism import valve_lift
+
+    curve = _cached_law(lift_model).evaluate(angle_grid(points))
+    valve = valve_lift(lift_model, mechanism, base_radius, curve)
+    for arr in (valve.theta, valve.lift, valve.d1, valve.d2, valve.d3):
+        arr.flags.writeable = False
+    return valve
+
+
 def run(deck, state) -> None:
-    from camtrain.effects.mechanism import kinematics, valve_lift
+    from camtrain.effects.mechanism import kinematics
 
     law, curve = lift_columns(deck, state.result)
-    valve = valve_lift(deck, curve)
+    valve = curve if deck.lift.measured_at == "valve" else _cached_valve_lift(
+        deck.lift, deck.mechanism, deck.cam.base_radius, deck.solver.angle_points)
     opening, closing = kinematics(deck, valve)
     kinematics_columns(opening, state.result)
     kinematics_metrics(deck, opening, state.result)

@@ -21,18 +21,18 @@ def closing_geometry(closing: S.ClosingPair) -> M.PivotGeometry:
                            lam=closing.lambda_, kind="end")
 
 
-def valve_lift(deck: S.Deck, curve: LiftCurve) -> LiftCurve:
+def valve_lift(lift: S.Lift, mech: S.Mechanism, base_radius: float,
+               curve: LiftCurve) -> LiftCurve:
     """The valve lift: the law itself, or converted from cam lift read by an inspection roller."""
-    if deck.lift.measured_at == "valve":
+    if lift.measured_at == "valve":
         return curve
-    mech = deck.mechanism
     if mech.type not in S.PIVOTED:
         raise field_error("lift.measured_at", "cam lift is converted to valve lift for pivoted "
                           "followers only", "cam", "\"valve\" for a "
                           f"{mech.type} follower (its cam lift is the valve lift)")
     kind = "end" if mech.type == "finger" else "central"
-    return M.valve_lift_from_cam_lift(curve, pivot_geometry(mech, deck.cam.base_radius, kind),
-                                      deck.lift.inspection_radius, rotation=mech.rotation)
+    return M.valve_lift_from_cam_lift(curve, pivot_geometry(mech, base_radius, kind),
+                                      lift.inspection_radius, rotation=mech.rotation)
 
 
 def _rocker(p: S.Pushrod) -> M.RockerGeometry:
