@@ -31,10 +31,10 @@ class Speed:
     """Operating speed. Give the camshaft speed (as Ball's template) or the engine speed."""
 
     camshaft: float | None = quantity(
-        "Camshaft rotational speed", "rpm", default=None, ge=0, example=2500.0)
+        "Camshaft rotational speed", "rpm", default=None, gt=0, example=2500.0)
     engine: float | None = quantity(
         "Engine (crankshaft) speed, instead of camshaft; camshaft speed = engine speed / 2",
-        "rpm", default=None, ge=0)
+        "rpm", default=None, gt=0)
 
     def problems(self, path: str) -> list[Problem]:
         given = [n for n in ("camshaft", "engine") if getattr(self, n) is not None]
@@ -304,8 +304,10 @@ class Table:
     file: str | None = option(
         "CSV file with a header 'angle_deg,lift_mm' (or angle_rad / lift_m) instead of "
         "angles and lifts; a path relative to the deck", default=None)
-    dataset: Literal["pinto_inlet_cam", "zeta_intake", "zeta_exhaust"] | None = option(
+    dataset: Literal["pinto_inlet_cam", "pinto_inlet_valve", "zeta_intake",
+                     "zeta_exhaust"] | None = option(
         "A lift table shipped with camtrain instead: pinto_inlet_cam (Ball 1988 App E), "
+        "pinto_inlet_valve (App E converted to valve lift through the datum geometry), "
         "zeta_intake, zeta_exhaust (Yang 1992 App C)", default=None)
     symmetric: bool = option("Mirror the data about the maximum-lift position", default=False)
     derivative: Literal["smoothing_spline", "central_difference"] = option(
@@ -488,6 +490,33 @@ class Clearance:
 
 
 @dataclass(frozen=True, kw_only=True)
+class Guides:
+    """Follower and valve-stem guides: full-film Couette shear losses (Yang 1992 §3.3.2)."""
+
+    follower_diameter: float | None = quantity(
+        "Follower (bucket) diameter in its bore; omit for a follower without a guide", "mm",
+        default=None, gt=0, example=28.4, applies="flat, domed")
+    follower_guide_length: float | None = quantity("Follower guide (bore) length", "mm",
+                                                   default=None, gt=0, example=22.0,
+                                                   applies="flat, domed")
+    follower_guide_clearance: float | None = quantity(
+        "Radial clearance between follower and bore", "mm", default=None, gt=0, example=0.024,
+        applies="flat, domed")
+    valve_stem_diameter: float = quantity("Valve stem diameter", "mm", gt=0, example=6.043)
+    valve_guide_length: float = quantity("Valve guide length", "mm", gt=0, example=36.0)
+    valve_guide_clearance: float = quantity("Radial clearance between valve stem and guide",
+                                            "mm", gt=0, example=0.02)
+
+    def problems(self, path: str) -> list[Problem]:
+        given = [self.follower_diameter, self.follower_guide_length,
+                 self.follower_guide_clearance]
+        if any(v is None for v in given) and any(v is not None for v in given):
+            return [Problem(f"{path}.follower_diameter", "the follower guide needs diameter, "
+                            "guide length and clearance together", None, "all three or none")]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
 class Materials:
     """Elastic properties of cam and follower."""
 
@@ -501,14 +530,76 @@ class Materials:
 
 @dataclass(frozen=True, kw_only=True)
 class Lubricant:
-    """The oil at the contact."""
+    """The oil at the contact: its viscosity given directly, or from a fit at the oil temperature."""
 
-    viscosity: float = quantity("Dynamic viscosity at ambient pressure and oil temperature",
-                                "Pa·s", gt=0, example=0.05)
+    viscosity: float | None = quantity(
+        "Dynamic viscosity at ambient pressure and oil temperature; omit to take it from "
+        "viscosity_fit at temperature", "Pa·s", default=None, gt=0, example=0.05)
     pressure_viscosity: float = quantity("Pressure-viscosity coefficient alpha", "1/GPa", ge=0,
                                          example=22.0)
     roughness: float = quantity("Composite RMS surface roughness sigma (for lambda = h/sigma)",
                                 "µm", default=0.2, gt=0)
+    temperature: float | None = quantity("Oil temperature at the contact", "°C", default=None,
+                                         gt=-60, lt=400)
+    viscosity_fit: Literal["vogel", "two_point"] | None = option(
+        "Viscosity-temperature law through the fit points: vogel (three or more points, Vogel "
+        "1921) or two_point (exponential, Reynolds 1886)", default=None)
+    fit_temperatures: tuple[float, ...] | None = quantity(
+        "Temperatures of the fit points", "°C", default=None, gt=-60, lt=400,
+        applies="viscosity_fit")
+    fit_viscosities: tuple[float, ...] | None = quantity(
+        "Dynamic viscosities at the fit temperatures", "Pa·s", default=None, gt=0,
+        applies="viscosity_fit")
+
+    def __post_init__(self) -> None:
+        # the run chain reads ``viscosity``: fill it from the fit (bad fit data -> problems())
+        if self.viscosity is None and not self._fit_problems("lubricant"):
+            object.__setattr__(self, "viscosity", self.fitted_viscosity())
+
+    def fitted_viscosity(self) -> float:
+        """eta(temperature) [Pa s] from the fit points (Vogel 1921 or Reynolds 1886 two-point)."""
+        from camtrain.formulas.viscosity import reynolds_two_point, vogel, vogel_fit
+        T = [t + 273.15 for t in self.fit_temperatures]
+        eta = list(self.fit_viscosities)
+        T0 = self.temperature + 273.15
+        if self.viscosity_fit == "vogel":
+            return float(vogel(T0, *vogel_fit(T, eta)))
+        return float(reynolds_two_point(T0, T[0], eta[0], T[1], eta[1]))
+
+    def _fit_problems(self, path: str) -> list[Problem]:
+        if self.viscosity_fit is None:
+            return [] if self.viscosity is not None else [Problem(
+                f"{path}.viscosity", "is missing", None,
+                "a viscosity in Pa·s, or viscosity_fit with temperature and fit points")]
+        out = []
+        if self.temperature is None:
+            out.append(Problem(f"{path}.temperature", "is required with viscosity_fit", None,
+                               "the oil temperature in °C"))
+        t, e = self.fit_temperatures or (), self.fit_viscosities or ()
+        need = 3 if self.viscosity_fit == "vogel" else 2
+        if len(t) != len(e) or len(t) < need or (self.viscosity_fit == "two_point"
+                                                   and len(t) != 2):
+            out.append(Problem(f"{path}.fit_temperatures", "and fit_viscosities must be pairs",
+                               f"{len(t)} temperatures, {len(e)} viscosities",
+                               f"{'at least 3' if need == 3 else 'exactly 2'} of each"))
+        elif len(set(t)) != len(t) or any((b - a) * (y - x) >= 0 for a, b, x, y in
+                                            zip(t, t[1:], e, e[1:])):
+            out.append(Problem(f"{path}.fit_viscosities", "must fall as the temperature rises",
+                               list(e), "distinct temperatures, viscosity falling with them"))
+        return out
+
+    def problems(self, path: str) -> list[Problem]:
+        out = self._fit_problems(path)
+        if self.viscosity_fit is not None and not out:
+            try:
+                eta = self.fitted_viscosity()
+            except Exception as exc:  # a Vogel fit that has no solution for these points
+                return [Problem(f"{path}.fit_viscosities", "cannot be fitted", None, "",
+                                str(exc))]
+            if self.viscosity is not None and abs(self.viscosity - eta) > 1e-9 * eta:
+                out.append(Problem(f"{path}.viscosity", "conflicts with viscosity_fit",
+                                   self.viscosity, f"omit it (the fit gives {eta:.6g} Pa·s)"))
+        return out
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -536,14 +627,34 @@ class Tribology:
         "Minimum-film formula: auto (Dowson-Higginson for line, Hamrock-Dowson for point "
         "contact with loads; Blok rigid-piezoviscous without loads) or a named formula",
         default="auto")
-    friction_model: Literal["cap", "lambda", "lambda_cap"] = option(
+    friction_model: Literal["cap", "lambda", "lambda_cap", "greenwood_tripp"] = option(
         "Friction: cap (lesser of viscous shear and boundary friction), lambda (boundary "
-        "friction where h/sigma < 1), lambda_cap (both)", default="cap")
+        "friction where h/sigma < 1), lambda_cap (both), greenwood_tripp (asperity load share "
+        "with boundary shear plus viscous shear of the rest, Teodorescu et al. 2005)",
+        default="cap")
     boundary_friction: float = quantity(
         "Boundary friction coefficient (cap and start of the friction/load iteration)", "-",
         default=0.08, ge=0, le=1)
     hertz: Literal["exact", "ball_1988"] = option(
         "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
+    # Greenwood-Tripp / Teodorescu et al. (2005) parameters. The paper prints none of them;
+    # the defaults are typical values for run-in steel surfaces (see docs/tribology.md).
+    asperity_density_product: float = quantity(
+        "Greenwood-Tripp roughness parameter zeta beta sigma (asperity density x tip radius x "
+        "rms roughness)", "-", default=0.04, gt=0, lt=1, applies="friction_model = "
+        "greenwood_tripp")
+    roughness_slope: float = quantity(
+        "Greenwood-Tripp ratio sigma / beta (rms roughness over asperity tip radius)", "-",
+        default=1e-3, gt=0, lt=1, applies="friction_model = greenwood_tripp")
+    eyring_stress: float = quantity(
+        "Eyring (limiting) shear stress tau_0 of the oil (Teodorescu eq. 12)", "MPa",
+        default=2.0, ge=0, applies="friction_model = greenwood_tripp")
+    shear_pressure_coefficient: float = quantity(
+        "Rise of the limiting shear stress with mean pressure, gamma (Teodorescu eq. 12)", "-",
+        default=0.08, ge=0, lt=1, applies="friction_model = greenwood_tripp")
+    boundary_shear_coefficient: float = quantity(
+        "Pressure coefficient m of the asperity boundary shear strength (Teodorescu eq. 8)",
+        "-", default=0.17, ge=0, lt=1, applies="friction_model = greenwood_tripp")
 
 
 # --------------------------------------------------------------------------- design limits
@@ -575,7 +686,8 @@ class Limits:
 
 # --------------------------------------------------------------------------- the deck
 
-EFFECT_NAMES = ("kinematics", "loads", "hertz", "film", "friction", "power")
+EFFECT_NAMES = ("kinematics", "loads", "hertz", "film", "friction", "power", "camshaft_torque",
+                "bearings")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -595,9 +707,13 @@ class Deck:
     clearance: Clearance | None = section("Valve clearance or lash adjuster")
     materials: Materials = section("Materials (defaults: steel on steel)", default=Materials())
     lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
+    guides: Guides | None = section("Follower and valve guides (guide friction; needs lubricant)")
     solver: Solver = section("Solver resolution", default=Solver())
     tribology: Tribology = section("Tribology model options", default=Tribology())
     limits: Limits | None = section("Design limits checked by run --check")
+    camshaft: Camshaft | None = section(
+        "The camshaft carrying copies of this valve train: lobes, bearings, drive (camshaft torque "
+        "and bearing effects)")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -617,4 +733,137 @@ class Deck:
         if self.cam.taper_angle and self.mechanism.type != "domed":
             out.append(Problem("cam.taper_angle", "applies to a domed follower only",
                                f"{from_si(self.cam.taper_angle, 'deg'):g} deg", "0"))
+        return out
+
+
+# --------------------------------------------------------------------------- camshaft
+
+@dataclass(frozen=True, kw_only=True)
+class CamLobe:
+    """One lobe on the shaft. It drives a copy of this deck's valve train (same lift law and
+    mechanism), phased by its angle of maximum lift (Yang 1992 App C.5; Ball 1988 §6.3)."""
+
+    position: float = quantity("Axial position of the lobe along the shaft (same datum as the "
+                               "bearings)", "mm", example=50.4)
+    max_lift_angle: float = quantity(
+        "Camshaft angle at which this lobe is at maximum lift (from firing order and valve "
+        "timing); 0 = the deck's lift law as given", "deg", default=0.0, ge=-360, le=360)
+    follower_axis_angle: float = quantity(
+        "Direction from the shaft axis to this lobe's follower in the bearing frame (x normal to "
+        "the bore axis, y along it): 90 = straight up the bore, less/more by the valve "
+        "inclination or the V half angle", "deg", default=90.0, ge=-360, le=360)
+    bank: Literal[1, 2] = option(
+        "Bank of a V engine; bank-2 lobes sit on the other bank's shaft (torque only, shifted by "
+        "half the V angle)", default=1)
+
+
+@dataclass(frozen=True, kw_only=True)
+class CamBearing:
+    """One plain camshaft bearing (short-bearing theory; a full central groove makes two lands)."""
+
+    position: float = quantity("Axial position of the bearing centre", "mm", example=0.0)
+    diameter: float = quantity("Journal diameter d", "mm", gt=0, example=25.97)
+    length: float = quantity("Overall bearing length b, groove included", "mm", gt=0,
+                             example=17.0)
+    clearance: float = quantity("Radial clearance c", "mm", gt=0, example=0.0225)
+    groove_width: float = quantity(
+        "Width of a full circumferential central groove; 0 = ungrooved", "mm", default=0.0,
+        ge=0)
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        if self.groove_width >= self.length:
+            out.append(Problem(f"{path}.groove_width", "is not shorter than the bearing",
+                               _mm(self.groove_width), f"< length ({_mm(self.length)})"))
+        if self.clearance >= 0.5 * self.diameter:
+            out.append(Problem(f"{path}.clearance", "is larger than the journal radius",
+                               _mm(self.clearance), "a radial clearance << d/2"))
+        return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class CamDrive:
+    """Belt, chain or gear drive of the camshaft: its hub load goes to the bearings."""
+
+    type: Literal["belt", "chain", "gear"] = option(
+        "Drive type (all modelled by the same hub-load balance)", default="belt")
+    position: float = quantity("Axial position of the pulley, sprocket or gear", "mm",
+                               example=-40.0)
+    radius: float = quantity("Pitch radius of the pulley, sprocket or gear", "mm", gt=0,
+                             example=60.0)
+    hub_load_angle: float = quantity(
+        "Direction of the hub load (the pull of the spans) in the bearing frame", "deg",
+        default=90.0, ge=-360, le=360)
+    preload: float = quantity("Slack-side (tensioner) preload; hub load = |T|/r + 2 preload",
+                              "N", default=0.0, ge=0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class CamDamper:
+    """Centrifugal pendulum dampers tuned to torque orders (Williams 2013 ch 10)."""
+
+    orders: tuple[float, ...] = quantity("Orders to cancel (whole numbers)", "-", gt=0, le=100,
+                                         min_items=1, max_items=8, example=[4, 8])
+    count: int = quantity("Pendulums per order", "-", default=2, ge=1, le=64)
+    mass: float = quantity("Mass of one pendulum", "kg", gt=0, example=0.1)
+    pivot_radius: float = quantity("Radius of the pendulum pivot from the shaft axis, R", "mm",
+                                   gt=0, example=30.0)
+    tuning_margin: float = quantity(
+        "Tuning margin: pendulum length r from R/r = n^2 (1 + margin), slightly above exact "
+        "tuning (Williams eq. 10.57)", "%", default=5.0, gt=0, lt=100)
+
+    def problems(self, path: str) -> list[Problem]:
+        return [Problem(f"{path}.orders[{i}]", "must be a whole number", n, "1, 2, 3, ...")
+                for i, n in enumerate(self.orders) if n != int(n)]
+
+
+@dataclass(frozen=True, kw_only=True)
+class Camshaft:
+    """The camshaft (issue 8): lobes, bearings, drive, banks, torque orders, bearing orbits."""
+
+    lobes: tuple[CamLobe, ...] = section("Lobes on the shaft, one [[camshaft.lobes]] each",
+                                         required=True)
+    bearings: tuple[CamBearing, ...] | None = section(
+        "Bearings in axial order, one [[camshaft.bearings]] each (needed for bearing loads)")
+    drive: CamDrive | None = section("Drive pulley, sprocket or gear (hub load on the bearings)")
+    damper: CamDamper | None = section("Pendulum dampers for chosen torque orders")
+    rotation: Literal["anticlockwise", "clockwise"] = option(
+        "Direction of shaft rotation in the bearing frame (x, y)", default="anticlockwise")
+    v_angle: float | None = quantity(
+        "V angle between the banks (crank degrees); omit for one bank", "deg", default=None,
+        gt=0, lt=360)
+    orders: int = quantity("Highest harmonic order reported as a metric", "-", default=12, ge=1,
+                           le=100)
+    overhang: Literal["nearest", "lever"] = option(
+        "Forces beyond the end bearings: nearest (wholly on the end bearing, as Ball and Yang) "
+        "or lever (overhung-beam statics)", default="nearest")
+    viscosity: float | None = quantity(
+        "Effective viscosity of the bearing oil; omit to use lubricant.viscosity", "Pa·s",
+        default=None, gt=0)
+    film: Literal["pi", "2pi"] = option(
+        "Shear film for bearing power: pi (loaded half, Ball) or 2pi (full film, Yang's grooved "
+        "pressure-fed bearings)", default="pi")
+    method: Literal["mobility", "steady", "petroff"] = option(
+        "Bearing model: mobility (Booker orbit), steady (quasi-static Ocvirk) or petroff "
+        "(concentric power only)", default="mobility")
+    mobility: Literal["exact", "booker"] = option(
+        "Mobility: exact pi-film inversion or Booker's closed form", default="exact")
+    bearing_tolerance: float = quantity(
+        "Cycle-to-cycle change of the eccentricity ratio that counts as periodic", "-",
+        default=1e-5, gt=0, lt=0.1)
+    max_cycles: int = quantity("Most load cycles marched before giving up", "-", default=20,
+                               ge=2, le=1000)
+
+    def problems(self, path: str) -> list[Problem]:
+        out = []
+        if not self.lobes:
+            out.append(Problem(f"{path}.lobes", "has no lobes", None, "at least one lobe"))
+        pos = [b.position for b in self.bearings or ()]
+        for i in range(1, len(pos)):
+            if not pos[i] > pos[i - 1]:
+                out.append(Problem(f"{path}.bearings[{i}].position", "is not after the previous "
+                                   "bearing", _mm(pos[i]), "bearings in increasing axial order"))
+        if self.v_angle is None and any(lobe.bank == 2 for lobe in self.lobes):
+            out.append(Problem(f"{path}.v_angle", "is required when a lobe has bank = 2", None,
+                               "the V angle in crank degrees"))
         return out

@@ -61,8 +61,8 @@ _ODD = {"odd": True}
 def check_speed(omega: float) -> None:
     """The camshaft speed must be a positive number of rad/s."""
     if not (np.isfinite(omega) and omega > 0.0):
-        raise field_error("operating.camshaft_speed", "camshaft speed must be positive", omega,
-                          "> 0 rad/s")
+        raise field_error("speed.camshaft", "camshaft speed must be positive",
+                          f"{omega * 60.0 / (2.0 * np.pi):g} rpm", "> 0 rpm")
 
 
 def normalise_rotation(rotation: str | int) -> str:

@@ -1,0 +1,53 @@
+"""`camtrain accuracy DECK`: what accuracy costs in time, knob by knob (see docs/accuracy.md).
+
+Only click is imported at module level so that `camtrain --help` stays fast; the study, numpy and
+matplotlib come in when the command runs.
+"""
+from __future__ import annotations
+
+import sys
+
+import click
+
+from camtrain.errors import CamtrainError
+
+
+@click.command("accuracy")
+@click.argument("deck", type=str)
+@click.option("--knob", "knobs", multiple=True, metavar="NAME",
+              help="Resolution knob to study (repeatable): angle_points, friction_tolerance, "
+                   "table_smoothing. Default: every knob that applies to the deck.")
+@click.option("--tolerance", default="0.1%", show_default=True,
+              help="Relative tolerance for the cheapest setting, e.g. 0.1% or 1e-3.")
+@click.option("--out", "out", type=click.Path(file_okay=False), default=None,
+              help="Write accuracy.csv, accuracy.json and accuracy.png into this directory.")
+@click.option("--repeat", type=click.IntRange(1, 100), default=1, show_default=True,
+              help="Time each rung this many times and keep the fastest.")
+@click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
+def accuracy(deck: str, knobs: tuple[str, ...], tolerance: str, out: str | None, repeat: int,
+             quiet: bool) -> None:
+    """Run DECK at a ladder of resolutions per knob: value, error, observed order, wall time.
+
+    \b
+    The error of each rung is relative to the Richardson extrapolation of the three finest
+    rungs (or to the finest rung when no clean order can be read). The cheapest setting is the
+    coarsest rung from which every finer rung stays within --tolerance for every key metric.
+    """
+    try:
+        _accuracy(deck, knobs, tolerance, out, repeat, quiet)
+    except CamtrainError as exc:  # also when run outside the main group (no traceback)
+        click.echo(f"error: {exc}", err=True)
+        sys.exit(exc.exit_code)
+
+
+def _accuracy(deck, knobs, tolerance, out, repeat, quiet) -> None:
+    from camtrain.study.accuracy import parse_tolerance, render_table, study, write_outputs
+
+    tol = parse_tolerance(tolerance)
+    progress = None if quiet else (lambda k: click.echo(f"studying {k} ...", err=True))
+    report = study(deck, knobs, tol, repeat=repeat, progress=progress)
+    written = write_outputs(report, out) if out else []
+    if not quiet:
+        click.echo(render_table(report))
+        for path in written:
+            click.echo(f"wrote {path}")

@@ -1,0 +1,366 @@
+"""What accuracy costs in time: run one deck at a ladder of resolutions per knob (`camtrain accuracy`).
+
+A rung is the deck's raw TOML dictionary with one resolution knob changed, validated and run like
+any deck. For every key metric the study reports the value, its relative error against a reference,
+the observed order of convergence and the wall time of the run. The reference is the Richardson
+extrapolation of the three finest rungs when they converge monotonically at a plausible order, and
+the finest rung otherwise. Everything returned is plain data (dicts, lists, floats, strings).
+
+    >>> from camtrain.study.accuracy import study                                  # doctest: +SKIP
+    >>> report = study("decks/harrison_flat.toml", knobs=["angle_points"], tolerance=1e-3)
+    >>> report["knobs"]["angle_points"]["cheapest"]                                 # doctest: +SKIP
+
+Nothing here is imported by `camtrain --help`; numpy comes in with the first run.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from camtrain.errors import CamtrainError, InputError, Problem
+
+#: Metrics studied when a run produces them (scalar results a designer acts on).
+KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
+               "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift")
+
+#: Observed orders outside this range are treated as noise, not as asymptotic convergence.
+PLAUSIBLE_ORDER = (0.5, 8.0)
+
+
+@dataclass(frozen=True)
+class Knob:
+    """One resolution knob: the deck field it sets and its ladder, coarsest first.
+
+    ``step`` maps a knob value to the discretisation size h (smaller is finer), so the ladder's
+    refinement ratio and the observed order are in terms of h.
+    """
+
+    name: str
+    path: str
+    ladder: tuple[float, ...]
+    step: Callable[[float], float]
+    applies: Callable[[dict], bool]
+    description: str
+    integer: bool = False
+
+
+def _lift_form(raw: dict) -> str:
+    return str(raw.get("lift", {}).get("form", ""))
+
+
+def _iterates(raw: dict) -> bool:
+    # Only followers whose contact load depends on friction iterate (pivoted, pushrod, desmo).
+    return raw.get("mechanism", {}).get("type") in ("finger", "rocker", "pushrod", "desmodromic")
+
+
+def _smoothing_spline(raw: dict) -> bool:
+    table = raw.get("lift", {}).get("table", {})
+    return _lift_form(raw) == "table" and table.get("derivative", "smoothing_spline") == \
+        "smoothing_spline"
+
+
+KNOBS: dict[str, Knob] = {k.name: k for k in (
+    Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
+         lambda v: 1.0 / v, lambda raw: True,
+         "cam angles over one revolution (angle step 360 deg / n)", integer=True),
+    Knob("friction_tolerance", "solver.friction_tolerance",
+         (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8), lambda v: v, _iterates,
+         "relative tolerance of the friction/load iteration"),
+    Knob("table_smoothing", "lift.table.smoothing", (4.0, 2.0, 1.0, 0.5, 0.25),
+         lambda v: v, _smoothing_spline,
+         "smoothing level of the lift-table spline (relative to the data precision)"),
+)}
+
+
+# --------------------------------------------------------------------------- numerics
+
+def observed_order(f1: float, f2: float, f3: float, ratio: float) -> float | None:
+    """Order p of f(h) = f* + C h^p from three values at h, h/ratio, h/ratio^2.
+
+    None when the differences are zero or change sign (no asymptotic convergence to read).
+    """
+    d1, d2 = f1 - f2, f2 - f3
+    if d1 == 0.0 or d2 == 0.0 or (d1 > 0) != (d2 > 0) or ratio <= 1.0:
+        return None
+    return math.log(abs(d1 / d2)) / math.log(ratio)
+
+
+def richardson(f2: float, f3: float, ratio: float, order: float) -> float:
+    """Extrapolate the two finest values f2 (h) and f3 (h/ratio) to h -> 0 at the given order."""
+    return f3 + (f3 - f2) / (ratio ** order - 1.0)
+
+
+def relative_error(value: float, reference: float) -> float:
+    """|value - reference| / |reference|; absolute when the reference is exactly zero."""
+    if not (math.isfinite(value) and math.isfinite(reference)):
+        return math.inf
+    scale = abs(reference)
+    return abs(value - reference) / scale if scale > 0.0 else abs(value - reference)
+
+
+def analyse(values: Sequence[float | None], steps: Sequence[float]) -> dict:
+    """Error, order and reference for one metric over a ladder (values None where a rung failed).
+
+    Returns ``{"reference", "reference_kind", "order", "errors", "orders"}``: ``orders[i]`` is the
+    order observed from rungs i-2, i-1, i (None where it cannot be read); ``order`` is the one from
+    the three finest successful consecutive rungs.
+    """
+    n = len(values)
+    orders: list[float | None] = [None] * n
+    for i in range(2, n):
+        triple = values[i - 2:i + 1]
+        if any(v is None for v in triple):
+            continue
+        r1, r2 = steps[i - 2] / steps[i - 1], steps[i - 1] / steps[i]
+        if not math.isclose(r1, r2, rel_tol=1e-9):
+            continue  # Richardson needs a constant refinement ratio
+        orders[i] = observed_order(*triple, r2)
+    ok = [i for i, v in enumerate(values) if v is not None]
+    if not ok:
+        return {"reference": None, "reference_kind": "none", "order": None,
+                "errors": [None] * n, "orders": orders}
+    finest = ok[-1]
+    reference, kind, order = values[finest], "finest", orders[finest]
+    lo, hi = PLAUSIBLE_ORDER
+    if order is not None and lo <= order <= hi:
+        ratio = steps[finest - 1] / steps[finest]
+        reference = richardson(values[finest - 1], values[finest], ratio, order)
+        kind = "richardson"
+    errors = [None if v is None else relative_error(v, reference) for v in values]
+    return {"reference": reference, "reference_kind": kind, "order": order, "errors": errors,
+            "orders": orders}
+
+
+def cheapest(rungs: Sequence[dict], errors: Sequence[float | None], tolerance: float) -> int | None:
+    """Index of the coarsest rung from which every finer rung stays within ``tolerance``.
+
+    Cost rises along a ladder, so the coarsest such rung is the cheapest; demanding that all finer
+    rungs also meet the tolerance keeps a lucky coarse rung (an error crossing zero) from being
+    chosen. Failed rungs (error None) break the chain.
+    """
+    best = None
+    for i in range(len(rungs) - 1, -1, -1):
+        e = errors[i]
+        if e is None or not e <= tolerance:
+            break
+        best = i
+    return best
+
+
+# --------------------------------------------------------------------------- running
+
+def set_path(raw: dict, path: str, value) -> dict:
+    """Deep copy of ``raw`` with the dotted ``path`` set to ``value`` (tables created as needed)."""
+    out = copy.deepcopy(raw)
+    node = out
+    *parents, leaf = path.split(".")
+    for key in parents:
+        node = node.setdefault(key, {})
+    node[leaf] = value
+    return out
+
+
+def parse_tolerance(text: str) -> float:
+    """'0.1%' -> 1e-3, '1e-3' -> 1e-3. Raises InputError naming --tolerance."""
+    s = str(text).strip()
+    try:
+        value = float(s[:-1]) / 100.0 if s.endswith("%") else float(s)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and 0.0 < value < 1.0):
+        raise InputError(Problem("--tolerance", "is not a relative tolerance", text,
+                                 "a number in (0, 1) or a percentage such as 0.1%"))
+    return value
+
+
+def relevant_knobs(raw: dict) -> list[str]:
+    """Knobs that change something for this deck (e.g. no friction iteration on a flat tappet)."""
+    return [name for name, knob in KNOBS.items() if knob.applies(raw)]
+
+
+def check_knobs(raw: dict, names: Sequence[str] | None) -> list[str]:
+    """Validate requested knob names against the deck; default: every relevant knob."""
+    if not names:
+        return relevant_knobs(raw)
+    out = []
+    for name in names:
+        if name not in KNOBS:
+            raise InputError(Problem("--knob", "is not a resolution knob", name,
+                                     "one of " + ", ".join(KNOBS)))
+        if not KNOBS[name].applies(raw):
+            raise InputError(Problem("--knob", "does not apply to this deck", name,
+                                     "one of " + (", ".join(relevant_knobs(raw)) or "none"),
+                                     f"it sets the {KNOBS[name].description}, "
+                                     "which this deck does not use"))
+        if name not in out:
+            out.append(name)
+    return out
+
+
+def _run_rung(raw: dict, base_dir, repeat: int) -> dict:
+    """Validate and run one rung; its metrics, best-of-``repeat`` wall time, or its error."""
+    from camtrain import api
+    from camtrain.deck.load import validate
+
+    try:
+        model = validate(raw, base_dir=base_dir)
+        wall = math.inf
+        for _ in range(max(1, repeat)):
+            start = time.perf_counter()
+            result = api.run(model)
+            wall = min(wall, time.perf_counter() - start)
+    except CamtrainError as exc:
+        return {"status": "error", "message": str(exc), "exit_code": exc.exit_code,
+                "wall_time": None, "metrics": {}}
+    metrics = {k: {"value": m.value, "unit": m.unit} for k, m in result.metrics.items()}
+    return {"status": "ok", "message": "", "exit_code": 0, "wall_time": wall, "metrics": metrics}
+
+
+def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat: int = 1,
+               ladder: Sequence[float] | None = None,
+               metrics: Sequence[str] = KEY_METRICS) -> dict:
+    """Run the ladder of one knob and analyse every key metric it produced."""
+    knob = KNOBS[name]
+    values = tuple(ladder or knob.ladder)
+    values = tuple(int(v) for v in values) if knob.integer else values
+    rungs = [dict(value=v, **_run_rung(set_path(raw, knob.path, v), base_dir, repeat))
+             for v in values]
+    steps = [knob.step(v) for v in values]
+    found = [m for m in metrics if any(m in r["metrics"] for r in rungs)]
+    per_metric = {}
+    for m in found:
+        series = [r["metrics"].get(m, {}).get("value") for r in rungs]
+        a = analyse(series, steps)
+        unit = next(r["metrics"][m]["unit"] for r in rungs if m in r["metrics"])
+        per_metric[m] = dict(unit=unit, values=series, **a)
+    worst = [None if r["status"] != "ok" else
+             max((per_metric[m]["errors"][i] or 0.0 for m in found), default=0.0)
+             for i, r in enumerate(rungs)]
+    pick = cheapest(rungs, worst, tolerance)
+    return {"knob": name, "path": knob.path, "description": knob.description,
+            "values": list(values), "rungs": rungs, "metrics": per_metric,
+            "worst_error": worst,
+            "cheapest": None if pick is None else {
+                "value": values[pick], "wall_time": rungs[pick]["wall_time"],
+                "worst_error": worst[pick]}}
+
+
+def study(deck: str, knobs: Sequence[str] | None = None, tolerance: float = 1e-3, *,
+          repeat: int = 1, progress: Callable[[str], None] | None = None) -> dict:
+    """The accuracy study of a deck file: every requested knob's ladder, analysed."""
+    from pathlib import Path
+
+    from camtrain import api
+    from camtrain.deck.load import parse_toml, read_text
+
+    name, text = read_text(deck)
+    raw = parse_toml(text, name)
+    base_dir = Path(deck).resolve().parent if deck != "-" else Path.cwd()
+    names = check_knobs(raw, knobs)
+    loaded = api.loads(text, name) if deck == "-" else api.load(deck)
+    api.run(loaded)  # warm-up: imports and caches must not be charged to the first rung
+    out = {"deck": name, "title": loaded.model.title, "tolerance": tolerance, "knobs": {}}
+    for knob in names:
+        if progress:
+            progress(knob)
+        out["knobs"][knob] = study_knob(raw, knob, tolerance, base_dir=base_dir, repeat=repeat)
+    return out
+
+
+# --------------------------------------------------------------------------- tables
+
+CSV_FIELDS = ("knob", "value", "status", "wall_time_s", "metric", "unit", "metric_value",
+              "reference", "reference_kind", "relative_error", "observed_order")
+
+
+def rows(report: dict) -> list[dict]:
+    """One flat row per knob, rung and metric (failed rungs get one row with their status)."""
+    out = []
+    for knob, k in report["knobs"].items():
+        for i, rung in enumerate(k["rungs"]):
+            base = {"knob": knob, "value": rung["value"], "status": rung["status"],
+                    "wall_time_s": rung["wall_time"]}
+            if rung["status"] != "ok":
+                out.append({**base, "metric": "", "unit": "", "metric_value": None,
+                            "reference": None, "reference_kind": "", "relative_error": None,
+                            "observed_order": None})
+                continue
+            for metric, m in k["metrics"].items():
+                out.append({**base, "metric": metric, "unit": m["unit"],
+                            "metric_value": m["values"][i], "reference": m["reference"],
+                            "reference_kind": m["reference_kind"],
+                            "relative_error": m["errors"][i], "observed_order": m["orders"][i]})
+    return out
+
+
+def _fmt(x, spec: str = ".4g") -> str:
+    return "" if x is None else format(x, spec)
+
+
+def render_table(report: dict) -> str:
+    """Plain-text tables for the terminal: per knob, the time of each rung, then per metric the
+    value, relative error and observed order at each rung (metrics the knob leaves unchanged are
+    listed on one line)."""
+    tol = report["tolerance"]
+    lines = [f"{report['title']}: accuracy study (tolerance {tol:.3g})"]
+    for knob, k in report["knobs"].items():
+        lines += ["", f"{knob} ({k['path']}): {k['description']}",
+                  f"  {'value':>10} {'time ms':>9} {'worst err':>10}  status"]
+        for i, rung in enumerate(k["rungs"]):
+            t = rung["wall_time"]
+            msg = rung["status"] if rung["status"] == "ok" else \
+                f"{rung['status']}: {rung['message'].splitlines()[0]}"
+            lines.append(f"  {rung['value']:>10g} {_fmt(None if t is None else 1e3 * t, '.1f'):>9}"
+                         f" {_fmt(k['worst_error'][i], '.2e'):>10}  {msg}")
+        unchanged = []
+        for metric, m in k["metrics"].items():
+            if not any(m["errors"][i] for i in range(len(m["errors"]))):
+                unchanged.append(metric)
+                continue
+            lines.append(f"  {metric} [{m['unit']}]: reference {_fmt(m['reference'], '.7g')} "
+                         f"({m['reference_kind']}), observed order {_fmt(m['order'], '.2f') or '-'}")
+            for i, v in enumerate(m["values"]):
+                if v is not None:
+                    lines.append(f"  {k['rungs'][i]['value']:>10g} {_fmt(v, '.7g'):>14} "
+                                 f"err {_fmt(m['errors'][i], '.2e'):>9}  "
+                                 f"p {_fmt(m['orders'][i], '.2f') or '-':>5}")
+        if unchanged:
+            lines.append("  unchanged by this knob: " + ", ".join(unchanged))
+        c = k["cheapest"]
+        lines.append(f"  no rung meets {tol:.3g} for every metric" if c is None else
+                     f"  cheapest meeting {tol:.3g}: {knob} = {c['value']:g} "
+                     f"({1e3 * c['wall_time']:.1f} ms, worst error {c['worst_error']:.2e})")
+    return "\n".join(lines)
+
+
+def write_outputs(report: dict, out_dir) -> list:
+    """Write accuracy.csv, accuracy.json and accuracy.png into ``out_dir``; return the paths."""
+    import csv
+    import json
+    from pathlib import Path
+
+    from camtrain.study.accuracy_plot import pareto_plot
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    csv_path, json_path = out / "accuracy.csv", out / "accuracy.json"
+    with csv_path.open("w", newline="", encoding="utf-8") as fh:
+        writer = csv.DictWriter(fh, fieldnames=CSV_FIELDS)
+        writer.writeheader()
+        writer.writerows(rows(report))
+    json_path.write_text(json.dumps(_json_safe(report), indent=2) + "\n", encoding="utf-8")
+    return [csv_path, json_path, pareto_plot(report, out / "accuracy.png")]
+
+
+def _json_safe(x):
+    """Replace non-finite floats by None so the JSON is strict."""
+    if isinstance(x, dict):
+        return {k: _json_safe(v) for k, v in x.items()}
+    if isinstance(x, list | tuple):
+        return [_json_safe(v) for v in x]
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x

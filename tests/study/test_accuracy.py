@@ -1,0 +1,140 @@
+"""The accuracy-study machinery: Richardson, observed order, ladders, cheapest setting, CLI.
+
+Wall times are recorded by the study but never asserted here.
+"""
+from __future__ import annotations
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from camtrain.cli_accuracy import accuracy
+from camtrain.errors import InputError
+from camtrain.study import accuracy as acc
+from camtrain.study.accuracy_plot import pareto_front
+
+HARRISON = Path(__file__).resolve().parents[2] / "decks" / "harrison_flat.toml"
+
+
+@settings(max_examples=50, deadline=None)
+@given(order=st.floats(0.5, 4.0), c=st.floats(-10.0, 10.0).filter(lambda c: abs(c) > 1e-3),
+       exact=st.floats(-100.0, 100.0), ratio=st.sampled_from([2.0, 3.0, 4.0]))
+def test_richardson_recovers_a_known_order(order, c, exact, ratio):
+    """f(h) = f* + C h^p sampled at h, h/r, h/r^2: order p and f* come back exactly."""
+    hs = [0.1, 0.1 / ratio, 0.1 / ratio**2]
+    f = [exact + c * h**order for h in hs]
+    p = acc.observed_order(*f, ratio)
+    assert p == pytest.approx(order, rel=1e-6, abs=1e-6)
+    assert acc.richardson(f[1], f[2], ratio, p) == pytest.approx(exact, abs=1e-7 * (1 + abs(c)))
+
+
+def test_order_unreadable_when_differences_vanish_or_oscillate():
+    assert acc.observed_order(1.0, 1.0, 1.0, 2.0) is None
+    assert acc.observed_order(1.0, 2.0, 1.5, 2.0) is None  # sign change: not asymptotic
+
+
+def test_analyse_uses_richardson_then_falls_back_to_finest():
+    steps = [1 / 90, 1 / 180, 1 / 360, 1 / 720]
+    clean = [3.0 + 2.0 * h**2 for h in steps]
+    a = acc.analyse(clean, steps)
+    assert a["reference_kind"] == "richardson" and a["order"] == pytest.approx(2.0)
+    assert a["reference"] == pytest.approx(3.0, abs=1e-12)
+    assert all(e1 > e2 for e1, e2 in zip(a["errors"], a["errors"][1:], strict=False))
+    noisy = [3.0, 3.1, 2.9, 3.05]
+    b = acc.analyse(noisy, steps)
+    assert b["reference_kind"] == "finest" and b["errors"][-1] == 0.0
+    failed = acc.analyse([3.0, None, 3.2, 3.1], steps)  # a failed rung breaks the triples
+    assert failed["orders"][2] is None and failed["errors"][1] is None
+
+
+def test_cheapest_is_coarsest_with_every_finer_rung_within_tolerance():
+    rungs = [{}] * 5
+    assert acc.cheapest(rungs, [1e-2, 5e-4, 2e-3, 5e-4, 0.0], 1e-3) == 3  # lucky rung 1 skipped
+    assert acc.cheapest(rungs, [1e-2, 5e-4, 2e-4, 5e-5, 0.0], 1e-3) == 1
+    assert acc.cheapest(rungs, [1e-2, 5e-4, 2e-4, None, 0.0], 1e-3) == 4
+    assert acc.cheapest(rungs, [1e-2, 1e-2, 1e-2, 1e-2, 2e-3], 1e-3) is None
+
+
+@pytest.mark.parametrize("text, value", [("0.1%", 1e-3), ("1e-3", 1e-3), (" 2 % ", 0.02)])
+def test_parse_tolerance(text, value):
+    assert acc.parse_tolerance(text) == pytest.approx(value)
+
+
+@pytest.mark.parametrize("text", ["abc", "0", "-1%", "150%", "nan", ""])
+def test_parse_tolerance_rejects(text):
+    with pytest.raises(InputError, match="--tolerance"):
+        acc.parse_tolerance(text)
+
+
+def test_knobs_follow_the_deck():
+    flat = {"mechanism": {"type": "flat"}, "lift": {"form": "four_power"}}
+    table = {"mechanism": {"type": "finger"}, "lift": {"form": "table", "table": {}}}
+    assert acc.relevant_knobs(flat) == ["angle_points"]
+    assert acc.relevant_knobs(table) == ["angle_points", "friction_tolerance", "table_smoothing"]
+    with pytest.raises(InputError, match="--knob"):
+        acc.check_knobs(flat, ["friction_tolerance"])
+    with pytest.raises(InputError, match="--knob"):
+        acc.check_knobs(flat, ["nope"])
+
+
+def test_set_path_copies_and_creates_tables():
+    raw = {"solver": {"angle_points": 720}}
+    out = acc.set_path(raw, "lift.table.smoothing", 0.5)
+    assert out["lift"]["table"]["smoothing"] == 0.5 and "lift" not in raw
+
+
+def test_pareto_front_keeps_only_undominated_points():
+    pts = [(1.0, 1e-2, "a"), (2.0, 1e-3, "b"), (3.0, 5e-3, "c"), (4.0, 1e-4, "d")]
+    assert [p[2] for p in pareto_front(pts)] == ["a", "b", "d"]
+
+
+@pytest.fixture(scope="module")
+def harrison_ladder():
+    import tomllib
+
+    raw = tomllib.loads(HARRISON.read_text(encoding="utf-8"))
+    return acc.study_knob(raw, "angle_points", 1e-3, ladder=(180, 360, 720, 1440, 2880))
+
+
+def test_harrison_angle_ladder_error_decreases(harrison_ladder):
+    """Power loss converges under angle refinement at about first order (the friction cap and the
+    ramp joints make the integrand non-smooth); its error falls monotonically from 360 angles."""
+    k = harrison_ladder
+    assert all(r["status"] == "ok" and r["wall_time"] > 0 for r in k["rungs"])
+    m = k["metrics"]["power_loss_mean"]
+    assert m["reference_kind"] == "richardson" and 0.5 <= m["order"] <= 1.5
+    errs = m["errors"]
+    assert all(a > b for a, b in zip(errs[1:], errs[2:], strict=False))
+    assert errs[-1] < 1e-3 < errs[0]
+    # metrics evaluated exactly at the nose do not depend on the angle step
+    assert k["metrics"]["cam_radius_at_max_lift"]["errors"] == [0.0] * 5
+    assert k["cheapest"] is not None and k["cheapest"]["value"] in (1440, 2880)
+
+
+def test_cli_writes_table_csv_json_png(tmp_path, fast_flat):
+    out = tmp_path / "acc"
+    res = CliRunner().invoke(accuracy, [str(fast_flat), "--knob", "angle_points",
+                                        "--tolerance", "1%", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    assert "cheapest meeting 0.01" in res.output
+    rows = list(csv.DictReader((out / "accuracy.csv").open(encoding="utf-8")))
+    assert {r["knob"] for r in rows} == {"angle_points"}
+    report = json.loads((out / "accuracy.json").read_text(encoding="utf-8"))
+    assert report["tolerance"] == 0.01 and "angle_points" in report["knobs"]
+    assert (out / "accuracy.png").stat().st_size > 1000
+    assert all(math.isfinite(float(r["metric_value"])) for r in rows)
+
+
+@pytest.mark.parametrize("args, option", [
+    (["--knob", "bogus"], "--knob"), (["--knob", "table_smoothing"], "--knob"),
+    (["--tolerance", "lots"], "--tolerance")])
+def test_cli_bad_options_exit_2_naming_the_option(args, option):
+    res = CliRunner().invoke(accuracy, [str(HARRISON), *args])
+    assert res.exit_code == 2
+    assert option in res.output and "Traceback" not in res.output
