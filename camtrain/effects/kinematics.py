@@ -1,9 +1,9 @@
 """Kinematics effect: the lift law on the run's angle grid, then the follower kinematics."""
 from __future__ import annotations
 
-import numpy as np
-
 from functools import lru_cache
+
+import numpy as np
 
 from camtrain.effects.lift_law import build_lift_law
 from camtrain.lift import angle_grid
