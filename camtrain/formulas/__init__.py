@@ -62,6 +62,7 @@ from .friction import (
     ball_1988_shear_force,
     barus_ellipse_integral,
     barus_line_integral,
+    barus_line_integral_closed_form,
     film_parameter,
     friction_coefficient,
     log_barus_ellipse_integral,
@@ -102,7 +103,8 @@ from .viscosity import (
 
 __all__ = [
     "ball_1988_friction", "ball_1988_point_max_pressure", "ball_1988_shear_force", "barus",
-    "barus_ellipse_integral", "barus_line_integral", "barus_log", "cam_torque",
+    "barus_ellipse_integral", "barus_line_integral", "barus_line_integral_closed_form",
+    "barus_log", "cam_torque",
     "chittenden_1985_cen", "chittenden_1985_min", "contact_modulus", "couette_guide_friction",
     "couette_guide_power", "curvature_sum", "cycle_mean", "dowson_dunn_taylor_1983",
     "dowson_higginson_1966", "dowson_higginson_1977", "dowson_toyoda_1979", "ellipticity_exact",

