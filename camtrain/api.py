@@ -38,7 +38,23 @@ def run(deck: LoadedDeck | Deck | str | Path) -> Result:
 
     if isinstance(deck, str | Path):
         deck = load(deck)
-    return run_plan(_model(deck))
+    model = _model(deck)
+    if getattr(model, "kind", "valve_train") == "journal_bearing":
+        return _run_bearing(model)
+    return run_plan(model)
+
+
+def _run_bearing(model) -> Result:
+    """A stand-alone journal-bearing deck: its one-effect plan, run and timed."""
+    import time
+
+    from camtrain.effects.bearings import run_bearing_deck
+
+    result = Result(plan=resolve(model))
+    start = time.perf_counter()
+    run_bearing_deck(model, result)
+    result.timings["journal_bearing"] = time.perf_counter() - start
+    return result
 
 
 def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Result:

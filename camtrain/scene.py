@@ -76,6 +76,19 @@ def _nothing(deck: Deck) -> list[str]:
     return []
 
 
+def _missing_camshaft(deck: Deck) -> list[str]:
+    return [] if deck.camshaft is not None else ["[camshaft] section (lobes)"]
+
+
+def _missing_bearings(deck: Deck) -> list[str]:
+    if deck.camshaft is None:
+        return ["[camshaft] section"]
+    out = [] if deck.camshaft.bearings else ["[[camshaft.bearings]]"]
+    if deck.camshaft.viscosity is None and deck.lubricant is None:
+        out.append("camshaft.viscosity or lubricant.viscosity")
+    return out
+
+
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect("kinematics", "lift law and follower kinematics: lift and derivatives, contact point, "
            "r_c, R, surface, entrainment and sliding velocities",
@@ -96,13 +109,30 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect("power", "friction torque about the cam axis and power loss",
            ("friction",), ("friction_torque", "power_loss"), _nothing,
            "camtrain.effects.power:run"),
+    Effect("camshaft_torque", "camshaft: lobe torques phased and summed, drive power, harmonic "
+           "orders, second bank, pendulum dampers", ("loads",),
+           ("camshaft_torque", "order_n"), _missing_camshaft,
+           "camtrain.effects.camshaft:run"),
+    Effect("bearings", "camshaft bearings: lobe and drive forces split as beams, journal "
+           "orbits (Booker mobility), minimum film and power",
+           ("camshaft_torque",), ("bearing_i_load_x/y", "bearing_i_eccentricity"),
+           _missing_bearings, "camtrain.effects.bearings:run"),
 )}
+
+#: The one effect of a stand-alone ``kind = "journal_bearing"`` deck (run by camtrain.api).
+BEARING_EFFECT = Effect("journal_bearing", "journal orbit, minimum film and power of one "
+                        "bearing under its load diagram", (), ("eccentricity", "min_film"),
+                        _nothing, "camtrain.effects.bearings:run_bearing_deck")
 
 assert tuple(EFFECTS) == EFFECT_NAMES
 
 
 def resolve(deck: Deck) -> Plan:
     """Resolve the plan for a deck before any computation."""
+    if getattr(deck, "kind", "valve_train") == "journal_bearing":
+        solver = deck.solver
+        why = f"stand-alone bearing deck: {solver.method} method, {solver.film} film"
+        return Plan("journal_bearing", (Step(BEARING_EFFECT.name, True, why),))
     if deck.effects == "auto":
         return _resolve_auto(deck)
     return _resolve_explicit(deck, deck.effects)
@@ -146,6 +176,11 @@ def _auto_reason(deck: Deck, name: str, chosen: set[str]) -> str:
         return "Hertz zone and film available"
     if name == "power":
         return "friction available"
+    if name == "camshaft_torque":
+        torque = "W e + F r" if "power" in chosen else "W e only (no friction)"
+        return f"{len(deck.camshaft.lobes)} lobes given; lobe torque {torque}"
+    if name == "bearings":
+        return f"{len(deck.camshaft.bearings)} bearings given; {deck.camshaft.method} method"
     return "data given"  # pragma: no cover
 
 

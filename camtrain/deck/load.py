@@ -22,7 +22,7 @@ MAX_DECK_BYTES = 20 * 1024 * 1024
 class LoadedDeck:
     """A validated deck with where it came from."""
 
-    model: Deck
+    model: Deck  # or a BearingDeck for kind = "journal_bearing"
     path: str
     sha256: str
     text: str
@@ -69,13 +69,38 @@ def parse_toml(text: str, name: str) -> dict:
         raise InputError(Problem("", f"malformed TOML: {exc}"), source=name) from None
 
 
+KINDS = ("valve_train", "journal_bearing")
+
+
 def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
-    """Validate raw TOML data into the immutable SI model, reporting every problem at once."""
+    """Validate raw TOML data into the immutable SI model, reporting every problem at once.
+
+    The top-level ``kind`` picks the schema: ``valve_train`` (the default) or
+    ``journal_bearing`` (:mod:`camtrain.deck.bearing_schema`).
+    """
+    kind = raw.get("kind", "valve_train")
+    if kind == "journal_bearing":
+        return _validate_bearing(raw, name)
+    if kind != "valve_train":
+        raise InputError(Problem("kind", "is not a known deck kind", kind,
+                                 " or ".join(repr(k) for k in KINDS)), source=name)
+    if "kind" in raw:  # the valve-train schema itself has no kind key
+        raw = {k: v for k, v in raw.items() if k != "kind"}
     problems: list[Problem] = []
     deck = build_section(Deck, raw, "", problems, schema_paths(Deck))
     if deck is None or problems:
         raise InputError(problems or [Problem("", "invalid deck")], source=name)
     deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
+    return deck
+
+
+def _validate_bearing(raw: dict, name: str):
+    from camtrain.deck.bearing_schema import BearingDeck
+
+    problems: list[Problem] = []
+    deck = build_section(BearingDeck, raw, "", problems, schema_paths(BearingDeck))
+    if deck is None or problems:
+        raise InputError(problems or [Problem("", "invalid deck")], source=name)
     return deck
 
 

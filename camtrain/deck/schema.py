@@ -583,7 +583,7 @@ class Lubricant:
                                f"{len(t)} temperatures, {len(e)} viscosities",
                                f"{'at least 3' if need == 3 else 'exactly 2'} of each"))
         elif len(set(t)) != len(t) or any((b - a) * (y - x) >= 0 for a, b, x, y in
-                                            zip(t, t[1:], e, e[1:])):
+                                            zip(t, t[1:], e, e[1:], strict=False)):
             out.append(Problem(f"{path}.fit_viscosities", "must fall as the temperature rises",
                                list(e), "distinct temperatures, viscosity falling with them"))
         return out

@@ -136,8 +136,42 @@ def _prompt(info: FieldInfo, shape: Shape, default: object, mechanism: str) -> s
     return text
 
 
+#: The stand-alone bearing template: the Ocvirk check case (constant 500 N on a 25 x 18 mm
+#: short bearing; formulas reference §4.3), so a fresh template runs and can be verified.
+BEARING_EXAMPLE: dict[str, object] = {
+    "kind": "journal_bearing", "title": "Journal bearing under a load diagram (Ocvirk check)",
+    "bearing.diameter": 25.0, "bearing.length": 18.0, "bearing.clearance": 0.025,
+    "bearing.viscosity": 0.01, "speed.journal": 1500.0,
+    "load.angles": [0.0, 90.0, 180.0, 270.0], "load.load_x": [0.0, 0.0, 0.0, 0.0],
+    "load.load_y": [-500.0, -500.0, -500.0, -500.0],
+}
+
+
+def render_bearing_template() -> str:
+    """A complete, commented ``kind = "journal_bearing"`` deck that `camtrain check` accepts."""
+    from camtrain.deck.bearing_schema import BearingDeck
+
+    lines = [
+        f"# camtrain deck: {BEARING_EXAMPLE['title']}",
+        "# Every field has a prompt: what it is [unit in this file] (required / default / "
+        "optional).",
+        "# Loads are the force the journal puts on the bearing, in the bush frame, one value "
+        "per angle;",
+        "# the diagram repeats every load.period. Units are the ones written here; SI inside.",
+        "# Check it with `camtrain check FILE`, run it with `camtrain run FILE --out DIR`.",
+        "",
+    ]
+    _render_section(BearingDeck, "", BEARING_EXAMPLE, "journal_bearing", lines, active=True)
+    return "\n".join(lines).rstrip() + "\n"
+
+
 def render_template(mechanism: str) -> str:
-    """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is."""
+    """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is.
+
+    ``"journal_bearing"`` gives the stand-alone bearing deck instead of a valve train.
+    """
+    if mechanism == "journal_bearing":
+        return render_bearing_template()
     if mechanism not in EXAMPLES:
         raise KeyError(mechanism)
     ex = EXAMPLES[mechanism]

@@ -67,32 +67,37 @@ def contact_film(deck, kin, load=None) -> dict:
 
 
 def run(deck, state) -> None:
-    kin = state.objects.get("kinematics")
-    if kin is None:
+    if state.objects.get("kinematics") is None:
         from camtrain.effects.loads import get_kinematics
-        kin = get_kinematics(deck, state)
-    load = state.objects.get("load")
-    res = state.result
+        get_kinematics(deck, state)
+    from camtrain.effects.hertz import pairs
+    for prefix, pdeck, kin, load in pairs(deck, state):
+        state.objects[prefix + "film"] = run_pair(pdeck, kin, load, state.result, prefix)
+
+
+def run_pair(deck, kin, load, res, prefix: str = "") -> dict:
+    tag = " (closing pair)" if prefix else ""
     film = contact_film(deck, kin, None if load is None else np.maximum(load, 0.0))
     what = "out of contact" if load is not None else "non-Hertzian geometry"
-    res.add_column("film_min", film["min"], "m",
-                   f"minimum film thickness, {film['method']} (NaN: {what})")
+    res.add_column(prefix + "film_min", film["min"], "m",
+                   f"minimum film thickness, {film['method']} (NaN: {what}){tag}")
     if film["central"] is not None:
-        res.add_column("film_central", film["central"], "m",
-                       f"central film thickness, {film['central_method']}")
+        res.add_column(prefix + "film_central", film["central"], "m",
+                       f"central film thickness, {film['central_method']}{tag}")
     lam = np.full(film["min"].shape, np.nan)
     fin = np.isfinite(film["min"])
     lam[fin] = film_parameter(film["min"][fin], deck.lubricant.roughness)
-    res.add_column("lambda", lam, "-", "film parameter h_min / sigma (< 1: boundary regime)")
+    res.add_column(prefix + "lambda", lam, "-",
+                   "film parameter h_min / sigma (< 1: boundary regime)" + tag)
     if np.any(fin):
         h = np.where(fin, film["min"], np.inf)
         i = int(np.argmin(h))
-        res.add_metric("film_min", h[i], "m", "smallest minimum film over the cycle",
-                       kin.theta[i])
+        res.add_metric(prefix + "film_min", h[i], "m",
+                       "smallest minimum film over the cycle" + tag, kin.theta[i])
     k = int(np.argmax(kin.valve_lift))
-    res.add_metric("film_min_at_max_lift", film["min"][k], "m",
-                   "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)",
+    res.add_metric(prefix + "film_min_at_max_lift", film["min"][k], "m",
+                   "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
     if load is None:
         res.warn("film without contact loads: Blok rigid-piezoviscous film (Ball eq. 4.3)")
-    state.objects["film"] = film
+    return film

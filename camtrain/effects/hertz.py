@@ -8,6 +8,8 @@ Angles without load give zero size and pressure; angles where the contact is not
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure, reduced_modulus
@@ -50,25 +52,51 @@ def contact_hertz(deck, kin, load) -> dict:
     return {"pmax": pmax, "half_width": bx, "half_length": by, "bad": bad, "line": line}
 
 
+def closing_deck(deck):
+    """The deck as seen by the closing pair of a desmodromic train: its own cam width."""
+    c = deck.mechanism.closing
+    if c is None or c.width is None:
+        return deck
+    return replace(deck, cam=replace(deck.cam, width=c.width))
+
+
+def pairs(deck, state) -> list[tuple[str, object, object, object]]:
+    """(column prefix, deck, kinematics, load) of each loaded cam/follower pair: the only pair,
+    or the opening pair and then the closing pair ("closing_") of a desmodromic train."""
+    out = [("", deck, state.objects["kinematics"], state.objects.get("load"))]
+    closing, load = state.objects.get("kinematics_closing"), state.objects.get("closing_load")
+    if closing is not None and load is not None:
+        out.append(("closing_", closing_deck(deck), closing, load))
+    return out
+
+
+def label(prefix: str) -> str:
+    return " (closing pair)" if prefix else ""
+
+
 def run(deck, state) -> None:
-    kin, load = state.objects["kinematics"], state.objects["load"]
-    res = state.result
+    for prefix, pdeck, kin, load in pairs(deck, state):
+        state.objects[prefix + "hertz"] = run_pair(pdeck, kin, load, state.result, prefix)
+
+
+def run_pair(deck, kin, load, res, prefix: str = "") -> dict:
     hz = contact_hertz(deck, kin, np.maximum(load, 0.0))
-    res.add_column("hertz_pmax", hz["pmax"], "Pa", "maximum Hertz contact pressure")
-    res.add_column("hertz_half_width", hz["half_width"], "m",
-                   "Hertz half-width along the rolling direction")
+    tag = label(prefix)
+    res.add_column(prefix + "hertz_pmax", hz["pmax"], "Pa", "maximum Hertz contact pressure" + tag)
+    res.add_column(prefix + "hertz_half_width", hz["half_width"], "m",
+                   "Hertz half-width along the rolling direction" + tag)
     if not hz["line"]:
-        res.add_column("hertz_half_length", hz["half_length"], "m",
-                       "Hertz semi-axis across the rolling direction")
+        res.add_column(prefix + "hertz_half_length", hz["half_length"], "m",
+                       "Hertz semi-axis across the rolling direction" + tag)
     if np.any(hz["bad"]):
-        res.warn(f"Hertz contact undefined (equivalent radius <= 0 or infinite) at "
+        res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                  f"{int(hz['bad'].sum())} loaded angles; NaN there")
     p = np.where(np.isnan(hz["pmax"]), -np.inf, hz["pmax"])
     i = int(np.argmax(p))
-    res.add_metric("hertz_max", hz["pmax"][i], "Pa", "largest Hertz pressure over the cycle",
-                   kin.theta[i])
+    res.add_metric(prefix + "hertz_max", hz["pmax"][i], "Pa",
+                   "largest Hertz pressure over the cycle" + tag, kin.theta[i])
     k = int(np.argmax(kin.valve_lift))
-    res.add_metric("hertz_at_max_lift", hz["pmax"][k], "Pa",
-                   "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)",
+    res.add_metric(prefix + "hertz_at_max_lift", hz["pmax"][k], "Pa",
+                   "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
-    state.objects["hertz"] = hz
+    return hz

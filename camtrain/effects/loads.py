@@ -9,7 +9,14 @@ from __future__ import annotations
 import numpy as np
 
 from camtrain.errors import CamtrainError
-from camtrain.loads import bounce_speed, contact_load, contact_mask, iterate_load, valve_force
+from camtrain.loads import (
+    bounce_speed,
+    contact_load,
+    contact_mask,
+    desmodromic_loads,
+    iterate_load,
+    valve_force,
+)
 from camtrain.units import rad_s_to_rpm
 
 
@@ -80,7 +87,45 @@ def solve_loads(deck, kin):
                         depends_on_mu=depends)
 
 
+def run_desmodromic(deck, state) -> None:
+    """Ball App D loads of both pairs; no bounce speed: the closing cam controls the valve."""
+    kin, closing = state.objects["kinematics"], state.objects["kinematics_closing"]
+    res = state.result
+    s = deck.spring.rate * deck.spring.preload_compression
+    kw = load_inputs(deck)
+    d = desmodromic_loads(kin, closing, closing_spring=s, valve_mass=deck.masses.valve_side,
+                          clearance=kw["clearance"])
+    res.add_column("valve_force", d.valve_force, "N", "valve-side force M x'' + S with the "
+                   "constant closing spring S (0 while the valve is seated)")
+    res.add_column("load", d.opening, "N", "opening cam/follower load (Ball App D; 0 while the "
+                   "closing cam controls the valve)")
+    res.add_column("closing_load", d.closing, "N", "closing cam/follower load (Ball App D: "
+                   "RR_c S, or RR_c |M x''| while the closing cam drives the valve)")
+    res.add_column("in_control", d.in_control, "-", "cam in control of the valve: +1 opening, "
+                   "-1 closing (the closing spring holds the seated valve)")
+    res.add_metric("closing_spring_force", s, "N", "constant closing spring force S = k delta "
+                   "(Ball App F)")
+    for prefix, load in (("", d.opening), ("closing_", d.closing)):
+        i = int(np.argmax(load))
+        res.add_metric(f"{prefix}load_max", load[i], "N", "largest contact load"
+                       + (" of the closing pair" if prefix else " of the opening pair"),
+                       kin.theta[i])
+    for j, angle in enumerate(d.handovers):
+        res.add_metric(f"handover_{j + 1}", angle, "rad", "cam angle where control of the valve "
+                       "passes between the opening and the closing cam (M x'' + S = 0)", angle)
+    where = ", ".join(f"{np.degrees(a):.1f}" for a in d.handovers) or "nowhere"
+    res.warn(f"desmodromic train: control of the valve passes between the cams at {where} deg "
+             "(Ball App D); no bounce speed: the closing cam controls the valve")
+    if np.any(d.jammed):
+        deg = np.degrees(kin.theta[d.jammed])
+        res.warn(f"desmodromic train jams: a pair cannot carry its load (load ratio <= 0) at "
+                 f"{int(d.jammed.sum())} angles between {deg.min():.1f} and {deg.max():.1f} deg")
+    state.objects.update(load=d.opening, closing_load=d.closing, desmodromic_loads=d)
+
+
 def run(deck, state) -> None:
+    if deck.mechanism.type == "desmodromic":
+        return run_desmodromic(deck, state)
     kin = get_kinematics(deck, state)
     res = state.result
     sol = solve_loads(deck, kin)

@@ -2,32 +2,53 @@
 
 H(theta) = F r omega with r the arm of the friction force about the cam axis (Ball 1988 eq. 4.8;
 r = r_B + l for a flat follower) and the cycle mean of eq. 4.9 (trapezoidal rule, spectrally
-accurate on the periodic grid). The total torque adds the normal-load torque W e.
+accurate on the periodic grid). The total torque adds the normal-load torque W e. A desmodromic
+train reports both pairs (closing pair prefixed ``closing_``) and their sum. With a ``[guides]``
+section the follower/guide and valve/guide shear losses are added (:mod:`camtrain.effects.guides`).
 """
 from __future__ import annotations
 
 import numpy as np
 
+from camtrain.effects.hertz import label, pairs
 from camtrain.formulas import cam_torque, cycle_mean, friction_torque
 
 
 def run(deck, state) -> None:
-    kin = state.objects["kinematics"]
-    load = np.maximum(state.objects["load"], 0.0)
-    force = state.objects["friction"]
-    res = state.result
+    total = 0.0
+    for prefix, _, kin, load in pairs(deck, state):
+        total += run_pair(kin, load, state.objects[prefix + "friction"], state.result, prefix)
+    if state.objects.get("kinematics_closing") is not None:
+        state.result.add_metric("power_loss_total", total, "W", "cycle-mean friction power of "
+                                "both cam/follower pairs of the desmodromic train")
+    if getattr(deck, "guides", None) is not None:
+        from camtrain.effects.guides import run as run_guides
+        run_guides(deck, state)
+
+
+def run_pair(kin, load, force, res, prefix: str = "") -> float:
+    """Columns and metrics of one pair; returns its cycle-mean friction power [W]."""
+    tag = label(prefix)
+    load = np.maximum(load, 0.0)
     tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
     total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
                        dtype=float)
     power = tf * abs(kin.omega)
     dissipation = force * np.abs(kin.sliding)
-    res.add_column("friction_torque", tf, "N*m", "friction torque about the cam axis F r")
-    res.add_column("cam_torque", total, "N*m", "total camshaft torque W e + F r")
-    res.add_column("power_loss", power, "W", "friction power F r omega (Ball eq. 4.8)")
+    res.add_column(prefix + "friction_torque", tf, "N*m",
+                   "friction torque about the cam axis F r" + tag)
+    res.add_column(prefix + "cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag)
+    res.add_column(prefix + "power_loss", power, "W",
+                   "friction power F r omega (Ball eq. 4.8)" + tag)
     i = int(np.argmax(np.abs(tf)))
-    res.add_metric("friction_torque_peak", tf[i], "N*m", "largest friction torque", kin.theta[i])
-    res.add_metric("power_loss_mean", cycle_mean(power), "W",
-                   "cycle-mean friction power (Ball eq. 4.9)")
-    res.add_metric("dissipation_mean", cycle_mean(dissipation), "W",
-                   "cycle-mean contact dissipation F |V_s| (equals the above for flat followers)")
-    res.add_metric("cam_torque_mean", cycle_mean(total), "N*m", "cycle-mean camshaft torque")
+    res.add_metric(prefix + "friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag,
+                   kin.theta[i])
+    mean = float(cycle_mean(power))
+    res.add_metric(prefix + "power_loss_mean", mean, "W",
+                   "cycle-mean friction power (Ball eq. 4.9)" + tag)
+    res.add_metric(prefix + "dissipation_mean", cycle_mean(dissipation), "W",
+                   "cycle-mean contact dissipation F |V_s| (equals the above for flat "
+                   "followers)" + tag)
+    res.add_metric(prefix + "cam_torque_mean", cycle_mean(total), "N*m",
+                   "cycle-mean camshaft torque" + tag)
+    return mean

@@ -18,6 +18,7 @@ from camtrain.lift.base import DEG, MM
 
 DATASETS = {
     "pinto_inlet_cam": "ball1988_pinto_inlet_cam_lift.csv",      # Ball (1988) App E
+    "pinto_inlet_valve": "ball1988_pinto_inlet_valve_lift.csv",  # derived from App E (datum)
     "zeta_intake": "yang1992_zeta_intake_cam_lift.csv",           # Yang (1992) App C
     "zeta_exhaust": "yang1992_zeta_exhaust_cam_lift.csv",         # Yang (1992) App C
 }

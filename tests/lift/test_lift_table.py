@@ -27,7 +27,7 @@ def test_shipped_tables(name, count, first, last, peak, quantum):
     assert t.angles[np.argmax(t.lift)] == 0.0
     assert t.lift_quantum / MM == pytest.approx(quantum)
     assert "Source:" in t.source
-    assert set(DATASETS) == {"pinto_inlet_cam", "zeta_intake", "zeta_exhaust"}
+    assert set(DATASETS) == {"pinto_inlet_cam", "pinto_inlet_valve", "zeta_intake", "zeta_exhaust"}
 
 
 def test_pinto_ramps_and_nose_from_the_spline():

@@ -30,7 +30,9 @@ def result(harrison_deck):
 def test_all_effects_available_and_planned(harrison_deck):
     for name in ("loads", "hertz", "film", "friction", "power"):
         assert EFFECTS[name].available
-    assert resolve(harrison_deck).chosen == list(EFFECTS)
+    # the tribology chain runs in full; camshaft-level effects need a [camshaft] section
+    assert resolve(harrison_deck).chosen[:6] == ["kinematics", "loads", "hertz", "film",
+                                                 "friction", "power"]
 
 
 def test_power_loss_against_ball(result):

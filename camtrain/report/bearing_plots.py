@@ -1,0 +1,128 @@
+"""Polar journal-orbit plots, and the report header of a stand-alone bearing deck.
+
+An orbit is drawn as the journal-centre path in the bush frame: radius = eccentricity ratio
+(the clearance circle is radius 1), polar angle = direction of the line of centres, which is
+the direction of the minimum film (Booker 1965; the polar orbit diagrams of Yang 1992 ch 4 and
+Ball 1988 ch 6). Markers show the load-diagram angles 0, 90, 180 and 270 deg and the point of
+largest eccentricity. Matplotlib is imported lazily with the Agg backend, so importing this
+module costs nothing and needs no display.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from camtrain.result import Result
+from camtrain.units import from_si
+
+_MARKS = (0.0, 90.0, 180.0, 270.0)
+
+
+@dataclass(frozen=True)
+class OrbitSeries:
+    """One orbit taken from a Result: label, load-diagram angle [rad], eps [-], direction [rad]."""
+
+    label: str
+    angle: np.ndarray
+    eccentricity: np.ndarray
+    position: np.ndarray
+
+
+def orbit_series(result: Result) -> list[OrbitSeries]:
+    """Every orbit in a run: ``bearing_<i>_*`` columns of a camshaft run, or the single orbit
+    of a stand-alone bearing deck (``eccentricity`` on the ``angle`` grid)."""
+    out = []
+    grid = "cam_angle" if "cam_angle" in result.columns else "angle"
+    if grid not in result.columns:
+        return out
+    names = sorted(int(m.group(1)) for c in result.columns
+                    if (m := re.fullmatch(r"bearing_(\d+)_eccentricity", c)))
+    for k in names:
+        out.append(OrbitSeries(f"bearing {k}", result[grid],
+                               result[f"bearing_{k}_eccentricity"],
+                               result[f"bearing_{k}_min_film_position"]))
+    if not names and "eccentricity" in result.columns and "min_film_position" in result.columns \
+            and grid == "angle":
+        out.append(OrbitSeries("bearing", result[grid], result["eccentricity"],
+                               result["min_film_position"]))
+    return out
+
+
+def _nearest(angle: np.ndarray, target_deg: float) -> int:
+    d = np.angle(np.exp(1j * (angle - math.radians(target_deg))))  # wrapped difference
+    return int(np.argmin(np.abs(d)))
+
+
+def orbit_axes(ax, series: OrbitSeries) -> None:
+    """Draw one polar orbit on a matplotlib polar axes."""
+    pos = np.append(series.position, series.position[0])  # the orbit is closed
+    eps = np.append(series.eccentricity, series.eccentricity[0])
+    ax.plot(pos, eps, lw=1.2, color="C0")
+    circle = np.linspace(0.0, 2.0 * math.pi, 181)
+    ax.plot(circle, np.ones_like(circle), lw=0.8, color="0.4", ls="--")
+    for j, deg in enumerate(_MARKS):
+        i = _nearest(series.angle, deg)
+        ax.plot(series.position[i], series.eccentricity[i], "o", ms=5, color=f"C{j + 1}",
+                label=f"{deg:g} deg")
+    i = int(np.argmax(series.eccentricity))
+    ax.plot(series.position[i], series.eccentricity[i], "*", ms=11, color="k",
+            label=f"max eps {series.eccentricity[i]:.3f} at "
+                  f"{math.degrees(series.angle[i]):.0f} deg")
+    ax.set_ylim(0.0, 1.0)
+    ax.set_title(series.label, fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, frameon=False)
+
+
+def orbit_figure(series: OrbitSeries, title: str = ""):
+    """A matplotlib Figure with one polar orbit."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.0, 4.5))
+    ax = fig.add_subplot(projection="polar")
+    orbit_axes(ax, series)
+    if title:
+        fig.suptitle(title, fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def write_orbit_plots(result: Result, out_dir: Path, *, title: str = "",
+                      fmt: str = "png") -> list[Path]:
+    """One polar orbit plot per bearing, ``orbit_bearing_<i>.<fmt>``; returns the files."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = []
+    for s in orbit_series(result):
+        name = "orbit_" + s.label.replace(" ", "_") + f".{fmt}"
+        fig = orbit_figure(s, title)
+        fig.savefig(out_dir / name, dpi=110)
+        written.append(out_dir / name)
+    return written
+
+
+def bearing_header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
+    """Header rows (label with unit, value) of a ``kind = "journal_bearing"`` deck, the
+    counterpart of the valve-train header for report.txt and the sheets."""
+    g, s = deck.bearing, deck.speed
+    rows = [("Diameter (mm)", f"{from_si(g.diameter, 'mm'):g}"),
+            ("Length (mm)", f"{from_si(g.length, 'mm'):g}"),
+            ("Radial clearance (mm)", f"{from_si(g.clearance, 'mm'):g}"),
+            ("Groove width (mm)", f"{from_si(g.groove_width, 'mm'):g}"),
+            ("Viscosity (Pa·s)", f"{g.viscosity:g}"),
+            ("Journal / bush speed (rpm)",
+             f"{from_si(s.journal, 'rpm'):g} / {from_si(s.bearing, 'rpm'):g}"),
+            ("Method / film", f"{deck.solver.method} / {deck.solver.film}")]
+    if result is not None:
+        for key, label, unit, scale in (("max_eccentricity", "Max eccentricity ratio", "", 1.0),
+                                        ("min_film", "Min film (µm)", "", 1e6),
+                                        ("power_mean", "Mean power (W)", "", 1.0)):
+            m = result.metrics.get(key)
+            rows.append((label, "not computed" if m is None else f"{m.value * scale:.4g}{unit}"))
+    return rows
