@@ -68,11 +68,15 @@ def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Res
     return result
 
 
-def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0) -> list[Path]:
-    """Write summary.json and cycle.csv into ``out_dir`` atomically."""
-    from camtrain.report.tables import write_outputs
+def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0, *,
+          plots: str = "sheets") -> list[Path]:
+    """Write a run's outputs into ``out_dir`` atomically: cycle.csv, report.txt, summary.json
+    (with the deck's design-limit checks) and, unless ``plots="none"``, the plot sheets
+    (``plots="all"`` adds every panel on its own)."""
+    from camtrain.report.outputs import check_limits, write_run
 
-    return write_outputs(result, deck, Path(out_dir), wall_time)
+    return write_run(result, deck, Path(out_dir), wall_time,
+                     checks=check_limits(result, deck), plots=plots)
 
 
 def _model(deck: LoadedDeck | Deck) -> Deck:

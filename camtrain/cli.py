@@ -14,7 +14,8 @@ import click
 from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 
-MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
+MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic",
+                     "journal_bearing")
 
 
 def _console(stderr: bool = False):
@@ -109,32 +110,161 @@ def check(deck: str, quiet: bool) -> None:
         console.print(f"[green]{loaded.path}: valid[/]")
 
 
+#: exit-code precedence over a batch of decks: a bug first, then invalid input, then the other
+#: failures of a deck, then violated limits; 0 only when every deck ran and passed.
+EXIT_PRECEDENCE = (EXIT_INTERNAL, 2, 3, 4, 1, 0)
+
+
 @main.command()
-@click.argument("deck", type=str)
+@click.argument("decks", nargs=-1, required=True, type=str, metavar="DECK...")
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,
-              help="Output directory (default: out/<deck name>).")
-@click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
-@click.option("--json", "as_json", is_flag=True, help="Print summary.json to standard output.")
-def run(deck: str, out: str | None, quiet: bool, as_json: bool) -> None:
-    """Run DECK and write summary.json and cycle.csv into the output directory."""
+              help="Output directory (default out/<deck name>); with several decks each goes "
+                   "to OUT/<deck name>.")
+@click.option("--check", is_flag=True,
+              help="Check the decks' [limits]: exit 1 if any is violated (or cannot be checked).")
+@click.option("--junit", type=click.Path(dir_okay=False), default=None,
+              help="Write a JUnit XML report: a test suite per deck, a test case per limit.")
+@click.option("--plots", type=click.Choice(["sheets", "all", "none"]), default="sheets",
+              show_default=True,
+              help="sheets: the multi-panel sheets (PNG and PDF); all: also every panel on its "
+                   "own (twice the drawing time); none.")
+@click.option("--no-plots", is_flag=True, help="Same as --plots none (fastest, for CI).")
+@click.option("--quiet", "-q", is_flag=True, help="Print only errors and violated limits.")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print summary.json to standard output (a list for several decks).")
+def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None, plots: str,
+        no_plots: bool, quiet: bool, as_json: bool) -> None:
+    """Run DECK... and write cycle.csv, report.txt, plot sheets and summary.json for each.
+
+    \b
+    Exit codes over all decks, the first that applies: 70 internal error, 2 invalid input,
+    3 impossible geometry, 4 no convergence, 1 a limit violated (--check), 0 all passed.
+    An invalid deck among several is reported and the others still run.
+    """
     import json
 
+    from camtrain.report.junit import junit_xml
+
+    plots = "none" if no_plots else plots
+    console = _console()
+    targets = _output_dirs(decks, out)
+    reports, summaries, codes = [], [], []
+    from camtrain.report.console import progress_bar
+
+    with progress_bar(_console(stderr=True), enabled=not (quiet or as_json)) as bar:
+        overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
+        for deck, out_dir in zip(decks, targets, strict=True):
+            report, summary = _run_one(deck, out_dir, plots, bar, console,
+                                       show=not (quiet or as_json), check=check)
+            reports.append(report)
+            summaries.append(summary)
+            codes.append(report.exit_code if (check or report.exit_code != 1) else 0)
+            if overall is not None:
+                bar.advance(overall)
+    if junit:
+        from camtrain.report.tables import atomic_write
+
+        Path(junit).parent.mkdir(parents=True, exist_ok=True)
+        atomic_write(Path(junit), junit_xml(reports))
+    if as_json:
+        data = summaries[0] if len(decks) == 1 else summaries
+        click.echo(json.dumps(data, indent=2, allow_nan=False, ensure_ascii=False))
+    elif len(decks) > 1 and not quiet:
+        _print_batch(console, reports, check)
+    sys.exit(_batch_exit_code(codes))
+
+
+def _batch_exit_code(codes: list[int]) -> int:
+    """The most severe code of a batch (an unknown non-zero code ranks just below a bug)."""
+    rank = {c: i for i, c in enumerate(EXIT_PRECEDENCE)}
+    return min(codes, key=lambda c: rank.get(c, 0.5), default=0)
+
+
+def _output_dirs(decks: tuple[str, ...], out: str | None) -> list[Path]:
+    """One directory per deck; deck names that repeat get a numeric suffix."""
+    stems, dirs = {}, []
+    for deck in decks:
+        stem = Path(deck).stem if deck != "-" else "stdin"
+        stems[stem] = stems.get(stem, 0) + 1
+        name = stem if stems[stem] == 1 else f"{stem}-{stems[stem]}"
+        if len(decks) == 1:
+            dirs.append(Path(out) if out else Path("out") / name)
+        else:
+            dirs.append(Path(out or "out") / name)
+    return dirs
+
+
+def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool):
+    """Load, run, check and write one deck; errors become a report, never an exception."""
     from camtrain import api
-    from camtrain.report.console import print_plan, print_run
+    from camtrain.report.console import print_checks, print_plan, print_run
+    from camtrain.report.junit import DeckReport
+    from camtrain.report.limits import violated
+    from camtrain.report.outputs import check_limits, write_run
     from camtrain.report.tables import summary_dict
 
+    name = out_dir.name
+    report = DeckReport(name=name, path=deck)
     start = time.perf_counter()
-    loaded = api.load(deck)
-    result = api.run(loaded)
-    wall = time.perf_counter() - start
-    out_dir = Path(out) if out else Path("out") / (Path(deck).stem if deck != "-" else "stdin")
-    written = api.write(result, loaded, out_dir, wall)
-    if as_json:
-        click.echo(json.dumps(summary_dict(result, loaded, wall), indent=2, allow_nan=False))
-    elif not quiet:
-        console = _console()
-        print_plan(console, result.plan)
-        print_run(console, result, written)
+    task = bar.add_task(f"{name}: running", total=None) if bar else None
+    try:
+        loaded = api.load(deck)
+        result = api.run(loaded)
+        wall = time.perf_counter() - start
+        checks = check_limits(result, loaded)
+
+        def step(label: str, done: int, total: int) -> None:
+            if bar:
+                bar.update(task, description=f"{name}: {label}", completed=done, total=total)
+
+        written = write_run(result, loaded, out_dir, wall, checks=checks, plots=plots,
+                            progress=step)
+    except CamtrainError as exc:
+        message = str(exc) if deck in str(exc) else f"{deck}: {exc}"
+        report.error, report.exit_code = message, exc.exit_code
+        report.seconds = time.perf_counter() - start
+        click.echo(f"error: {report.error}", err=True)
+        return report, {"deck": {"path": deck}, "error": str(exc), "exit_code": exc.exit_code}
+    except Exception as exc:  # noqa: BLE001 - one bad deck must not hide the others' results
+        report.error = f"{deck}: internal error: {type(exc).__name__}: {exc}"
+        report.exit_code = EXIT_INTERNAL
+        report.seconds = time.perf_counter() - start
+        click.echo(f"error: {report.error}\nThis is a bug; please report it with the deck.",
+                   err=True)
+        return report, {"deck": {"path": deck}, "error": report.error, "exit_code": EXIT_INTERNAL}
+    finally:
+        if bar and task is not None:
+            bar.remove_task(task)
+    report.seconds = time.perf_counter() - start
+    report.checks = checks
+    report.exit_code = 1 if violated(checks) else 0
+    if show:
+        console.rule(f"[bold]{loaded.model.title}[/]  ({deck})")
+        print_plan(console, result.plan, result.timings)
+        print_run(console, result, written, checks, out_dir)
+    elif check and violated(checks):
+        click.echo(f"{deck}:")
+        print_checks(console, violated(checks))
+    return report, summary_dict(result, loaded, wall, checks)
+
+
+def _print_batch(console, reports, check: bool) -> None:
+    from rich.table import Table
+
+    table = Table(title="decks", title_justify="left")
+    for col in ("deck", "status", "limits", "time [s]"):
+        table.add_column(col, justify="right" if col == "time [s]" else "left")
+    for r in reports:
+        bad = sum(1 for c in r.checks if not c.ok)
+        if r.error:
+            status = f"[red]error (exit {r.exit_code})[/]"
+        elif bad:
+            status = "[red]limits violated[/]" if check else "[yellow]limits violated[/]"
+        else:
+            status = "[green]ok[/]"
+        limits = f"{len(r.checks) - bad}/{len(r.checks)} pass" if r.checks else "none set"
+        table.add_row(r.path, status, limits, f"{r.seconds:.2f}")
+    console.print(table)
 
 
 @main.command("lift")
@@ -163,6 +293,18 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
         from camtrain.report.console import print_run
 
         print_run(_console(), result, written)
+
+
+def _register_study_commands() -> None:
+    # the study commands live in their own modules, which import only click at module level
+    from camtrain.cli_accuracy import accuracy
+    from camtrain.cli_sweep import sweep
+
+    main.add_command(sweep)
+    main.add_command(accuracy)
+
+
+_register_study_commands()
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -101,7 +101,7 @@ def test_schema_is_valid_json_schema_and_accepts_templates():
 
 def test_run_writes_summary_and_cycle(tmp_path):
     out = tmp_path / "out"
-    res = invoke("run", str(DECKS / "harrison_flat.toml"), "--out", str(out))
+    res = invoke("run", str(DECKS / "harrison_flat.toml"), "--out", str(out), "--no-plots")
     assert res.exit_code == 0, res.output
     summary = json.loads((out / "summary.json").read_text())
     assert summary["deck"]["sha256"] and len(summary["deck"]["sha256"]) == 64
@@ -111,7 +111,8 @@ def test_run_writes_summary_and_cycle(tmp_path):
 
 
 def test_run_json_prints_summary(tmp_path):
-    res = invoke("run", str(DECKS / "harrison_flat.toml"), "--out", str(tmp_path), "--json")
+    res = invoke("run", str(DECKS / "harrison_flat.toml"), "--out", str(tmp_path), "--json",
+                 "--no-plots")
     assert json.loads(res.output)["camtrain_version"]
 
 

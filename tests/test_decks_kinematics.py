@@ -90,7 +90,7 @@ def test_concave_flat_follower_is_exit_3_naming_angle_and_minimum(tmp_path):
 def test_cycle_csv_has_profile_for_grinding(tmp_path):
     """The cam profile (polar and Cartesian) is in cycle.csv with units in the headers."""
     res = CliRunner().invoke(main, ["run", str(DECKS / "harrison_flat.toml"), "--out",
-                                    str(tmp_path), "--quiet"])
+                                    str(tmp_path), "--quiet", "--no-plots"])
     assert res.exit_code == 0, res.output
     header = (tmp_path / "cycle.csv").read_text().splitlines()[0].split(",")
     for col in ("contact_x[m]", "contact_y[m]", "profile_radius[m]", "profile_angle[rad]",

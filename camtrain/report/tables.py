@@ -5,7 +5,6 @@ output directory and renamed into place, so a failed run never leaves a half-wri
 """
 from __future__ import annotations
 
-import json
 import math
 import os
 import tempfile
@@ -21,8 +20,12 @@ from camtrain.result import Result
 _DISPLAY = {"rad": ("deg", 180.0 / math.pi)}
 
 
-def summary_dict(result: Result, deck: LoadedDeck, wall_time: float) -> dict:
-    """The summary of a run as plain data (what summary.json holds)."""
+def summary_dict(result: Result, deck: LoadedDeck, wall_time: float, checks=None) -> dict:
+    """The summary of a run as plain data (what summary.json holds).
+
+    ``checks`` are the evaluated design limits (camtrain.report.limits), if any.
+    """
+    from camtrain.report.findings import find
     metrics = {}
     for name, m in result.metrics.items():
         entry = {"value": _finite_or_none(m.value), "unit": m.unit, "description": m.description}
@@ -36,6 +39,8 @@ def summary_dict(result: Result, deck: LoadedDeck, wall_time: float) -> dict:
         "not_available": list(result.not_available),
         "metrics": metrics,
         "warnings": list(result.warnings),
+        "findings": find(result).as_dict(),
+        "limits": [c.as_dict() for c in checks or []],
         "timings_s": {k: round(v, 6) for k, v in result.timings.items()},
         "wall_time_s": round(wall_time, 6),
         "columns": {name: {"unit": c.unit, "description": c.description}
@@ -59,7 +64,8 @@ def cycle_table(result: Result) -> tuple[list[str], np.ndarray]:
     return headers, data
 
 
-def _atomic_write(path: Path, text: str) -> None:
+def atomic_write(path: Path, text: str) -> None:
+    """Write text to a temporary name beside ``path`` and rename it into place."""
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
@@ -70,7 +76,7 @@ def _atomic_write(path: Path, text: str) -> None:
         raise
 
 
-def _csv_text(result: Result) -> str:
+def csv_text(result: Result) -> str:
     headers, data = cycle_table(result)
     lines = [",".join(headers)]
     lines += [",".join(f"{v:.10g}" for v in row) for row in data]
@@ -80,17 +86,5 @@ def _csv_text(result: Result) -> str:
 def write_table(result: Result, path: Path) -> Path:
     """Write the per-angle columns of a result as CSV (atomically)."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    _atomic_write(path, _csv_text(result))
+    atomic_write(path, csv_text(result))
     return path
-
-
-def write_outputs(result: Result, deck: LoadedDeck, out_dir: Path, wall_time: float) -> list[Path]:
-    """Write summary.json and cycle.csv into out_dir; return the paths written."""
-    summary = json.dumps(summary_dict(result, deck, wall_time), indent=2, allow_nan=False) + "\n"
-    csv_text = _csv_text(result)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, text in (("cycle.csv", csv_text), ("summary.json", summary)):
-        _atomic_write(out_dir / name, text)
-        written.append(out_dir / name)
-    return written

@@ -1,0 +1,86 @@
+"""One look for every plot camtrain draws: fonts, colours, line weights, page size.
+
+Sheets are A4 portrait so they print like Ball's GRAFIT pages; single panels are a quarter page.
+matplotlib is imported lazily (Agg backend) so the command line starts fast.
+"""
+from __future__ import annotations
+
+A4_PORTRAIT = (8.27, 11.69)    # inches
+PANEL_SIZE = (6.4, 3.6)
+DPI = 150
+
+#: colour per role, so V_c is the same blue on every sheet of every deck
+COLORS = {
+    "main": "#1f4e79", "second": "#c0504d", "third": "#4f8a3c", "fourth": "#8064a2",
+    "grey": "#7f7f7f", "boundary": "#f4c7a1", "no_contact": "#e6b8b7", "clearance": "#ececec",
+    "film": "#5b9bd5",
+    "zero": "#c00000", "mean": "#404040",
+}
+
+RC = {
+    "font.family": "DejaVu Sans",
+    "font.size": 8.5,
+    "axes.titlesize": 9.5,
+    "axes.titleweight": "bold",
+    "axes.labelsize": 8.5,
+    "axes.linewidth": 0.8,
+    "axes.grid": True,
+    "axes.axisbelow": True,
+    "grid.color": "#d9d9d9",
+    "grid.linewidth": 0.5,
+    "xtick.labelsize": 7.5,
+    "ytick.labelsize": 7.5,
+    "legend.fontsize": 7.0,
+    "legend.frameon": True,
+    "legend.framealpha": 0.85,
+    "legend.edgecolor": "#bfbfbf",
+    "lines.linewidth": 1.2,
+    "figure.dpi": DPI,
+    "savefig.dpi": DPI,
+    "pdf.fonttype": 3,           # subset Type 3 fonts: much faster to write than Type 42
+    "svg.fonttype": "none",
+    "axes.formatter.useoffset": False,
+    "axes.formatter.limits": (-4, 5),
+}
+
+ANGLE_LABEL = "cam angle from maximum lift [deg]"
+
+
+def pyplot():
+    """matplotlib.pyplot with the non-interactive backend (safe on servers and in CI)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def angle_axis(ax) -> None:
+    """The cam-angle axis every cycle plot shares: −180…180 deg, nose at 0."""
+    from matplotlib.ticker import MultipleLocator
+
+    ax.set_xlim(-180.0, 180.0)
+    ax.xaxis.set_major_locator(MultipleLocator(60.0))
+    ax.xaxis.set_minor_locator(MultipleLocator(15.0))
+    ax.set_xlabel(ANGLE_LABEL)
+
+
+def finish_axes(ax, legend: bool = False, handles=None) -> None:
+    ax.tick_params(which="both", direction="in", top=True, right=not _has_twin(ax))
+    handles = handles or ax.get_legend_handles_labels()
+    if legend and handles[0]:
+        headroom(ax)
+        ax.legend(*handles, loc="upper center", ncol=2 if len(handles[0]) > 2 else 1,
+                  columnspacing=1.0, handlelength=1.8)
+
+
+def headroom(ax, fraction: float = 0.32) -> None:
+    """Room above the curves for a legend, so it never hides data."""
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(lo, hi + fraction * (hi - lo))
+
+
+def _has_twin(ax) -> bool:
+    return any(other is not ax and other.bbox.bounds == ax.bbox.bounds
+               for other in ax.figure.axes)

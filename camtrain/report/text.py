@@ -1,0 +1,132 @@
+"""report.txt: the hard copy of a run, in the spirit of Ball's printed output.
+
+Plain fixed-width text an engineer can print or diff: header block, input echo with units, plan,
+key results, design limits, warnings and findings, and the cycle table every few degrees.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from camtrain import __version__
+from camtrain.report.display import LABELS, deg, display_unit, fmt, shown
+from camtrain.report.echo import echo_rows
+from camtrain.report.findings import find
+from camtrain.report.header import header_rows, title_line
+from camtrain.result import Result
+
+WIDTH = 100
+
+#: columns of the printed cycle table, in this order, when the run has them
+TABLE_COLUMNS = ("lift", "valve_lift", "velocity", "acceleration", "eccentricity", "cam_radius",
+                 "equivalent_radius", "v_cam", "v_follower", "entrainment", "load", "hertz_pmax",
+                 "film_min", "film_central", "lambda", "friction_coefficient", "friction_torque",
+                 "power_loss")
+
+
+def _rule(title: str = "", char: str = "=") -> str:
+    return f"{char * 3} {title} ".ljust(WIDTH, char) if title else char * WIDTH
+
+
+def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
+                checks=None, wall_time: float | None = None, step_deg: float = 5.0) -> str:
+    """The whole report as text; ``deck`` is the Deck model (SI) or None."""
+    lines = [_rule(), f"camtrain {__version__}   CAM OPERATING CHARACTERISTICS",
+             title_line(deck), _rule(), ""]
+    if path:
+        lines.append(f"deck file : {path}")
+    if sha:
+        lines.append(f"sha256    : {sha}")
+    if wall_time is not None:
+        lines.append(f"wall time : {wall_time:.3f} s")
+    lines.append("")
+    rows = header_rows(deck, result)
+    if rows:
+        width = max(len(label) for label, _ in rows)
+        lines += [f"  {label:<{width}} = {value}" for label, value in rows] + [""]
+    if deck is not None:
+        lines += [_rule("INPUT DATA (as camtrain read it; deck units)", "-")]
+        echo = echo_rows(deck)
+        w = max(len(p) for p, *_ in echo)
+        for p, doc, value, unit in echo:
+            lines.append(f"  {p:<{w}}  {value:>14} {unit:<8} {doc}")
+        lines.append("")
+    if result.plan is not None:
+        lines += [_rule(f"PLAN ({result.plan.mode})", "-")]
+        for s in result.plan.steps:
+            runs = "runs" if s.chosen else "skipped"
+            if s.chosen and not s.available:
+                runs = "not available"
+            t = result.timings.get(s.effect)
+            when = f"{t * 1e3:8.1f} ms" if t is not None else " " * 11
+            lines.append(f"  {s.effect:<12} {runs:<14} {when}  {s.reason}")
+        lines.append("")
+    lines += [_rule("RESULTS", "-")]
+    w = max((len(n) for n in result.metrics), default=8)
+    if result.metrics:
+        lines.append(f"  {'quantity':<{w}} {'value':>12} {'unit':<8} {'at [deg]':>8}  what it is")
+    for name, m in result.metrics.items():
+        value, unit = shown(name, m.value, m.unit)
+        lines.append(f"  {name:<{w}} {value:>12} {unit:<8} {deg(m.angle):>8}  {m.description}")
+    if not result.metrics:
+        lines.append("  (no scalar results)")
+    lines.append("")
+    if checks:
+        lines += [_rule("DESIGN LIMITS", "-")]
+        lines += [f"  {'ok  ' if c.ok else 'FAIL'}  {c.text()}" for c in checks] + [""]
+    findings = find(result).messages(result.warnings)
+    if result.warnings or findings or result.not_available:
+        lines += [_rule("WARNINGS", "-")]
+        lines += [f"  * {w}" for w in result.warnings + findings]
+        lines += [f"  * not computed: {n}" for n in result.not_available if
+                  not any(n in w for w in result.warnings)]
+        lines.append("")
+    lines += _cycle_table(result, step_deg)
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _cycle_table(result: Result, step_deg: float) -> list[str]:
+    if "cam_angle" not in result.columns:
+        return []
+    theta = np.degrees(result["cam_angle"])
+    names = [n for n in TABLE_COLUMNS if n in result.columns]
+    targets = np.arange(-180.0, 180.0 + 1e-9, step_deg)
+    idx = sorted({int(np.argmin(np.abs(theta - t))) for t in targets})
+    heads, units, cols = ["angle"], ["[deg]"], [theta]
+    for n in names:
+        unit, factor = display_unit(n, result.columns[n].unit)
+        heads.append(_short(n))
+        units.append(f"[{unit or '-'}]")
+        cols.append(result[n] * factor)
+    w = 10
+    out = [_rule(f"CYCLE TABLE (every {step_deg:g} deg; cycle.csv has every angle)", "-")]
+    chunk = (WIDTH - w) // w          # columns per block so lines stay printable
+    for start in range(1, len(heads), chunk):
+        sel = [0] + list(range(start, min(start + chunk, len(heads))))
+        out.append("".join(f"{heads[j]:>{w}}" for j in sel))
+        out.append("".join(f"{units[j]:>{w}}" for j in sel))
+        for i in idx:
+            out.append("".join(f"{_cell(cols[j][i]):>{w}}" for j in sel))
+        out.append("")
+    key = "; ".join(f"{SHORT[n]} = {LABELS.get(n, n)}" for n in names if SHORT[n] != LABELS.get(n))
+    out.append("  key: " + key)
+    return out
+
+
+#: short headings of the printed table (the key below the table spells them out)
+SHORT = {"lift": "lift", "valve_lift": "l_valve", "velocity": "dl/dθ", "acceleration": "d²l/dθ²",
+         "eccentricity": "e", "cam_radius": "r_c", "equivalent_radius": "R", "v_cam": "V_c",
+         "v_follower": "V_f", "entrainment": "u_e", "load": "W", "hertz_pmax": "p_max",
+         "film_min": "h_min", "film_central": "h_cen", "lambda": "λ",
+         "friction_coefficient": "μ", "friction_torque": "T_f", "power_loss": "P_f"}
+
+
+def _short(name: str) -> str:
+    return SHORT.get(name, name[:9])
+
+
+def _cell(x: float) -> str:
+    if not math.isfinite(x):
+        return str(x)
+    return fmt(float(x), 4)[:9]

@@ -1,0 +1,73 @@
+"""Plot sheets and single panels: written, non-blank, and only the panels the columns allow."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from camtrain.report import profile
+from camtrain.report.sheets import write_plots
+from tests.report.conftest import synthetic
+
+
+def _ink(path) -> float:
+    """Share of pixels that are not (near) white: a blank image has none."""
+    img = np.asarray(Image.open(path).convert("L"), dtype=float)
+    return float(np.mean(img < 200))
+
+
+def test_full_result_writes_every_sheet_and_panel_png_and_pdf(tmp_path):
+    written = write_plots(synthetic(240), None, tmp_path)
+    names = {p.relative_to(tmp_path).as_posix() for p in written}
+    for sheet in ("kinematics", "contact", "friction", "profile"):
+        assert f"sheet_{sheet}.png" in names and f"sheet_{sheet}.pdf" in names
+    for panel in ("lift", "velocities", "radii", "film_angle", "film_position", "load", "hertz",
+                  "friction_coefficient", "torque", "power", "profile"):
+        assert f"panels/{panel}.png" in names and f"panels/{panel}.pdf" in names
+    for p in written:
+        assert p.stat().st_size > 2000
+        if p.suffix == ".pdf":
+            assert p.read_bytes().startswith(b"%PDF")
+        else:
+            assert _ink(p) > 0.01, p
+
+
+def test_lift_only_result_gives_one_clean_sheet(tmp_path):
+    written = write_plots(synthetic(180, level="lift"), None, tmp_path, single_panels=False,
+                          formats=("png",))
+    assert [p.name for p in written] == ["sheet_kinematics.png"]
+    assert _ink(written[0]) > 0.01
+
+
+def test_no_load_result_has_no_friction_sheet(tmp_path):
+    written = write_plots(synthetic(180, level="kinematics"), None, tmp_path,
+                          single_panels=False, formats=("png",))
+    assert {p.name for p in written} == {"sheet_kinematics.png", "sheet_contact.png",
+                                         "sheet_profile.png"}
+
+
+def test_progress_reports_every_file_set(tmp_path):
+    seen = []
+    write_plots(synthetic(120, level="lift"), None, tmp_path, formats=("png",),
+                progress=lambda label, done, total: seen.append((label, done, total)))
+    assert seen[-1][1] == seen[-1][2] == len(seen)
+    assert seen[0][0] == "sheet kinematics"
+
+
+def test_result_without_angle_grid_draws_nothing(tmp_path):
+    from camtrain.result import Result
+
+    assert write_plots(Result(), None, tmp_path) == []
+
+
+@pytest.mark.parametrize("x,expected", [(0.0, 1.0), (7.3, 5.0), (1500.0, 1000.0), (0.2, 0.2)])
+def test_film_magnification_is_a_round_number(x, expected):
+    assert profile._nice(x) == pytest.approx(expected)
+
+
+def test_profile_normals_point_outward():
+    t = np.linspace(0, 2 * np.pi, 100, endpoint=False)
+    x, y = 2 * np.cos(t), np.sin(t)
+    nx, ny = profile._outward_normals(x, y)
+    assert np.all(nx * x + ny * y > 0)
+    assert np.allclose(np.hypot(nx, ny), 1.0)
