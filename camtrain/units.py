@@ -20,8 +20,8 @@ UNITS: dict[str, tuple[float, str]] = {
     "rpm": (2.0 * math.pi / 60.0, "rad/s"),
     "N": (1.0, "N"),
     "N/mm": (1e3, "N/m"),
-    "N/mm²": (1e9, "N/m^3"),  # progressive spring: force per lift squared
-    "N/mm³": (1e12, "N/m^4"),
+    "N/mm²": (1e6, "N/m^2"),  # progressive spring: force per compression squared
+    "N/mm³": (1e9, "N/m^3"),  # progressive spring: force per compression cubed
     "kg": (1.0, "kg"),
     "kg·m²": (1.0, "kg*m^2"),
     "GPa": (1e9, "Pa"),

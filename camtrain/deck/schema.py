@@ -458,9 +458,12 @@ class Spring:
     rate: float = quantity("Spring rate k", "N/mm", gt=0, example=38.254)
     preload_compression: float = quantity(
         "Initial spring compression delta at zero valve lift", "mm", ge=0, example=6.4)
-    progressive: tuple[float, ...] = quantity(
-        "Extra terms of a progressive spring: force += c2 x^2 + c3 x^3 (x = compression)",
-        "-", default=(), max_items=2)
+    progressive_quadratic: float = quantity(
+        "Progressive spring, quadratic term c2: force += c2 x^2 (x = total compression)",
+        "N/mm²", default=0.0)
+    progressive_cubic: float = quantity(
+        "Progressive spring, cubic term c3: force += c3 x^3 (x = total compression)", "N/mm³",
+        default=0.0)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -61,7 +61,7 @@ def load_inputs(deck) -> dict:
     lash = c is not None and c.lash_adjuster
     return dict(rate=deck.spring.rate, preload_compression=deck.spring.preload_compression,
                 valve_mass=deck.masses.valve_side, body_inertia=body_inertia(deck),
-                progressive=tuple(deck.spring.progressive),
+                progressive=(deck.spring.progressive_quadratic, deck.spring.progressive_cubic),
                 clearance=0.0 if (c is None or lash) else c.valve_clearance,
                 base_load=c.adjuster_load if lash else 0.0)
 
