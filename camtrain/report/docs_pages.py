@@ -32,7 +32,7 @@ MECHANISM_TEXT = {
                 "Harrison's lift on a curved tappet."),
     "desmodromic": ("Desmodromic valve train",
                     "Opening and closing cams, each with its own pivoted follower, drive the "
-                    "valve both ways; there is no valve spring (Ball 1988 §3.2.3, App D and F). "
+                    "valve both ways; only a light closing spring remains (Ball 1988 §3.2.3, App D and F). "
                     "The closing pair is described in its own section."),
 }
 
