@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import functools
 import math
 import types
 import typing
@@ -159,9 +160,12 @@ def deck_key(f: dataclasses.Field) -> str:
     return info_of(f).key or f.name
 
 
-def section_fields(cls: type) -> list[tuple[dataclasses.Field, Shape, FieldInfo]]:
+@functools.lru_cache(maxsize=None)
+def section_fields(cls: type) -> tuple[tuple[dataclasses.Field, Shape, FieldInfo], ...]:
+    """The fields of a section with their shapes (cached: the schema never changes at run time,
+    and resolving type hints dominates validation otherwise)."""
     hints = typing.get_type_hints(cls)
-    return [(f, shape_of(hints[f.name]), info_of(f)) for f in dataclasses.fields(cls)]
+    return tuple((f, shape_of(hints[f.name]), info_of(f)) for f in dataclasses.fields(cls))
 
 
 # --------------------------------------------------------------------------- parsing
@@ -216,8 +220,11 @@ def _suggest(key: str, known: list[str], path: str, all_paths: dict[str, list[st
     return "known keys here: " + ", ".join(sorted(known))
 
 
+@functools.lru_cache(maxsize=None)
 def schema_paths(cls: type, prefix: str = "") -> dict[str, list[str]]:
-    """Map every key name to the dotted paths where it occurs in the schema (for hints)."""
+    """Map every key name to the dotted paths where it occurs in the schema (for hints).
+
+    Cached; callers must not modify the returned mapping."""
     out: dict[str, list[str]] = {}
     for f, shape, _ in section_fields(cls):
         key = deck_key(f)

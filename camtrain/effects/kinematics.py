@@ -19,6 +19,11 @@ def _cached_noise(lift_model):
     return _cached_law(lift_model).noise_estimate()
 
 
+@lru_cache(maxsize=32)
+def _cached_jumps(lift_model):
+    return tuple(_cached_law(lift_model).joint_jumps())
+
+
 def lift_columns(deck, result, points: int | None = None):
     """Evaluate the deck's lift law on the angle grid and add lift and its derivatives.
 
@@ -68,7 +73,7 @@ def _worth_warning(j, peak_velocity: float) -> bool:
 
 def _report_law_quality(law, result, peak_velocity: float, lift_model=None) -> None:
     """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings."""
-    jumps = law.joint_jumps()
+    jumps = _cached_jumps(lift_model)
     if jumps:
         for name, unit, what in (("lift", "m", "lift"), ("d1", "m/rad", "velocity"),
                                  ("d2", "m/rad^2", "acceleration"), ("d3", "m/rad^3", "jerk")):
