@@ -160,7 +160,7 @@ def deck_key(f: dataclasses.Field) -> str:
     return info_of(f).key or f.name
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def section_fields(cls: type) -> tuple[tuple[dataclasses.Field, Shape, FieldInfo], ...]:
     """The fields of a section with their shapes (cached: the schema never changes at run time,
     and resolving type hints dominates validation otherwise)."""
@@ -220,7 +220,7 @@ def _suggest(key: str, known: list[str], path: str, all_paths: dict[str, list[st
     return "known keys here: " + ", ".join(sorted(known))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def schema_paths(cls: type, prefix: str = "") -> dict[str, list[str]]:
     """Map every key name to the dotted paths where it occurs in the schema (for hints).
 
