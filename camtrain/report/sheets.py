@@ -134,9 +134,17 @@ def _panel(result: Result, deck, pname: str, ctx: Ctx):
 def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = True,
                 formats=("png", "pdf"), sha: str | None = None,
                 progress: Progress | None = None, dpi: int | None = None) -> list[Path]:
-    """Draw every sheet (and every panel alone) that the result supports into ``out_dir``."""
+    """Draw every sheet (and every panel alone) that the result supports into ``out_dir``,
+    and a polar orbit plot per journal bearing when the run has bearings."""
+    from camtrain.report.bearing_plots import orbit_series, write_orbit_plots
+
+    orbits: list[Path] = []
+    if orbit_series(result):
+        title = getattr(deck, "title", "") if deck is not None else ""
+        for ext in formats:
+            orbits += write_orbit_plots(result, out_dir, title=title, fmt=ext)
     if "cam_angle" not in result.columns:
-        return []
+        return orbits
     import matplotlib
 
     plt = pyplot()
@@ -158,7 +166,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
                 written += _save(plt, fig, out_dir / "panels" / name, formats)
             if progress:
                 progress(f"{kind} {name}", done, len(jobs))
-    return written
+    return written + orbits
 
 
 def kinematics_sheet(result: Result, deck, title: str, stem: Path,
