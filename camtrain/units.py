@@ -59,3 +59,8 @@ def rpm_to_rad_s(rpm: float) -> float:
 
 def rad_s_to_rpm(omega: float) -> float:
     return omega / UNITS["rpm"][0]
+
+
+def mm_text(length: float) -> str:
+    """A length [m] as a deck user writes it, e.g. '18 mm' (for messages)."""
+    return f"{from_si(length, 'mm'):g} mm"

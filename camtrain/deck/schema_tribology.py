@@ -1,0 +1,246 @@
+"""Deck sections of loads, materials, lubricant, tribology options, solver knobs and design
+limits. Part of the deck schema (schema.py)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from camtrain.deck.fields import option, quantity
+from camtrain.errors import Problem
+
+# --------------------------------------------------------------------------- loads
+
+@dataclass(frozen=True, kw_only=True)
+class Spring:
+    """Valve spring. Omit the section and no contact loads are computed (Ball: Blok film only)."""
+
+    rate: float = quantity("Spring rate k", "N/mm", gt=0, example=38.254)
+    preload_compression: float = quantity(
+        "Initial spring compression delta at zero valve lift", "mm", ge=0, example=6.4)
+    progressive_quadratic: float = quantity(
+        "Progressive spring, quadratic term c2: force += c2 x^2 (x = total compression)",
+        "N/mm²", default=0.0)
+    progressive_cubic: float = quantity(
+        "Progressive spring, cubic term c3: force += c3 x^3 (x = total compression)", "N/mm³",
+        default=0.0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Masses:
+    """Moving masses, reduced as in Ball (1988) Table 3.1."""
+
+    valve_side: float = quantity(
+        "Equivalent mass at the valve: valve + retainer + collets + 1/3 spring (+ bucket for a "
+        "flat follower)", "kg", gt=0, example=0.172)
+    follower: float = quantity(
+        "Follower (rocker) equivalent mass referred to radius B", "kg", default=0.0, ge=0,
+        applies="finger, rocker")
+    rocker_inertia: float = quantity("Rocker moment of inertia about its pivot", "kg·m²",
+                                     default=0.0, ge=0, applies="finger, rocker, pushrod")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Clearance:
+    """Valve clearance (lash) or a hydraulic lash adjuster."""
+
+    valve_clearance: float = quantity("Valve clearance at the base-circle position", "mm",
+                                      default=0.0, ge=0)
+    lash_adjuster: bool = option("A hydraulic lash adjuster keeps zero clearance",
+                                 default=False)
+    adjuster_load: float = quantity("Base-circle load of the lash adjuster", "N", default=0.0,
+                                    ge=0, applies="lash_adjuster = true")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Guides:
+    """Follower and valve-stem guides: full-film Couette shear losses (Yang 1992 §3.3.2)."""
+
+    follower_diameter: float | None = quantity(
+        "Follower (bucket) diameter in its bore; omit for a follower without a guide", "mm",
+        default=None, gt=0, example=28.4, applies="flat, domed")
+    follower_guide_length: float | None = quantity("Follower guide (bore) length", "mm",
+                                                   default=None, gt=0, example=22.0,
+                                                   applies="flat, domed")
+    follower_guide_clearance: float | None = quantity(
+        "Radial clearance between follower and bore", "mm", default=None, gt=0, example=0.024,
+        applies="flat, domed")
+    valve_stem_diameter: float = quantity("Valve stem diameter", "mm", gt=0, example=6.043)
+    valve_guide_length: float = quantity("Valve guide length", "mm", gt=0, example=36.0)
+    valve_guide_clearance: float = quantity("Radial clearance between valve stem and guide",
+                                            "mm", gt=0, example=0.02)
+
+    def problems(self, path: str) -> list[Problem]:
+        given = [self.follower_diameter, self.follower_guide_length,
+                 self.follower_guide_clearance]
+        if any(v is None for v in given) and any(v is not None for v in given):
+            return [Problem(f"{path}.follower_diameter", "the follower guide needs diameter, "
+                            "guide length and clearance together", None, "all three or none")]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
+class Materials:
+    """Elastic properties of cam and follower."""
+
+    cam_modulus: float = quantity("Young's modulus of the cam", "GPa", default=207.0, gt=0)
+    cam_poisson: float = quantity("Poisson's ratio of the cam", "-", default=0.29, gt=0, lt=0.5)
+    follower_modulus: float = quantity("Young's modulus of the follower", "GPa", default=207.0,
+                                       gt=0)
+    follower_poisson: float = quantity("Poisson's ratio of the follower", "-", default=0.29,
+                                       gt=0, lt=0.5)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Lubricant:
+    """The oil at the contact: its viscosity given directly, or from a fit at the oil temperature."""
+
+    viscosity: float | None = quantity(
+        "Dynamic viscosity at ambient pressure and oil temperature; omit to take it from "
+        "viscosity_fit at temperature", "Pa·s", default=None, gt=0, example=0.05)
+    pressure_viscosity: float = quantity("Pressure-viscosity coefficient alpha", "1/GPa", ge=0,
+                                         example=22.0)
+    roughness: float = quantity("Composite RMS surface roughness sigma (for lambda = h/sigma)",
+                                "µm", default=0.2, gt=0)
+    temperature: float | None = quantity("Oil temperature at the contact", "°C", default=None,
+                                         gt=-60, lt=400)
+    viscosity_fit: Literal["vogel", "two_point"] | None = option(
+        "Viscosity-temperature law through the fit points: vogel (three or more points, Vogel "
+        "1921) or two_point (exponential, Reynolds 1886)", default=None)
+    fit_temperatures: tuple[float, ...] | None = quantity(
+        "Temperatures of the fit points", "°C", default=None, gt=-60, lt=400,
+        applies="viscosity_fit")
+    fit_viscosities: tuple[float, ...] | None = quantity(
+        "Dynamic viscosities at the fit temperatures", "Pa·s", default=None, gt=0,
+        applies="viscosity_fit")
+
+    def __post_init__(self) -> None:
+        # the run chain reads ``viscosity``: fill it from the fit (bad fit data -> problems())
+        if self.viscosity is None and not self._fit_problems("lubricant"):
+            object.__setattr__(self, "viscosity", self.fitted_viscosity())
+
+    def fitted_viscosity(self) -> float:
+        """eta(temperature) [Pa s] from the fit points (Vogel 1921 or Reynolds 1886 two-point)."""
+        from camtrain.formulas.viscosity import reynolds_two_point, vogel, vogel_fit
+        T = [t + 273.15 for t in self.fit_temperatures]
+        eta = list(self.fit_viscosities)
+        T0 = self.temperature + 273.15
+        if self.viscosity_fit == "vogel":
+            return float(vogel(T0, *vogel_fit(T, eta)))
+        return float(reynolds_two_point(T0, T[0], eta[0], T[1], eta[1]))
+
+    def _fit_problems(self, path: str) -> list[Problem]:
+        if self.viscosity_fit is None:
+            return [] if self.viscosity is not None else [Problem(
+                f"{path}.viscosity", "is missing", None,
+                "a viscosity in Pa·s, or viscosity_fit with temperature and fit points")]
+        out = []
+        if self.temperature is None:
+            out.append(Problem(f"{path}.temperature", "is required with viscosity_fit", None,
+                               "the oil temperature in °C"))
+        t, e = self.fit_temperatures or (), self.fit_viscosities or ()
+        need = 3 if self.viscosity_fit == "vogel" else 2
+        if len(t) != len(e) or len(t) < need or (self.viscosity_fit == "two_point"
+                                                   and len(t) != 2):
+            out.append(Problem(f"{path}.fit_temperatures", "and fit_viscosities must be pairs",
+                               f"{len(t)} temperatures, {len(e)} viscosities",
+                               f"{'at least 3' if need == 3 else 'exactly 2'} of each"))
+        elif len(set(t)) != len(t) or any((b - a) * (y - x) >= 0 for a, b, x, y in
+                                            zip(t, t[1:], e, e[1:], strict=False)):
+            out.append(Problem(f"{path}.fit_viscosities", "must fall as the temperature rises",
+                               list(e), "distinct temperatures, viscosity falling with them"))
+        return out
+
+    def problems(self, path: str) -> list[Problem]:
+        out = self._fit_problems(path)
+        if self.viscosity_fit is not None and not out:
+            try:
+                eta = self.fitted_viscosity()
+            except Exception as exc:  # a Vogel fit that has no solution for these points
+                return [Problem(f"{path}.fit_viscosities", "cannot be fitted", None, "",
+                                str(exc))]
+            if self.viscosity is not None and abs(self.viscosity - eta) > 1e-9 * eta:
+                out.append(Problem(f"{path}.viscosity", "conflicts with viscosity_fit",
+                                   self.viscosity, f"omit it (the fit gives {eta:.6g} Pa·s)"))
+        return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class Solver:
+    """Resolution knobs (each trades accuracy for time; see `camtrain accuracy`)."""
+
+    angle_points: int = quantity("Number of cam angles over one revolution", "-", default=720,
+                                 ge=16, le=1_000_000)
+    friction_tolerance: float = quantity(
+        "Relative tolerance of the friction/load iteration of pivoted followers", "-",
+        default=1e-6, gt=0, lt=0.1)
+    friction_max_iterations: int = quantity("Maximum friction/load iterations", "-", default=50,
+                                            ge=1, le=10_000)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Tribology:
+    """Tribology model options (Ball 1988 ch. 4; the choices behind his printed results)."""
+
+    entrainment: Literal["mean", "sum"] = option(
+        "Entrainment speed in the film formulas: mean (V_c + V_f)/2, or sum V_c + V_f as Ball's "
+        "'entraining velocity'", default="mean")
+    film_formula: Literal["auto", "dowson_higginson_1977", "dowson_dunn_taylor_1983",
+                          "hamrock_dowson_1977_min", "chittenden_1985_min"] = option(
+        "Minimum-film formula: auto (Dowson-Higginson for line, Hamrock-Dowson for point "
+        "contact with loads; Blok rigid-piezoviscous without loads) or a named formula",
+        default="auto")
+    friction_model: Literal["cap", "lambda", "lambda_cap", "greenwood_tripp"] = option(
+        "Friction: cap (lesser of viscous shear and boundary friction), lambda (boundary "
+        "friction where h/sigma < 1), lambda_cap (both), greenwood_tripp (asperity load share "
+        "with boundary shear plus viscous shear of the rest, Teodorescu et al. 2005)",
+        default="cap")
+    boundary_friction: float = quantity(
+        "Boundary friction coefficient (cap and start of the friction/load iteration)", "-",
+        default=0.08, ge=0, le=1)
+    hertz: Literal["exact", "ball_1988"] = option(
+        "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
+    # Greenwood-Tripp / Teodorescu et al. (2005) parameters. The paper prints none of them;
+    # the defaults are typical values for run-in steel surfaces (see docs/tribology.md).
+    asperity_density_product: float = quantity(
+        "Greenwood-Tripp roughness parameter zeta beta sigma (asperity density x tip radius x "
+        "rms roughness)", "-", default=0.04, gt=0, lt=1, applies="friction_model = "
+        "greenwood_tripp")
+    roughness_slope: float = quantity(
+        "Greenwood-Tripp ratio sigma / beta (rms roughness over asperity tip radius)", "-",
+        default=1e-3, gt=0, lt=1, applies="friction_model = greenwood_tripp")
+    eyring_stress: float = quantity(
+        "Eyring (limiting) shear stress tau_0 of the oil (Teodorescu eq. 12)", "MPa",
+        default=2.0, ge=0, applies="friction_model = greenwood_tripp")
+    shear_pressure_coefficient: float = quantity(
+        "Rise of the limiting shear stress with mean pressure, gamma (Teodorescu eq. 12)", "-",
+        default=0.08, ge=0, lt=1, applies="friction_model = greenwood_tripp")
+    boundary_shear_coefficient: float = quantity(
+        "Pressure coefficient m of the asperity boundary shear strength (Teodorescu eq. 8)",
+        "-", default=0.17, ge=0, lt=1, applies="friction_model = greenwood_tripp")
+
+
+# --------------------------------------------------------------------------- design limits
+
+@dataclass(frozen=True, kw_only=True)
+class Limits:
+    """Design limits, checked over the cycle by `camtrain run --check`; omit a limit to skip it."""
+
+    max_hertz: float | None = quantity("Largest allowed maximum Hertz stress p_max", "MPa",
+                                       default=None, gt=0, example=650.0)
+    min_film: float | None = quantity(
+        "Smallest allowed minimum film thickness h_min anywhere in contact (zero-entrainment "
+        "points give zero film in a quasi-static analysis)", "µm", default=None, ge=0, example=0.05)
+    min_film_at_max_lift: float | None = quantity(
+        "Smallest allowed h_min at the maximum-lift position (Ball's representative nose film)",
+        "µm", default=None, ge=0, example=0.1)
+    min_lambda: float | None = quantity("Smallest allowed film parameter lambda = h_min/sigma",
+                                        "-", default=None, ge=0, example=0.3)
+    min_bounce_margin: float | None = quantity(
+        "Smallest allowed margin of the run speed below the valve-bounce speed, "
+        "100 (1 - n/n_bounce)", "%", default=None, gt=-100, lt=100, example=10.0)
+    max_power_loss: float | None = quantity("Largest allowed cycle-mean frictional power loss",
+                                            "W", default=None, gt=0, example=60.0)
+    max_load: float | None = quantity("Largest allowed cam/follower contact load", "N",
+                                      default=None, gt=0, example=2000.0)
+    max_friction_torque: float | None = quantity("Largest allowed peak friction torque", "N·m",
+                                                 default=None, gt=0, example=2.0)
