@@ -234,27 +234,47 @@ class TableLift(LiftLaw):
         return cls(np.asarray(angles_deg, dtype=float) * DEG, lift_mm * MM, **kwargs)
 
     # ------------------------------------------------------------------ the law
+    # The smoothing spline does not end on the base circle with zero slope and curvature: it
+    # leaves residual-sized steps (~1e-5 mm, ~1e-4 mm/deg) where it would be cut to exact zeros.
+    # A velocity step is a corner of the cam, which a fine enough angle grid resolves into a
+    # spurious cusp. So the spline is faded to zero over five data steps outside the event,
+    # where the data are base-circle zeros, with a quintic smoothstep: lift, velocity and
+    # acceleration are continuous at the joints and the data inside the event are untouched.
+    # (The fade adds s w'' ~ residual / length^2 to the acceleration: five steps keep that below
+    # the spline's own noise on acceleration and jerk; one step would not.)
+    @property
+    def _fade(self) -> float:
+        return 5.0 * self._h if self.method == "spline" else 0.0
+
     @property
     def opening_angle(self) -> float:
-        return self._open
+        return self._open - self._fade
 
     @property
     def closing_angle(self) -> float:
-        return self._close
+        return self._close + self._fade
 
     def joints(self) -> list[tuple[float, str]]:
-        return [(self._open, "base circle / table"), (self._close, "table / base circle")]
+        return [(self.opening_angle, "base circle / table"),
+                (self.closing_angle, "table / base circle")]
 
     def _kinematics(self, theta):
         out = [np.zeros_like(theta) for _ in range(4)]
-        m = theta <= self._close
+        m = theta <= self.closing_angle
         t = theta[m]
-        for k in range(4):
-            if self.method == "spline":
-                out[k][m] = self._spline(t, k)
-            else:
+        if self.method != "spline":
+            for k in range(4):
                 values = self._y if k == 0 else self._cd[k - 1]
                 out[k][m] = np.interp(t, self._x, values, period=TWO_PI)
+            return tuple(out)
+        x0 = self._x[0]                    # the spline's own period starts at the first data point
+        tt = x0 + np.mod(t - x0, TWO_PI)
+        s = [self._spline(tt, k) for k in range(4)]
+        w = _fade_weights(t, self._open, self._close, self._fade)
+        # Leibniz rule for the derivatives of the product s * w
+        binomial = ((1,), (1, 1), (1, 2, 1), (1, 3, 3, 1))
+        for k in range(4):
+            out[k][m] = sum(c * s[k - j] * w[j] for j, c in enumerate(binomial[k]))
         return tuple(out)
 
     def noise_estimate(self, samples: int = 16, seed: int = 0) -> TableNoise:
@@ -288,3 +308,23 @@ class TableLift(LiftLaw):
             runs[j] = [spl(t, k) for k in (1, 2, 3)]
         spread = np.sqrt(np.mean(np.var(runs, axis=0, ddof=1), axis=-1))
         return TableNoise("spline", self.lift_quantum, self.sigma, resid, *map(float, spread))
+
+
+def _smoothstep(u: np.ndarray) -> tuple[np.ndarray, ...]:
+    """w = 10u^3 - 15u^4 + 6u^5 and its first three derivatives: 0 -> 1 with zero slope and
+    curvature at both ends."""
+    return (u**3 * (10.0 - 15.0 * u + 6.0 * u**2), 30.0 * u**2 * (1.0 - u) ** 2,
+            60.0 * u * (1.0 - u) * (1.0 - 2.0 * u), 60.0 * (1.0 - 6.0 * u + 6.0 * u**2))
+
+
+def _fade_weights(t: np.ndarray, start: float, end: float, h: float) -> list[np.ndarray]:
+    """Weight w(theta) and its derivatives: 1 on [start, end], fading to 0 over h outside."""
+    w = [np.ones_like(t), np.zeros_like(t), np.zeros_like(t), np.zeros_like(t)]
+    for mask, u, sign in ((t < start, (t - (start - h)) / h, 1.0),
+                          (t > end, ((end + h) - t) / h, -1.0)):
+        if np.any(mask):
+            ws = _smoothstep(np.clip(u[mask], 0.0, 1.0))
+            for k in range(4):
+                w[k][mask] = ws[k] * (sign / h) ** k
+    return w
+

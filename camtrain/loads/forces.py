@@ -64,15 +64,22 @@ def load_parts(kin, *, rate: float, preload_compression: float, valve_mass: floa
     return g0, g2
 
 
+#: Lift below which the follower counts as on the base circle [m]: 0.05 µm, half the finest
+#: printed digit of the sources' lift tables (0.1 µm). A smoothed lift table is not exactly zero
+#: on the base circle; ripples below this are data noise, not lift.
+BASE_CIRCLE_TOLERANCE = 5e-8
+
+
 def contact_mask(valve_lift, clearance: float = 0.0):
     """True where the cam drives the valve: valve lift above the valve clearance.
 
     With a clearance c (lash) the cam first takes up c; until then the valve sits on its seat and
     the cam/follower load is zero (Ball 1988 §8.3.1.2, "clearance on the base circle"; the
     reference extraction §4.5 shows Ball's printed power losses need this). With c = 0 the base
-    circle (l_v = 0) is still unloaded: the seat carries the spring preload.
+    circle (l_v within BASE_CIRCLE_TOLERANCE of 0) is still unloaded: the seat carries the
+    spring preload.
     """
-    return np.asarray(valve_lift, dtype=float) > max(float(clearance), 0.0)
+    return np.asarray(valve_lift, dtype=float) > max(float(clearance), BASE_CIRCLE_TOLERANCE)
 
 
 def contact_load(kin, mu=0.0, *, rate: float, preload_compression: float, valve_mass: float,

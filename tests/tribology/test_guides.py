@@ -33,7 +33,7 @@ def test_yang_totals(intake):
     assert m["guide_power_mean"].value == pytest.approx(
         m["follower_guide_power_mean"].value + m["valve_guide_power_mean"].value)
     # guide losses are reported apart from the cam/follower contact
-    assert m["power_loss_mean"].value == pytest.approx(39.82, rel=0.01)
+    assert m["power_loss_mean"].value == pytest.approx(39.62, rel=0.01)
 
 
 def test_couette_closed_form(intake):
