@@ -93,7 +93,7 @@ EXPECTED = {
 }
 
 #: Where camtrain's physics, as it stands, disagrees with the source near the datum. Reported,
-#: not hidden: these run and show as xfail (or XPASS once the physics agrees).
+#: not hidden: these run as strict xfails, so the suite flags the day the physics agrees.
 KNOWN_DIFFERENCES = {
     ("pinto_finger", "equivalent_mass", W): "power loss is nearly flat in M and peaks near the "
                                             "datum; Ball has it falling",
@@ -105,7 +105,7 @@ _CASES = [(deck, param, metric, direction) for deck, table in EXPECTED.items()
 
 def _marks(case):
     why = KNOWN_DIFFERENCES.get(case[:3])
-    return pytest.param(*case, marks=pytest.mark.xfail(reason=why, strict=False)) if why \
+    return pytest.param(*case, marks=pytest.mark.xfail(reason=why, strict=True)) if why \
         else pytest.param(*case)
 
 
