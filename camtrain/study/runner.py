@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from camtrain.errors import InputError, Problem
+from camtrain.report.tables import atomic_write
 from camtrain.study import sweep_output as so
 from camtrain.study.executors import Job, make_executor, run_case
 from camtrain.study.sweep import Case, Parameter, apply_fixed, build_parameters, cases, parse_assignment
@@ -120,7 +121,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         for stale in (out_dir / "curves").glob("case_*.csv"):
             stale.unlink()
     reused = len(done)
-    so._atomic_write(out_dir / "sweep.json", json.dumps(_manifest(sweep), indent=2) + "\n")
+    atomic_write(out_dir / "sweep.json", json.dumps(_manifest(sweep), indent=2) + "\n")
     todo = [c for c in sweep.cases if c.index not in done]
     total = len(sweep.cases)
     if progress:
@@ -173,12 +174,12 @@ def _write_trends(out_dir: Path, sweep: Sweep, outcome: Outcome) -> list[Path]:
     w.writerow(["metric", "unit", "parameter", "trend", "detail", "cases"])
     for t in outcome.trends:
         w.writerow([t.metric, units.get(t.metric, ""), t.parameter, t.trend, t.detail, t.points])
-    so._atomic_write(out_dir / "trends.csv", buf.getvalue())
+    atomic_write(out_dir / "trends.csv", buf.getvalue())
     counts = ", ".join(f"{s} {outcome.count(s)}" for s in ("ok", "lost_contact", "failed", "error")
                        if outcome.count(s))
     head = (f"# Trends: {sweep.name}\n\n{len(outcome.records)} cases ({counts}). "
             + "; ".join(f"{p.name} = {p.path} [{p.unit}], datum {p.datum:g}" if p.datum is not None
                         else f"{p.name} = {p.path} [{p.unit}]" for p in sweep.params) + ".\n\n")
-    so._atomic_write(out_dir / "trends.md", head + trends_markdown(outcome.trends, pnames, names,
+    atomic_write(out_dir / "trends.md", head + trends_markdown(outcome.trends, pnames, names,
                                                                   units))
     return [out_dir / "trends.csv", out_dir / "trends.md"]

@@ -12,28 +12,13 @@ import math
 import re
 from pathlib import Path
 
+from camtrain.report.tables import atomic_write
 from camtrain.study.sweep import Case, Parameter
 
 FIXED_COLUMNS = ("case", "status", "message")
 #: Statuses that are final; 'error' (a bug in camtrain) is tried again on --resume.
 FINAL = ("ok", "lost_contact", "failed")
 _HEADER = re.compile(r"^(.*)\[(.*)\]$")
-
-
-def _atomic_write(path: Path, text: str) -> None:
-    """Write to a temporary file beside ``path`` and rename it into place: a reader (or a resume
-    after a crash) sees the old file or the new one, never half of one."""
-    import os
-    import tempfile
-
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def _fmt(x: float) -> str:
@@ -76,7 +61,7 @@ def csv_text(params: list[Parameter], records: list[dict]) -> str:
 
 def write_csv(path: Path, params: list[Parameter], records: list[dict]) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
-    _atomic_write(path, csv_text(params, records))
+    atomic_write(path, csv_text(params, records))
     return path
 
 
@@ -144,7 +129,7 @@ def write_curves(out_dir: Path, record: dict) -> None:
         lines.append(",".join(f"{v:.10g}" for v in row))
     path = curve_path(out_dir, record["index"])
     path.parent.mkdir(parents=True, exist_ok=True)
-    _atomic_write(path, "\n".join(lines) + "\n")
+    atomic_write(path, "\n".join(lines) + "\n")
 
 
 def read_curves(out_dir: Path, index: int) -> dict | None:
