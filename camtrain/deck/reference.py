@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from camtrain.deck.bearing_schema import BearingDeck
 from camtrain.deck.fields import FieldInfo, Shape, deck_key, section_fields
 from camtrain.deck.schema import Deck
 from camtrain.units import UNITS
@@ -36,13 +37,18 @@ def markdown() -> str:
     lines = ["# Deck reference", "",
              "Generated from camtrain's deck schema (`camtrain schema` gives the same as JSON "
              "Schema). Units are the units written in the deck; camtrain converts them to SI.", ""]
-    _section(Deck, "", "The deck (top level)", lines)
+    _section(Deck, "", "The valve-train deck (top level)", lines)
+    lines += ["# Journal-bearing decks", "",
+              "A deck with `kind = \"journal_bearing\"` describes one journal bearing under a "
+              "load diagram (`camtrain template journal_bearing`).", ""]
+    _section(BearingDeck, "", "The journal-bearing deck (top level)", lines,
+             label="journal bearing ")
     return "\n".join(lines).rstrip() + "\n"
 
 
-def _section(cls: type, path: str, title: str, lines: list[str]) -> None:
+def _section(cls: type, path: str, title: str, lines: list[str], label: str = "") -> None:
     doc = (cls.__doc__ or "").strip()
-    lines += [f"## `[{path}]`" if path else f"## {title}", "", doc, "",
+    lines += [f"## {label}`[{path}]`" if path else f"## {title}", "", doc, "",
               "| key | what it is | unit | type | default | applies to |",
               "|---|---|---|---|---|---|"]
     nested = []
@@ -56,4 +62,4 @@ def _section(cls: type, path: str, title: str, lines: list[str]) -> None:
             nested.append((shape, f"{path}.{key}" if path else key))
     lines.append("")
     for shape, sub in nested:
-        _section(shape.section, sub, sub, lines)
+        _section(shape.section, sub, sub, lines, label)
