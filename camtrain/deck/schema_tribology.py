@@ -197,6 +197,10 @@ class Tribology:
     boundary_friction: float = quantity(
         "Boundary friction coefficient (cap and start of the friction/load iteration)", "-",
         default=0.08, ge=0, le=1)
+    viscosity_law: Literal["barus", "roelands"] = option(
+        "Pressure-viscosity law in the shear integral over the Hertz zone: barus (Ball, Yang) or "
+        "roelands (Roelands 1966, z matched to pressure_viscosity at ambient pressure; lower "
+        "viscosity at Hertz pressures)", default="barus")
     hertz: Literal["exact", "ball_1988"] = option(
         "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
     # Greenwood-Tripp / Teodorescu et al. (2005) parameters. The paper prints none of them;

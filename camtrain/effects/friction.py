@@ -63,7 +63,7 @@ def greenwood_tripp_friction(deck, hz, h, u_s, W, use) -> np.ndarray:
     share = np.where(area > 0.0, (area - a_a) / np.where(area > 0.0, area, 1.0), 0.0)
     cap = np.where(share > 0.0, f_lim / np.where(share > 0.0, share, 1.0), 0.0)
     common = dict(u_s=u_s, h=h, eta0=lub.viscosity, alpha=lub.pressure_viscosity,
-                  p_max=hz["pmax"][use], cap=cap)
+                  p_max=hz["pmax"][use], cap=cap, viscosity_law=trib.viscosity_law)
     if hz["line"]:
         f_n = ball_1988_shear_force(b=bx, L=deck.cam.width, **common)
     else:
@@ -87,7 +87,7 @@ def contact_friction(deck, kin, load) -> dict:
         common = dict(u_s=np.abs(kin.sliding[use]), h=h[use], eta0=lub.viscosity,
                       alpha=lub.pressure_viscosity, p_max=hz["pmax"][use], W=load[use],
                       mu=trib.boundary_friction, model=trib.friction_model,
-                      sigma=lub.roughness)
+                      sigma=lub.roughness, viscosity_law=trib.viscosity_law)
         if hz["line"]:
             force[use] = ball_1988_friction(b=hz["half_width"][use], L=deck.cam.width, **common)
         else:

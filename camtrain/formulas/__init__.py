@@ -58,6 +58,7 @@ from .film_point import (
 from .fmep import PNH_CONSTANTS, patton_nitschke_heywood_1989
 from .friction import (
     FRICTION_MODELS,
+    VISCOSITY_LAWS,
     ball_1988_friction,
     ball_1988_shear_force,
     barus_ellipse_integral,
@@ -67,6 +68,8 @@ from .friction import (
     friction_coefficient,
     log_barus_ellipse_integral,
     log_barus_line_integral,
+    log_roelands_ellipse_integral,
+    log_roelands_line_integral,
     yang_1992_friction,
     yang_1992_shear_force,
 )
@@ -104,6 +107,7 @@ from .viscosity import (
 __all__ = [
     "ball_1988_friction", "ball_1988_point_max_pressure", "ball_1988_shear_force", "barus",
     "barus_ellipse_integral", "barus_line_integral", "barus_line_integral_closed_form",
+    "log_roelands_ellipse_integral", "log_roelands_line_integral", "VISCOSITY_LAWS",
     "barus_log", "cam_torque",
     "chittenden_1985_cen", "chittenden_1985_min", "contact_modulus", "couette_guide_friction",
     "couette_guide_power", "curvature_sum", "cycle_mean", "dowson_dunn_taylor_1983",

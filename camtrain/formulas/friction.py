@@ -13,11 +13,13 @@ import numpy as np
 from scipy.special import iv, ive, modstruve
 
 from ._util import arr, capped_exp_product, check, non_negative, out, positive, safe_divide, safe_exp
+from .viscosity import ROELANDS_ETA_INF, ROELANDS_P_R, roelands_z
 
 __all__ = ["barus_line_integral", "barus_line_integral_closed_form", "log_barus_line_integral",
            "barus_ellipse_integral",
            "log_barus_ellipse_integral", "ball_1988_shear_force", "yang_1992_shear_force",
            "ball_1988_friction", "yang_1992_friction", "friction_coefficient", "film_parameter",
+           "log_roelands_line_integral", "log_roelands_ellipse_integral", "VISCOSITY_LAWS",
            "FRICTION_MODELS"]
 
 #: Above this a = alpha p_max the I1 + L1 form is replaced by its exact-to-double asymptote.
@@ -56,6 +58,56 @@ def log_barus_line_integral(a):
     a_hi = a[~small]
     result[~small] = np.log(2.0 * np.pi * ive(1, a_hi)) + a_hi
     return out(result)
+
+
+#: Pressure-viscosity laws the shear integrals accept.
+VISCOSITY_LAWS = ("barus", "roelands")
+
+# Gauss-Legendre nodes on [0, 1] for the elliptical-zone integral of a radial profile
+_GL01_C = 0.5 * (_GL_X + 1.0)
+_GL01_W = 0.5 * _GL_W
+
+
+def _roelands_exponent(p, eta0, alpha):
+    """ln(eta/eta0) of Roelands' law with z matched to the Barus slope alpha at p = 0."""
+    z = roelands_z(eta0, alpha)
+    return np.log(eta0 / ROELANDS_ETA_INF) * ((1.0 + p / ROELANDS_P_R) ** z - 1.0)
+
+
+def _log_weighted_sum(exponents, weights):
+    """ln sum_j w_j exp(E_ij) over the last axis, without overflow (log-sum-exp)."""
+    top = np.max(exponents, axis=-1, keepdims=True)
+    return np.log(np.exp(exponents - top) @ weights) + top[..., 0]
+
+
+def log_roelands_line_integral(p_max, eta0, alpha):
+    r"""ln J_R, J_R = \int_{-1}^{1} \eta(p_{max}\sqrt{1-s^2})/\eta_0\,ds for Roelands' law
+    (z from :func:`roelands_z`), by the 48-point Gauss-Legendre rule of the Barus case; the
+    Roelands counterpart of :func:`log_barus_line_integral` (Ball 1988 eq. 4.7 with the
+    viscosity law exchanged). Equals ln J(alpha p_max) to first order as p_max -> 0."""
+    p = non_negative("p_max", p_max)
+    e = _roelands_exponent(np.multiply.outer(p, _GL_COS), eta0, alpha)
+    return out(_log_weighted_sum(e, _GL_WEIGHTS))
+
+
+def log_roelands_ellipse_integral(p_max, eta0, alpha):
+    r"""ln K_R, K_R = \iint_{unit\ disc} \eta(p_{max}\sqrt{1-r^2})/\eta_0\,dS
+    = 2\pi\int_0^1 \eta(p_{max} c)/\eta_0\, c\,dc (Yang 1992 eq. 3.24 with Roelands' law),
+    by 48-point Gauss-Legendre quadrature on [0, 1]."""
+    p = non_negative("p_max", p_max)
+    e = _roelands_exponent(np.multiply.outer(p, _GL01_C), eta0, alpha)
+    return out(np.log(2.0 * np.pi) + _log_weighted_sum(e, _GL01_W * _GL01_C))
+
+
+def _log_zone_integral(law, p_max, eta0, alpha, shape):
+    """ln of the pressure-viscosity factor integrated over the Hertz zone (line or ellipse)."""
+    if law == "barus":
+        a = non_negative("alpha", alpha) * non_negative("p_max", p_max)
+        return log_barus_line_integral(a) if shape == "line" else log_barus_ellipse_integral(a)
+    if law == "roelands":
+        fn = log_roelands_line_integral if shape == "line" else log_roelands_ellipse_integral
+        return fn(p_max, eta0, alpha)
+    raise ValueError(f"viscosity law must be one of {VISCOSITY_LAWS}, got {law!r}")
 
 
 def barus_line_integral(a):
@@ -109,7 +161,7 @@ def _prefactor(u_s, h, eta0):
     return safe_divide(positive("eta0", eta0) * np.abs(arr(u_s)), h, zero_den=np.inf)
 
 
-def ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap=np.inf):
+def ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap=np.inf, viscosity_law="barus"):
     r"""Viscous (Barus) sliding friction over a Hertz line contact, Ball (1988) eq. 4.7 corrected.
 
     .. math:: F = L\,\frac{\eta_0 |V_s|}{h}\int_{-b}^{b}
@@ -120,7 +172,8 @@ def ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap=np.inf):
     Args:
         u_s: sliding speed [m/s] (sign ignored); h: film thickness used for the shear rate [m]
             (Ball uses h_cen); eta0 [Pa s]; alpha [1/Pa]; p_max [Pa]; b Hertz half-width [m];
-        L: contact length [m]; cap: optional upper bound [N] applied in log space.
+        L: contact length [m]; cap: optional upper bound [N] applied in log space;
+        viscosity_law: "barus" (Ball) or "roelands" (z matched to alpha at p = 0).
 
     Returns:
         F [N] = min(F_visc, cap). h = 0 with sliding gives +inf before the cap.
@@ -128,12 +181,13 @@ def ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap=np.inf):
     Reference: Ball (1988) eqs. 4.4-4.7 (printed 4.7 pulls e^{alpha p_max} out of the
     integral: wrong; corrected here).
     """
-    a = non_negative("alpha", alpha) * non_negative("p_max", p_max)
     pre = _prefactor(u_s, h, eta0) * non_negative("b", b) * non_negative("L", L)
-    return out(capped_exp_product(pre, log_barus_line_integral(a), cap))
+    log_j = _log_zone_integral(viscosity_law, p_max, eta0, alpha, "line")
+    return out(capped_exp_product(pre, log_j, cap))
 
 
-def yang_1992_shear_force(u_s, h, eta0, alpha, p_max, a_x, a_y, cap=np.inf):
+def yang_1992_shear_force(u_s, h, eta0, alpha, p_max, a_x, a_y, cap=np.inf,
+                          viscosity_law="barus"):
     r"""Viscous (Barus) sliding friction over a Hertz ellipse, Yang (1992) eq. 3.24.
 
     .. math:: F = \frac{\eta_0 |V_s|}{h}\iint e^{\alpha P_{max}\sqrt{1-x^2/a^2-y^2/b^2}}dx\,dy
@@ -142,14 +196,15 @@ def yang_1992_shear_force(u_s, h, eta0, alpha, p_max, a_x, a_y, cap=np.inf):
 
     Args:
         u_s [m/s]; h [m] (Yang uses h_cen); eta0 [Pa s]; alpha [1/Pa]; p_max [Pa];
-        a_x, a_y: Hertz semi-axes [m]; cap: optional upper bound [N].
+        a_x, a_y: Hertz semi-axes [m]; cap: optional upper bound [N];
+        viscosity_law: "barus" (Yang) or "roelands".
 
     Returns:
         F [N] = min(F_visc, cap).
     """
-    A = non_negative("alpha", alpha) * non_negative("p_max", p_max)
     pre = _prefactor(u_s, h, eta0) * non_negative("a_x", a_x) * non_negative("a_y", a_y)
-    return out(capped_exp_product(pre, log_barus_ellipse_integral(A), cap))
+    log_k = _log_zone_integral(viscosity_law, p_max, eta0, alpha, "ellipse")
+    return out(capped_exp_product(pre, log_k, cap))
 
 
 FRICTION_MODELS = ("cap", "lambda", "lambda_cap")
@@ -174,7 +229,7 @@ def _combine(F_visc_fn, h, W, mu, model, sigma):
 
 
 def ball_1988_friction(u_s, h, eta0, alpha, p_max, b, L, W, mu=0.08, model="cap",
-                       sigma=0.2e-6):
+                       sigma=0.2e-6, viscosity_law="barus"):
     r"""Ball's cam/follower friction force for a line contact: viscous shear and boundary limit.
 
     Models (``model``):
@@ -192,18 +247,20 @@ def ball_1988_friction(u_s, h, eta0, alpha, p_max, b, L, W, mu=0.08, model="cap"
     Returns:
         F [N]. Reference: Ball (1988) §4.2.3.4.
     """
-    return _combine(lambda cap: ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap),
+    return _combine(lambda cap: ball_1988_shear_force(u_s, h, eta0, alpha, p_max, b, L, cap,
+                                                      viscosity_law),
                     h, W, mu, model, sigma)
 
 
 def yang_1992_friction(u_s, h, eta0, alpha, p_max, a_x, a_y, W, mu=0.08, model="cap",
-                       sigma=0.2e-6):
+                       sigma=0.2e-6, viscosity_law="barus"):
     """Yang's cam/follower friction for an elliptical contact: min(F_visc, mu W) by default.
 
     Same models as :func:`ball_1988_friction`, with F_visc from :func:`yang_1992_shear_force`.
     Reference: Yang (1992) §3.2.5 (limiting traction 0.08).
     """
-    return _combine(lambda cap: yang_1992_shear_force(u_s, h, eta0, alpha, p_max, a_x, a_y, cap),
+    return _combine(lambda cap: yang_1992_shear_force(u_s, h, eta0, alpha, p_max, a_x, a_y, cap,
+                                                      viscosity_law),
                     h, W, mu, model, sigma)
 
 

@@ -270,3 +270,33 @@ def test_fast_barus_line_integral_matches_closed_form():
     a = np.linspace(0.0, 39.999, 2001)
     fast = np.exp(cf.log_barus_line_integral(a))
     assert np.max(np.abs(fast / cf.barus_line_integral_closed_form(a) - 1.0)) < 1e-12
+
+
+@pytest.mark.parametrize("p_max", [1e6, 1e8, 5e8, 2e9])
+def test_roelands_zone_integrals_against_quadrature(p_max):
+    """Roelands (1966) integrated over a Hertz line and ellipse zone: the Gauss-Legendre
+    evaluation equals adaptive quadrature of the same integrand to 1e-10."""
+    eta0, alpha = 0.05, 22e-9
+
+    def ratio(p):
+        return float(cf.roelands(p, eta0, alpha=alpha) / eta0)
+
+    line = quad(lambda s: ratio(p_max * np.sqrt(1.0 - s * s)), -1.0, 1.0, epsabs=0,
+                epsrel=1e-12, limit=200)[0]
+    disc = 2 * np.pi * quad(lambda c: ratio(p_max * c) * c, 0.0, 1.0, epsabs=0,
+                            epsrel=1e-12, limit=200)[0]
+    assert np.exp(cf.log_roelands_line_integral(p_max, eta0, alpha)) == pytest.approx(line,
+                                                                                      rel=1e-10)
+    assert np.exp(cf.log_roelands_ellipse_integral(p_max, eta0, alpha)) == pytest.approx(disc,
+                                                                                         rel=1e-10)
+
+
+def test_roelands_matches_barus_at_low_pressure_and_falls_below_at_hertz_pressure():
+    """z is matched to alpha at p = 0, so the two laws agree as p_max -> 0; at cam-nose Hertz
+    pressures Roelands gives the lower viscosity (the reason it is offered)."""
+    eta0, alpha = 0.05, 22e-9
+    low, high = 1e4, 6e8
+    assert cf.log_roelands_line_integral(low, eta0, alpha) == pytest.approx(
+        cf.log_barus_line_integral(alpha * low), rel=1e-6)
+    assert cf.log_roelands_line_integral(high, eta0, alpha) < \
+        cf.log_barus_line_integral(alpha * high)
