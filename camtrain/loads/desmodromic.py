@@ -24,6 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from camtrain.loads.forces import contact_mask
+
 __all__ = ["DesmodromicLoads", "desmodromic_loads", "handover_angles"]
 
 
@@ -63,7 +65,7 @@ def desmodromic_loads(opening, closing, *, closing_spring: float, valve_mass: fl
         omega: camshaft speed [rad/s]; default ``opening.omega``.
     """
     w = opening.omega if omega is None else float(omega)
-    lifted = np.asarray(opening.valve_lift, dtype=float) > max(float(clearance), 0.0)
+    lifted = contact_mask(opening.valve_lift, clearance)   # same base-circle rule as other trains
     inertia = valve_mass * w * w * np.asarray(opening.valve_d2, dtype=float)
     force = np.where(lifted, inertia + closing_spring, 0.0)
     opening_drives = lifted & (force > 0.0)
