@@ -4,7 +4,6 @@ from __future__ import annotations
 import tomllib
 
 import pytest
-import tomli_w
 
 from camtrain.deck.load import load_deck_text, validate
 from camtrain.errors import InputError
@@ -63,7 +62,15 @@ def test_explicit_effect_missing_data_names_fields():
 
 
 def test_plan_is_resolved_without_computation():
-    """Resolving a plan touches no physics: it works on any valid deck instantly."""
-    raw = tomllib.loads(tomli_w.dumps(tomllib.loads(MINIMAL_DECK)))
-    plan = resolve(validate(raw))
-    assert plan.as_dict()["mode"] == "auto"
+    """Resolving a plan touches no physics: in a fresh process, loading a deck and resolving
+    its plan imports no lift, mechanism, formula or effect module (and not numpy)."""
+    import subprocess
+    import sys
+
+    code = ("import sys; from camtrain.deck.load import load_deck; from camtrain.scene import "
+            f"resolve; resolve(load_deck({str(DECKS / 'harrison_flat.toml')!r}).model); "
+            "print(','.join(m for m in sys.modules if m.startswith(('camtrain.lift', "
+            "'camtrain.mechanisms', 'camtrain.formulas', 'camtrain.effects', 'numpy'))))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == ""

@@ -38,6 +38,18 @@ _A = ((), (1 / 5,), (3 / 40, 9 / 40), (44 / 45, -56 / 15, 32 / 9),
 _E = (71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40)
 
 
+def diagram_rate(angle_rate, omega_journal) -> float:
+    """Rate [rad/s] at which the load-diagram angle advances: given, or the journal speed when
+    that is constant over the cycle."""
+    if angle_rate is None:
+        if np.ndim(omega_journal) != 0:
+            raise field_error("angle_rate", "required when omega_journal varies over the cycle")
+        angle_rate = abs(float(omega_journal))
+    if not (angle_rate > 0 and math.isfinite(angle_rate)):
+        raise field_error("angle_rate", "must be > 0 (the load diagram must advance)", angle_rate)
+    return float(angle_rate)
+
+
 def load_diagram(load_x, load_y, angle_grid, period: float, *speeds):
     """Validate a periodic load diagram; return float arrays (angles strictly increasing and
     spanning less than one ``period``) with the speeds broadcast to the grid."""
@@ -190,12 +202,7 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         raise field_error("max_cycles", "must be >= 2 (periodicity needs two cycles)", max_cycles)
     th, fx, fy, (wj, wb) = load_diagram(load_x, load_y, angle_grid, period,
                                         omega_journal, omega_bearing)
-    if angle_rate is None:
-        if np.ndim(omega_journal) != 0:
-            raise field_error("angle_rate", "required when omega_journal varies over the cycle")
-        angle_rate = abs(float(omega_journal))
-    if not (angle_rate > 0 and math.isfinite(angle_rate)):
-        raise field_error("angle_rate", "must be > 0 (the load diagram must advance)", angle_rate)
+    angle_rate = diagram_rate(angle_rate, omega_journal)
     wbar = 0.5 * (wj + wb)
     t = (th - th[0]) / angle_rate
     T = period / angle_rate

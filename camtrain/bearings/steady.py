@@ -16,7 +16,7 @@ from camtrain.errors import field_error
 from camtrain.formulas.bearings import ocvirk_attitude_angle, ocvirk_eccentricity
 
 from .geometry import JournalBearing
-from .orbit import _finish, load_diagram
+from .orbit import _finish, diagram_rate, load_diagram
 from .power import check_film, check_terms
 from .result import JournalOrbit
 
@@ -59,12 +59,7 @@ def steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jour
     film, terms = check_film(film), check_terms(terms)
     th, fx, fy, (wj, wb) = load_diagram(load_x, load_y, angle_grid, period, omega_journal,
                                         omega_bearing)
-    if angle_rate is None:
-        if np.ndim(omega_journal) != 0:
-            raise field_error("angle_rate", "required when omega_journal varies over the cycle")
-        angle_rate = abs(float(omega_journal))
-    if not (angle_rate > 0 and math.isfinite(angle_rate)):
-        raise field_error("angle_rate", "must be > 0", angle_rate)
+    angle_rate = diagram_rate(angle_rate, omega_journal)
     wbar = 0.5 * (wj + wb)
     e = np.atleast_1d(steady_eccentricity(bearing, np.hypot(fx, fy), wbar))
     att = np.atleast_1d(ocvirk_attitude_angle(e))

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_camshaft import bearing_geometry_problems
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
@@ -31,14 +32,7 @@ class BearingGeometry:
                                 example=0.01)
 
     def problems(self, path: str) -> list[Problem]:
-        out = []
-        if self.groove_width >= self.length:
-            out.append(Problem(f"{path}.groove_width", "is not shorter than the bearing",
-                               f"{from_si(self.groove_width, 'mm'):g} mm", "< length"))
-        if self.clearance >= 0.5 * self.diameter:
-            out.append(Problem(f"{path}.clearance", "is larger than the journal radius",
-                               f"{from_si(self.clearance, 'mm'):g} mm", "c << d/2"))
-        return out
+        return bearing_geometry_problems(self, path)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -29,6 +29,19 @@ class CamLobe:
         "half the V angle)", default=1)
 
 
+def bearing_geometry_problems(bearing, path: str) -> list[Problem]:
+    """Checks shared by every journal-bearing section (camshaft bearings, stand-alone bearing):
+    the groove must be shorter than the bearing, the clearance far below the journal radius."""
+    out = []
+    if bearing.groove_width >= bearing.length:
+        out.append(Problem(f"{path}.groove_width", "is not shorter than the bearing",
+                           mm_text(bearing.groove_width), f"< length ({mm_text(bearing.length)})"))
+    if bearing.clearance >= 0.5 * bearing.diameter:
+        out.append(Problem(f"{path}.clearance", "is larger than the journal radius",
+                           mm_text(bearing.clearance), "a radial clearance << d/2"))
+    return out
+
+
 @dataclass(frozen=True, kw_only=True)
 class CamBearing:
     """One plain camshaft bearing (short-bearing theory; a full central groove makes two lands)."""
@@ -43,14 +56,7 @@ class CamBearing:
         ge=0)
 
     def problems(self, path: str) -> list[Problem]:
-        out = []
-        if self.groove_width >= self.length:
-            out.append(Problem(f"{path}.groove_width", "is not shorter than the bearing",
-                               mm_text(self.groove_width), f"< length ({mm_text(self.length)})"))
-        if self.clearance >= 0.5 * self.diameter:
-            out.append(Problem(f"{path}.clearance", "is larger than the journal radius",
-                               mm_text(self.clearance), "a radial clearance << d/2"))
-        return out
+        return bearing_geometry_problems(self, path)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -51,7 +51,7 @@ def lift_columns(deck, result, points: int | None = None):
     i = int(np.argmax(curve.d2))
     result.add_metric("max_acceleration", curve.d2[i], "m/rad^2", "largest d2l/dtheta2",
                       theta[i])
-    _report_law_quality(law, result, float(np.max(np.abs(curve.d1))), deck.lift)
+    _report_law_quality(deck.lift, result, float(np.max(np.abs(curve.d1))))
     return law, curve
 
 
@@ -71,8 +71,9 @@ def _worth_warning(j, peak_velocity: float) -> bool:
     return j.label not in _RAMP_ENDS and abs(j.d1) > _VELOCITY_STEP_FRACTION * peak_velocity
 
 
-def _report_law_quality(law, result, peak_velocity: float, lift_model=None) -> None:
-    """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings."""
+def _report_law_quality(lift_model, result, peak_velocity: float) -> None:
+    """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings
+    (both computed once per lift model, see the caches above)."""
     jumps = _cached_jumps(lift_model)
     if jumps:
         for name, unit, what in (("lift", "m", "lift"), ("d1", "m/rad", "velocity"),
@@ -83,7 +84,7 @@ def _report_law_quality(law, result, peak_velocity: float, lift_model=None) -> N
         for j in jumps:
             if _worth_warning(j, peak_velocity):
                 result.warn(f"lift law is discontinuous: {j.describe()}")
-    if callable(getattr(law, "noise_estimate", None)):
+    if callable(getattr(_cached_law(lift_model), "noise_estimate", None)):
         est = _cached_noise(lift_model)
         result.add_metric("table_noise_velocity", est.d1, "m/rad",
                           "estimated RMS noise of the table-derived velocity")

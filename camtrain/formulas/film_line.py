@@ -31,13 +31,18 @@ __all__ = ["line_groups", "dowson_higginson_1977", "dowson_higginson_1966",
            "martin_1916", "dowson_dunn_taylor_1983", "rahnejat_1984"]
 
 
-def line_groups(w, R, u, eta0, alpha, E_r):
-    """Validated dimensionless groups (U, G, W) of a line contact; W may be None if w is."""
-    R, E_r = radius("R", R), positive("E_r", E_r)
+def speed_material_groups(R, u, eta0, alpha, E_r):
+    """U = eta0 |u| / (E' R) and G = alpha E' (Dowson-Higginson groups), for validated R, E'."""
     U = positive("eta0", eta0) * np.abs(arr(u)) / (E_r * R)
     if not np.all(np.isfinite(U)):
         raise ValueError("u must be finite")
-    G = non_negative("alpha", alpha) * E_r
+    return U, non_negative("alpha", alpha) * E_r
+
+
+def line_groups(w, R, u, eta0, alpha, E_r):
+    """Validated dimensionless groups (U, G, W) of a line contact; W may be None if w is."""
+    R, E_r = radius("R", R), positive("E_r", E_r)
+    U, G = speed_material_groups(R, u, eta0, alpha, E_r)
     W = None if w is None else non_negative("w", w) / (E_r * R)
     return U, G, W
 

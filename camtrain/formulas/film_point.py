@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._util import arr, check, non_negative, out, positive, radius, safe_exp
+from .film_line import speed_material_groups
 
 __all__ = ["point_groups", "hamrock_dowson_ellipticity", "hamrock_dowson_1977_min",
            "hamrock_dowson_1977_cen", "chittenden_1985_min", "chittenden_1985_cen"]
@@ -20,10 +21,7 @@ __all__ = ["point_groups", "hamrock_dowson_ellipticity", "hamrock_dowson_1977_mi
 def point_groups(W, Rx, u, eta0, alpha, E_r):
     """Validated (U, G, W) of a point contact referred to the entraining-direction radius."""
     Rx, E_r = radius("Rx", Rx), positive("E_r", E_r)
-    U = positive("eta0", eta0) * np.abs(arr(u)) / (E_r * Rx)
-    if not np.all(np.isfinite(U)):
-        raise ValueError("u must be finite")
-    G = non_negative("alpha", alpha) * E_r
+    U, G = speed_material_groups(Rx, u, eta0, alpha, E_r)
     Wd = None if W is None else non_negative("W", W) / (E_r * Rx**2)
     return U, G, Wd
 
