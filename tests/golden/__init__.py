@@ -1,0 +1,1 @@
+"""Golden (regression) files: every shipped deck's per-angle columns and metrics."""

@@ -1,0 +1,146 @@
+"""Regenerate the golden files of every shipped deck, and show what changed.
+
+    PYTHONPATH=. python -m tests.golden.regenerate            # review the differences only
+    PYTHONPATH=. python -m tests.golden.regenerate --write    # then write the new files
+
+Each deck ``decks/<name>.toml`` has two files in ``tests/golden/data``: ``<name>.json`` (plan,
+metrics with units and angles, column units and descriptions, warnings: readable and diffable
+with git) and ``<name>.npz`` (the per-angle columns at full precision). These are regression
+files, not validation: they pin what camtrain computed when they were written, so a change of any
+number is seen and must be explained in the commit that regenerates them.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+DECKS = ROOT / "decks"
+DATA = Path(__file__).resolve().parent / "data"
+
+#: relative tolerance of the comparison (issue: same numbers as before the rebuild to 1e-9)
+RTOL = 1e-9
+#: values this far below a column's largest magnitude are compared absolutely (round-off near 0)
+FLOOR = 1e-12
+
+
+def deck_paths() -> list[Path]:
+    return sorted(DECKS.glob("*.toml"))
+
+
+def snapshot(path: Path) -> tuple[dict, dict[str, np.ndarray]]:
+    """Run one deck; its readable part (dict) and its per-angle columns (name -> array)."""
+    import camtrain.api as ct
+
+    result = ct.run(path)
+    flat = flat_columns(result)
+    meta = {
+        "deck": path.name,
+        "plan": list(result.plan.chosen),
+        "metrics": {name: {"value": m.value, "unit": m.unit,
+                           "angle": m.angle} for name, m in flat_metrics(result).items()},
+        "columns": {name: {"unit": unit, "description": desc, "size": int(values.size)}
+                    for name, (values, unit, desc) in flat.items()},
+        "warnings": list(result.warnings),
+    }
+    arrays = {name: np.asarray(values, dtype=float) for name, (values, _, _) in flat.items()}
+    return meta, arrays
+
+
+def flat_columns(result) -> dict[str, tuple[np.ndarray, str, str]]:
+    """Every per-angle column under its flat output name (as in cycle.csv)."""
+    return {name: (c.values, c.unit, c.description) for name, c in result.columns.items()}
+
+
+def flat_metrics(result) -> dict:
+    return dict(result.metrics)
+
+
+def load(name: str) -> tuple[dict, dict[str, np.ndarray]]:
+    meta = json.loads((DATA / f"{name}.json").read_text())
+    with np.load(DATA / f"{name}.npz") as z:
+        arrays = {k: z[k] for k in z.files}
+    return meta, arrays
+
+
+def close(a, b) -> np.ndarray:
+    """Elementwise: |a - b| <= RTOL max(|b|, FLOOR max|b|) (NaN equal to NaN)."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    scale = np.nanmax(np.abs(b)) if b.size and np.any(np.isfinite(b)) else 0.0
+    tol = RTOL * np.maximum(np.abs(b), FLOOR * scale)
+    same = (a == b) | (np.abs(a - b) <= tol) | (np.isnan(a) & np.isnan(b))
+    return same
+
+
+def differences(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> list[str]:
+    """Human-readable differences between a fresh snapshot and the golden file of ``name``."""
+    if not (DATA / f"{name}.json").exists():
+        return [f"{name}: no golden file yet"]
+    gold_meta, gold_arrays = load(name)
+    out = []
+    for key in ("plan", "warnings"):
+        if meta[key] != gold_meta[key]:
+            out.append(f"{name}: {key} {gold_meta[key]!r} -> {meta[key]!r}")
+    for kind, new, old in (("column", meta["columns"], gold_meta["columns"]),
+                           ("metric", meta["metrics"], gold_meta["metrics"])):
+        for k in sorted(set(old) - set(new)):
+            out.append(f"{name}: {kind} {k!r} is gone")
+        for k in sorted(set(new) - set(old)):
+            out.append(f"{name}: new {kind} {k!r}")
+    for k in sorted(set(meta["metrics"]) & set(gold_meta["metrics"])):
+        new, old = meta["metrics"][k], gold_meta["metrics"][k]
+        if new["unit"] != old["unit"]:
+            out.append(f"{name}: metric {k!r} unit {old['unit']} -> {new['unit']}")
+        for part in ("value", "angle"):
+            a, b = new[part], old[part]
+            if (a is None) != (b is None) or (a is not None and not close(a, b).all()):
+                out.append(f"{name}: metric {k!r} {part} {b!r} -> {a!r}")
+    for k in sorted(set(meta["columns"]) & set(gold_meta["columns"])):
+        if meta["columns"][k]["unit"] != gold_meta["columns"][k]["unit"]:
+            out.append(f"{name}: column {k!r} unit {gold_meta['columns'][k]['unit']} -> "
+                       f"{meta['columns'][k]['unit']}")
+        a, b = arrays[k], gold_arrays[k]
+        if a.shape != b.shape:
+            out.append(f"{name}: column {k!r} shape {b.shape} -> {a.shape}")
+            continue
+        bad = ~close(a, b)
+        if bad.any():
+            rel = np.abs(a - b) / np.maximum(np.abs(b), 1e-300)
+            out.append(f"{name}: column {k!r} differs at {int(bad.sum())} of {b.size} points "
+                       f"(largest relative difference {np.nanmax(np.where(bad, rel, 0)):.3g})")
+    return out
+
+
+def write(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> None:
+    DATA.mkdir(parents=True, exist_ok=True)
+    (DATA / f"{name}.json").write_text(json.dumps(meta, indent=1, sort_keys=False) + "\n")
+    np.savez_compressed(DATA / f"{name}.npz", **arrays)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--write", action="store_true", help="write the new golden files")
+    parser.add_argument("decks", nargs="*", help="deck names (default: every shipped deck)")
+    args = parser.parse_args(argv)
+    paths = [p for p in deck_paths() if not args.decks or p.stem in args.decks]
+    changed = 0
+    for path in paths:
+        meta, arrays = snapshot(path)
+        diff = differences(path.stem, meta, arrays)
+        for line in diff:
+            print(line)
+        changed += bool(diff)
+        if args.write and diff:
+            write(path.stem, meta, arrays)
+            print(f"wrote {path.stem}")
+    print(f"{changed} of {len(paths)} decks differ from their golden files"
+          + ("" if args.write or not changed else "; --write to accept after review"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
