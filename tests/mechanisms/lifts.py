@@ -127,3 +127,39 @@ def desmo_lift(theta: np.ndarray) -> LiftCurve:
     # d/dz -> d/dtheta: z = span - |theta|, so odd derivatives take the factor -sign(theta)
     return LiftCurve(theta, out[0] * 1e-3, -sg * out[1] * k * 1e-3, out[2] * k ** 2 * 1e-3,
                      -sg * out[3] * k ** 3 * 1e-3)
+
+
+def pinto_nose_reference() -> dict[str, tuple[float, float]]:
+    """Pinto nose r_c, R, V_c/omega, V_f/omega [mm] derived from the App E data alone.
+
+    l'' at the nose comes from least-squares polynomial fits of the 4-decimal App E cam lift
+    (1 deg steps, symmetric to 0.0002 mm) over windows of +-3 to +-5 deg and degrees 4 to 6;
+    fits with fewer than two spare data points (interpolation in disguise) are left out. The
+    reference is the widest, lowest-degree fit (+-5 deg, degree 4: l'' = -12.89 mm/rad^2), the
+    tolerance the largest departure of any other fit of the family from it.
+
+    With the inspection roller radius equal to r_f the pad centre Q runs on the roller's pitch
+    curve, so the nose follows from plane geometry without the follower kinematics: the pitch
+    radius at the apex is rho = r^2 / (r - l''), r = r_B + r_i + l_max; r_c = rho - r_f;
+    1/R = 1/r_c + 1/r_f. At maximum valve lift gamma' = 0, so |dQ/dphi'| = |OQ| = r and Dyson's
+    (Ball App A.12, A.15, A.17) V_c/omega = r r_c / rho, V_f/omega = r_f (1 - r / rho).
+
+    Returns {name: (reference, tolerance)} in mm.
+    """
+    lift = np.array(PINTO_APP_E.split(), dtype=float)
+    deg = np.arange(-87.0, 117.0)
+    r_b, r_f = 15.0, 44.0
+
+    def nose(window: int, degree: int) -> np.ndarray:
+        inside = np.abs(deg) <= window
+        c = np.polynomial.polynomial.polyfit(np.radians(deg[inside]), lift[inside], degree)
+        r = r_b + r_f + c[0]
+        rho = r * r / (r - 2.0 * c[2])
+        r_c = rho - r_f
+        return np.array([r_c, r_c * r_f / (r_c + r_f), r * r_c / rho, r_f * (1.0 - r / rho)])
+
+    ref = nose(5, 4)
+    family = [nose(w, d) for w in (3, 4, 5) for d in (4, 5, 6) if 2 * w + 1 >= d + 3]
+    tol = np.max(np.abs(np.array(family) - ref), axis=0)
+    names = ("cam_radius", "equivalent_radius", "v_cam", "v_follower")
+    return {n: (float(v), float(t)) for n, v, t in zip(names, ref, tol, strict=True)}
