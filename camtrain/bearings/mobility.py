@@ -142,8 +142,9 @@ def mobility_booker(xi: float, mu: float) -> tuple[float, float]:
 
 
 def film_factor(eps: float, delta: float, film: str) -> float:
-    """Shear integral J_1^00: 2 pi/sqrt(1 - eps^2) for a full film (Yang eq. 1.22) or the integral
-    of 1/(1 + eps cos beta) over the loaded pi film (Yang eq. 1.21)."""
+    """Shear integral J_1^00: ``"2pi"`` 2 pi/sqrt(1 - eps^2) for a complete film (Martin 1985,
+    Yang eq. 1.22; Ball eq. 6.7), or ``"pi"`` Booker's (1965) integral of 1/(1 + eps cos beta)
+    over the loaded pi film only (Yang eq. 1.21)."""
     if film == "2pi":
         return _TWO_PI / math.sqrt(1.0 - eps * eps)
     return film_window_integrals(eps, delta + 0.5 * math.pi)[3]

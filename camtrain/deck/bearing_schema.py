@@ -97,8 +97,9 @@ class BearingSolver:
         "petroff (concentric power only)", default="mobility")
     mobility: Literal["exact", "booker"] = option(
         "Mobility: exact pi-film inversion or Booker's closed form", default="exact")
-    film: Literal["pi", "2pi"] = option("Shear film for power: pi (loaded half) or 2pi (full)",
-                                        default="pi")
+    film: Literal["pi", "2pi"] = option(
+        "Shear film for power: 2pi = complete film (Martin 1985, Yang eq. 1.22; Ball eq. 6.7) "
+        "or pi = loaded pi film only (Booker 1965, Yang eq. 1.21)", default="pi")
     terms: Literal["shear", "all"] = option(
         "Power terms: shear only, or shear plus the translatory (squeeze) term", default="shear")
     step_tolerance: float = quantity("Absolute error per time step on the eccentricity ratio",

@@ -119,8 +119,9 @@ class Camshaft:
         "Effective viscosity of the bearing oil; omit to use lubricant.viscosity", "Pa·s",
         default=None, gt=0)
     film: Literal["pi", "2pi"] = option(
-        "Shear film for bearing power: pi (loaded half, Ball) or 2pi (full film, Yang's grooved "
-        "pressure-fed bearings)", default="pi")
+        "Shear film for bearing power: 2pi = complete film (Martin 1985, Yang eq. 1.22; Ball's "
+        "eq. 6.7, used by Yang for his grooved pressure-fed bearings) or pi = shear over the "
+        "loaded pi film only (Booker 1965, Yang eq. 1.21; about half)", default="pi")
     method: Literal["mobility", "steady", "petroff"] = option(
         "Bearing model: mobility (Booker orbit), steady (quasi-static Ocvirk) or petroff "
         "(concentric power only)", default="mobility")

@@ -46,8 +46,11 @@ def martin_1985_shear_power(eta, omega, R, L, c, eps, film: str = "2pi"):
         \frac{2+\epsilon}{1+\epsilon}\,\omega^2
 
     Args:
-        film: ``"2pi"`` (complete film, shear only; Yang eq. 1.18, Ball eq. 6.7) or ``"pi"``
-            (pi film with shear in the cavitated region; Yang eq. 1.17).
+        film: ``"2pi"`` (complete film, shear only; Martin 1985 via Yang eq. 1.18, identical
+            to Ball eq. 6.7) or ``"pi"`` (Martin's steady pi film with shear in both the
+            converging and diverging regions; Yang eq. 1.17). Not to be confused with the
+            orbit power's ``film="pi"`` (Booker's loaded pi film, Yang eq. 1.21, in
+            :mod:`camtrain.bearings.power`).
 
     Returns:
         H [W]; eps = 0 with ``"2pi"`` equals :func:`petroff_power`.
