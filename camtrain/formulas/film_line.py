@@ -77,7 +77,8 @@ def dowson_higginson_1966(w, R, u, eta0, alpha, E_r):
        \;\Leftrightarrow\; h = 1.6\,\alpha^{0.6}(\eta_0 u)^{0.7} E'^{0.03} R^{0.43} w^{-0.13}
 
     Göçmen (2013) eq. 2.1 uses the dimensional form with speed |U/2| where U is already the mean
-    entraining speed (a second halving); reproduce his numbers by passing u = U_mean/2.
+    entraining speed (a second halving). His base-circle 0.0938 um is reproduced only by passing
+    u = U_mean/2 as he does literally; the standard mean speed gives 0.152 um.
 
     Returns:
         h_min [m]. Reference: Dowson & Higginson (1966) *Elasto-hydrodynamic Lubrication*,
