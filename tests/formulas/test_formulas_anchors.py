@@ -130,8 +130,9 @@ def test_gocmen_base_circle_film(printed):
     physically standard mean speed (no second halving) the same formula gives 0.152 um; camtrain's
     film effect never halves the speed twice (it uses the mean, or Ball's sum), so this is a
     check of the formula as printed, not of camtrain's film. The value is a hand computation
-    printed to 3 significant figures, so it is matched to half a unit in the last digit (+-0.00005 um, 5e-4 relative);
-    other variants: E* instead of E' gives 0.0918 um, camshaft 400 rev/min 0.0494 um.
+    printed to 3 significant figures, so it is matched to half a unit in the last digit
+    (+-0.00005 um, 5e-4 relative); other variants: E* instead of E' gives 0.0918 um,
+    camshaft 400 rev/min 0.0494 um.
     Base-circle Hertz: half-width 89.9 um, p0 230 MPa."""
     E = cf.reduced_modulus(170e9, 0.28, 170e9, 0.28)
     w, R, eta, alpha = 650.0 / 0.02, 0.018, 0.014, 14.3e-9
