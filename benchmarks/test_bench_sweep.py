@@ -1,29 +1,54 @@
-"""Sweep throughput (pytest-benchmark; run with `make bench`, never asserted in tests).
+"""Sweep throughput and memory: 1000 base-radius cases of decks/harrison_flat.toml as whole
+`camtrain sweep` processes, tables only (`make bench`; figures in docs/performance.md).
 
-A 1000-case camshaft-speed sweep of decks/harrison_flat.toml on 2 worker processes, tables only;
-the cases per second are reported in docs/performance.md.
+Floor: one process that imports numpy and runs the bare-numpy Harrison chain
+(``harrison_floor.py``) for the same 1000 base radii.
 """
 from __future__ import annotations
 
-from pathlib import Path
+import subprocess
+import sys
 
-from camtrain.study.runner import prepare, run_sweep
+import pytest
+from conftest import ROOT, note, paired, record
 
-DECK = Path(__file__).resolve().parent.parent / "decks" / "harrison_flat.toml"
-
-
-def test_bench_sweep_1000_speeds_2_jobs(benchmark, tmp_path):
-    sweep = prepare(DECK, [("speed", "range", "500:3500:1000")])
-
-    def once():
-        return run_sweep(sweep, tmp_path, jobs=2, plots=False)
-
-    outcome = benchmark.pedantic(once, rounds=1, iterations=1)
-    benchmark.extra_info["cases"] = len(outcome.records)
-    benchmark.extra_info["cases_per_second"] = len(outcome.records) / benchmark.stats.stats.mean
+DECK = str(ROOT / "decks" / "harrison_flat.toml")
+CASES = 1000
+FLOOR = ("import sys; sys.path.insert(0, 'benchmarks'); import numpy as np; "
+         "from harrison_floor import HARRISON, harrison_floor\n"
+         f"for r in np.linspace(14e-3, 22e-3, {CASES}): harrison_floor(720, dict(HARRISON, "
+         "base_radius=float(r)))")
+# Peak resident memory of the sweep and every worker it started (the largest single process).
+PEAK = ("import resource, subprocess, sys; subprocess.run(sys.argv[1:], check=True, "
+        "capture_output=True); print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
 
 
-def test_bench_sweep_100_speeds_serial(benchmark, tmp_path):
-    sweep = prepare(DECK, [("speed", "range", "500:3500:100")])
-    benchmark.pedantic(lambda: run_sweep(sweep, tmp_path, jobs=1, plots=False), rounds=1,
-                       iterations=1)
+def _sweep_cmd(out, jobs: int) -> list[str]:
+    return [sys.executable, "-m", "camtrain.cli", "sweep", DECK, "-p", "base_radius", "--range",
+            f"14:22:{CASES}", "--no-plots", "--quiet", "--jobs", str(jobs), "--out", str(out)]
+
+
+def _run(cmd):
+    return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT)
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_bench_sweep_1000(benchmark, tmp_path, jobs):
+    sweep = _run(_sweep_cmd(tmp_path / "out", jobs))
+    timing = paired(sweep, _run([sys.executable, "-c", FLOOR]), rounds=2, warmup=0)
+    record(benchmark, f"sweep, {CASES} cases, --jobs {jobs}, whole process", timing)
+    note(f"sweep, {CASES} cases, --jobs {jobs}: cases/s",
+         f"{CASES / timing['subject_median']:.0f}/s (floor {CASES / timing['floor_median']:.0f}/s)",
+         ">= 1000/s")
+    benchmark.extra_info["cases_per_second"] = CASES / timing["subject_median"]
+    benchmark.pedantic(sweep, rounds=1, iterations=1)
+
+
+def test_bench_sweep_peak_memory(benchmark, tmp_path):
+    cmd = [sys.executable, "-c", PEAK, *_sweep_cmd(tmp_path / "out", 2)]
+    out = benchmark.pedantic(lambda: subprocess.run(cmd, capture_output=True, check=True,
+                                                    cwd=ROOT, text=True).stdout,
+                             rounds=1, iterations=1)
+    mb = int(out.split()[-1]) / 1024.0
+    benchmark.extra_info["peak_rss_mb"] = mb
+    note(f"peak memory, {CASES}-case sweep (largest process)", f"{mb:.0f} MB", "<= 95 MB")

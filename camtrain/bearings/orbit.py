@@ -9,6 +9,11 @@ the right-hand side is smooth inside each step). A step whose stage or end point
 |eps| >= EPS_LIMIT is rejected and quartered before the mobility is evaluated there, so the
 eccentricity never reaches 1 (Yang's program halved the step on overshoot, §2.2). Cycles repeat
 until the grid samples of two successive cycles differ by no more than ``period_tol``.
+
+The march runs compiled (numba, :mod:`camtrain.bearings._orbit_kernel`, cached on disk); numba is
+imported only when an orbit is marched. The mobility is pluggable: the exact pi-film inversion,
+Booker's closed form, or a tabulated :class:`~camtrain.bearings.mobility_map.MobilityMap` (e.g. a
+finite-length bearing's).
 """
 from __future__ import annotations
 
@@ -19,7 +24,7 @@ import numpy as np
 from camtrain.errors import ConvergenceError, field_error
 
 from .geometry import JournalBearing
-from .mobility import mobility_booker, mobility_exact
+from .mobility_map import MobilityMap
 from .power import check_film, check_terms, shear_power
 from .result import JournalOrbit
 
@@ -28,14 +33,7 @@ __all__ = ["journal_orbit", "bearing_orbit", "load_diagram", "EPS_LIMIT", "MOBIL
 #: Largest eccentricity ratio a step may visit; the film is then c * 1e-12 thick.
 EPS_LIMIT = 1.0 - 1e-12
 MOBILITIES = ("exact", "booker")
-
-# Dormand-Prince 5(4) tableau.
-_C = (0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0)
-_A = ((), (1 / 5,), (3 / 40, 9 / 40), (44 / 45, -56 / 15, 32 / 9),
-      (19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729),
-      (9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656),
-      (35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84))
-_E = (71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40)
+_NO_TABLE = (np.zeros(2), np.zeros((2, 1)), np.zeros((2, 1)))
 
 
 def diagram_rate(angle_rate, omega_journal) -> float:
@@ -78,95 +76,9 @@ def load_diagram(load_x, load_y, angle_grid, period: float, *speeds):
     return th, fx, fy, out
 
 
-class _Field:
-    """d(eps)/dt for one bearing; keeps the last squeeze direction as a warm start."""
-
-    def __init__(self, bearing: JournalBearing, mobility: str, scale: float):
-        self.k = bearing.stiffness
-        self.exact = mobility == "exact"
-        self.scale = scale
-        self.delta = None
-
-    def squeeze(self, ex, ey, wx, wy, wbar):
-        """Mobility velocity w (1/s) and its direction from the line of centres."""
-        load = math.hypot(wx, wy)
-        e = math.hypot(ex, ey)
-        if load == 0.0:
-            return 0.0, 0.0, -math.copysign(0.5 * math.pi, wbar or 1.0)
-        lam = math.atan2(wy, wx)
-        psi = math.atan2(ey, ex) if e > 0.0 else lam
-        if self.exact:
-            tau = math.remainder(lam - psi, 2.0 * math.pi)
-            delta, m = mobility_exact(e, tau, self.delta)
-            self.delta = delta
-            speed = self.scale * m * load / self.k
-            ang = psi + delta
-            return speed * math.cos(ang), speed * math.sin(ang), delta
-        # Booker's closed form in the load frame (Yang eqs 1.15, 1.16): xi along W, mu normal
-        # to it in the sense of wbar.
-        s = 1.0 if wbar >= 0.0 else -1.0
-        ux, uy = wx / load, wy / load
-        nx, ny = -s * uy, s * ux
-        mxi, mmu = mobility_booker(ex * ux + ey * uy, ex * nx + ey * ny)
-        g = self.scale * 2.0 * load / self.k
-        vx, vy = g * (mxi * ux + mmu * nx), g * (mxi * uy + mmu * ny)
-        return vx, vy, math.remainder(math.atan2(vy, vx) - psi, 2.0 * math.pi)
-
-    def __call__(self, ex, ey, wx, wy, wbar):
-        vx, vy, _ = self.squeeze(ex, ey, wx, wy, wbar)
-        return vx - wbar * ey, vy + wbar * ex
-
-
-def _march(f: _Field, y, t0, dt, p0, p1, h, tol, budget):
-    """Integrate one grid interval of length dt; p0/p1 are (Wx, Wy, wbar) at its ends.
-
-    Returns (y_end, last step, steps used)."""
-    ex, ey = y
-    t, used = 0.0, 0
-    slope = [(b - a) / dt for a, b in zip(p0, p1, strict=True)]
-
-    def rhs(tt, x, yv):
-        return f(x, yv, *(a + s * tt for a, s in zip(p0, slope, strict=True)))
-
-    k1 = rhs(0.0, ex, ey)
-    while t < dt:
-        if used >= budget:
-            raise ConvergenceError(
-                f"journal orbit: step budget ({budget}) exhausted at t = {t0 + t:.6g} s, "
-                f"eps = {math.hypot(ex, ey):.12f}; loosen tol or check the load units")
-        used += 1
-        h = min(h, dt - t)
-        if dt - t - h < 1e-12 * dt:
-            h = dt - t
-        ks = [k1]
-        ok = True
-        for i in range(1, 7):
-            a = _A[i]
-            xs = ex + h * sum(a[j] * ks[j][0] for j in range(i))
-            ys = ey + h * sum(a[j] * ks[j][1] for j in range(i))
-            if math.hypot(xs, ys) >= EPS_LIMIT:
-                ok = False
-                break
-            ks.append(rhs(t + _C[i] * h, xs, ys))
-        if not ok:
-            h *= 0.25
-            continue
-        # ks[6] was evaluated at the 5th-order solution (FSAL).
-        x5, y5 = xs, ys
-        errx = h * sum(c * k[0] for c, k in zip(_E, ks, strict=False))
-        erry = h * sum(c * k[1] for c, k in zip(_E, ks, strict=False))
-        err = max(abs(errx), abs(erry)) / tol
-        if err <= 1.0:
-            t += h
-            ex, ey = x5, y5
-            k1 = ks[6]
-        h *= min(5.0, max(0.2, 0.9 * (err + 1e-300) ** -0.2))
-    return (ex, ey), h, used
-
-
 def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_journal,
                   omega_bearing=0.0, *, angle_rate=None, period: float = 2.0 * math.pi,
-                  film: str = "pi", terms: str = "shear", mobility: str = "exact",
+                  film: str = "pi", terms: str = "shear", mobility: str | MobilityMap = "exact",
                   mobility_scale: float = 1.0, tol: float = 1e-7, period_tol: float = 1e-5,
                   max_cycles: int = 20, start: str = "steady",
                   max_steps_per_cycle: int = 200_000) -> JournalOrbit:
@@ -181,7 +93,8 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         period: angle of one load cycle [rad] (2 pi for a camshaft, 4 pi for a 4-stroke crank).
         film: shear film for power, "pi" (Yang eq. 1.21) or "2pi" (eq. 1.22).
         terms: "shear" or "all" (shear + translatory, Yang eq. 1.23).
-        mobility: "exact" pi-film inversion (Ball's recipe) or "booker" (Yang eqs 1.15/1.16).
+        mobility: "exact" pi-film inversion (Ball's recipe), "booker" (Yang eqs 1.15/1.16) or a
+            :class:`~camtrain.bearings.mobility_map.MobilityMap` (e.g. a finite-length map).
         mobility_scale: multiplies the mobility; 0.5 mimics Yang's program (reference note,
             Yang §4.6 reproduction), 1.0 is the physics.
         tol: absolute error per step on eps (resolution knob).
@@ -190,8 +103,9 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         start: "steady" (quasi-static eps at the first angle) or "centre" (eps = 0, Yang).
     """
     film, terms = check_film(film), check_terms(terms)
-    if mobility not in MOBILITIES:
-        raise field_error("mobility", "unknown mobility", mobility, " or ".join(MOBILITIES))
+    if not isinstance(mobility, MobilityMap) and mobility not in MOBILITIES:
+        raise field_error("mobility", "unknown mobility", mobility,
+                          " or ".join(MOBILITIES) + " or a MobilityMap")
     if start not in ("steady", "centre"):
         raise field_error("start", "unknown start", start, "steady or centre")
     if not (mobility_scale > 0 and math.isfinite(mobility_scale)):
@@ -206,40 +120,39 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
     wbar = 0.5 * (wj + wb)
     t = (th - th[0]) / angle_rate
     T = period / angle_rate
-    n = th.size
-    f = _Field(bearing, mobility, mobility_scale)
-    if start == "steady":
-        from .steady import steady_eccentricity_vector
-        y = steady_eccentricity_vector(bearing, fx[0], fy[0], wbar[0])
-    else:
-        y = (0.0, 0.0)
-    pts = [(fx[i], fy[i], wbar[i]) for i in range(n)]
     dts = np.append(np.diff(t), T - t[-1])
-    h = float(dts[0])
-    prev = None
-    change = math.inf
-    cycles = 0
-    for cycles in range(1, int(max_cycles) + 1):  # noqa: B007 (count reported)
-        cur = np.empty((n, 2))
-        budget = max_steps_per_cycle
-        for i in range(n):
-            cur[i] = y
-            y, h, used = _march(f, y, float(t[i]), float(dts[i]), pts[i], pts[(i + 1) % n], h,
-                                tol, budget)
-            budget -= used
-            h = max(h, 1e-9 * float(dts[i]))
-        if prev is not None:
-            change = float(np.max(np.hypot(*(cur - prev).T)))
-            if change <= period_tol:
-                break
-        prev = cur
-    if change > period_tol:
+    from . import _orbit_kernel as K
+
+    y = (0.0, 0.0)
+    if start == "steady":  # a grooved bearing carries half the load on each land
+        ocvirk_k = bearing.viscosity * bearing.radius * bearing.land ** 3 / (
+            2.0 * bearing.clearance ** 2) * (2.0 if bearing.grooved else 1.0)
+        y = K.steady_start(float(fx[0]), float(fy[0]), float(wbar[0]), ocvirk_k)
+
+    if isinstance(mobility, MobilityMap):
+        kind, gain, table, label = K.TABLE, mobility_scale * mobility.gain(bearing), \
+            (mobility.eps, mobility.m_xi, mobility.m_mu), mobility.name
+    else:
+        kind = K.EXACT if mobility == "exact" else K.BOOKER
+        gain = mobility_scale * (1.0 if mobility == "exact" else 2.0) / bearing.stiffness
+        table, label = _NO_TABLE, mobility
+    cur, vel, cycles, change, status, t_fail, e_fail = K.march_orbit(
+        fx, fy, wbar, t, dts, float(y[0]), float(y[1]), kind, float(gain), float(tol),
+        float(period_tol), int(max_cycles), int(max_steps_per_cycle), EPS_LIMIT, *table)
+    if status == K.BUDGET:
+        raise ConvergenceError(
+            f"journal orbit: step budget ({max_steps_per_cycle} per cycle) exhausted at "
+            f"t = {t_fail:.6g} s, eps = {e_fail:.12f}; loosen tol or check the load units")
+    if status == K.OFF_MAP:
+        raise ConvergenceError(
+            f"journal orbit left the mobility map at t = {t_fail:.6g} s: eps = {e_fail:.6f} "
+            f"> {mobility.eps[-1]:.6f}, the map's largest eccentricity; extend the map")
+    if status == K.NOT_PERIODIC:
         raise ConvergenceError(
             f"journal orbit not periodic after {cycles} cycles: change {change:.3g} > "
             f"period_tol {period_tol:.3g}; raise max_cycles or period_tol")
-    vel = np.array([f.squeeze(cur[i, 0], cur[i, 1], fx[i], fy[i], wbar[i]) for i in range(n)])
     return _finish(bearing, th, t, T, fx, fy, cur[:, 0], cur[:, 1], vel, wj - wb, film, terms,
-                   f"mobility-{mobility}", cycles, change, True)
+                   f"mobility-{label}", cycles, change, True)
 
 
 def _finish(bearing, th, t, T, fx, fy, ex, ey, vel, wrel, film, terms, method, cycles, change,

@@ -1,0 +1,271 @@
+"""Compiled march of the journal orbit: one numba kernel, cached on disk (``cache=True``).
+
+The algorithm is the one documented in :mod:`camtrain.bearings.orbit` (embedded Dormand-Prince
+5(4), interval by interval along the load grid, steps that would reach EPS_LIMIT quartered, cycles
+until two agree to ``period_tol``); the mobilities are those of :mod:`camtrain.bearings.mobility`
+(exact pi-film inversion, Booker's closed form) plus a tabulated map
+(:class:`camtrain.bearings.mobility_map.MobilityMap`). Only this module imports numba, and only
+decks that march an orbit import this module, so the CLI start of other decks does not pay for
+numba. Errors come back as status codes; the Python side turns them into ConvergenceError.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+EXACT, BOOKER, TABLE = 0, 1, 2
+OK, BUDGET, NOT_PERIODIC, OFF_MAP = 0, 1, 2, 3
+
+_TWO_PI = 2.0 * math.pi
+_HALF_PI = 0.5 * math.pi
+
+# Dormand-Prince 5(4) tableau (rows of A padded with zeros).
+_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
+_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
+    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
+    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
+    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
+    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+_E = np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40])
+
+
+@njit(cache=True, error_model="numpy")
+def _remainder(x, y):
+    """IEEE remainder x - y rint(x / y) (math.remainder)."""
+    return x - y * np.rint(x / y)
+
+
+@njit(cache=True, error_model="numpy")
+def _sommerfeld(beta, eps, k):
+    """Sommerfeld angle gamma(beta) (mobility._sommerfeld) with its sine and cosine, formed from
+    the half-angle vector (k sin(beta/2), cos(beta/2)) without further trigonometry."""
+    m = np.rint(beta / _TWO_PI)
+    b0 = beta - _TWO_PI * m
+    s, c = k * math.sin(0.5 * b0), math.cos(0.5 * b0)
+    r2 = s * s + c * c
+    return 2.0 * math.atan2(s, c) + _TWO_PI * m, 2.0 * s * c / r2, (c * c - s * s) / r2
+
+
+@njit(cache=True, error_model="numpy")
+def _kd(eps, delta):
+    """K d and det K in the line-of-centres frame (mobility._kd, pi film)."""
+    a = delta + _HALF_PI
+    k = math.sqrt((1.0 - eps) / (1.0 + eps))
+    g0, s0, c0 = _sommerfeld(a, eps, k)
+    g1, s1, c1 = _sommerfeld(a + math.pi, eps, k)
+    q = 1.0 - eps * eps
+    dg = g1 - g0
+    d2 = 0.5 * (s1 * c1 - s0 * c0)
+    icc = (0.5 * dg + d2 - 2.0 * eps * (s1 - s0) + eps * eps * dg) / q ** 2.5
+    ics = (0.5 * (s1 * s1 - s0 * s0) + eps * (c1 - c0)) / q ** 2
+    iss = (0.5 * dg - d2) / q ** 1.5
+    cd, sd = math.cos(delta), math.sin(delta)
+    return icc * cd + ics * sd, ics * cd + iss * sd, icc * iss - ics * ics
+
+
+@njit(cache=True, error_model="numpy")
+def _mobility_exact(eps, tau, delta0, warm):
+    """(delta, m) of mobility.mobility_exact (safeguarded Newton, tol 1e-13)."""
+    tol = 1e-13
+    lo, hi = tau - _HALF_PI, tau + _HALF_PI
+    x = delta0 if (warm and lo < delta0 < hi) else tau
+    ct, st = math.cos(tau), math.sin(tau)
+    for _ in range(100):
+        fx, fy, det = _kd(eps, x)
+        g = math.atan2(ct * fy - st * fx, ct * fx + st * fy)
+        if g > 0.0:
+            hi = x
+        else:
+            lo = x
+        if abs(g) < tol:
+            return x, 1.0 / math.hypot(fx, fy)  # K d at this x is already known
+        xn = x - g * (fx * fx + fy * fy) / det
+        x = xn if lo < xn < hi else 0.5 * (lo + hi)
+        if hi - lo < tol:
+            break
+    fx, fy, _ = _kd(eps, x)
+    return x, 1.0 / math.hypot(fx, fy)
+
+
+@njit(cache=True, error_model="numpy")
+def _table(xi, mu, t_eps, t_mxi, t_mmu):
+    """Bilinear (eps, angle) interpolation of a tabulated map in the load frame; the angle grid
+    is uniform over one turn, periodic. Returns (M_xi, M_mu, inside)."""
+    r = math.hypot(xi, mu)
+    n = t_eps.size
+    if r > t_eps[n - 1]:
+        return 0.0, 0.0, False
+    i = min(max(np.searchsorted(t_eps, r, side="right") - 1, 0), n - 2)
+    u = (r - t_eps[i]) / (t_eps[i + 1] - t_eps[i])
+    nphi = t_mxi.shape[1]
+    phi = math.atan2(mu, xi) % _TWO_PI
+    s = phi * nphi / _TWO_PI
+    j = int(math.floor(s))
+    v = s - j
+    j %= nphi
+    j1 = (j + 1) % nphi
+    mxi = ((1 - u) * ((1 - v) * t_mxi[i, j] + v * t_mxi[i, j1])
+           + u * ((1 - v) * t_mxi[i + 1, j] + v * t_mxi[i + 1, j1]))
+    mmu = ((1 - u) * ((1 - v) * t_mmu[i, j] + v * t_mmu[i, j1])
+           + u * ((1 - v) * t_mmu[i + 1, j] + v * t_mmu[i + 1, j1]))
+    return mxi, mmu, True
+
+
+@njit(cache=True, error_model="numpy")
+def _squeeze(ex, ey, wx, wy, wbar, kind, gain, state, t_eps, t_mxi, t_mmu):
+    """Mobility velocity (1/s) and its angle from the line of centres; ``state`` holds the
+    exact mobility's warm start [delta, has_delta] and the off-map flag."""
+    load = math.hypot(wx, wy)
+    e = math.hypot(ex, ey)
+    if load == 0.0:
+        return 0.0, 0.0, -math.copysign(_HALF_PI, wbar if wbar != 0.0 else 1.0)
+    lam = math.atan2(wy, wx)
+    psi = math.atan2(ey, ex) if e > 0.0 else lam
+    if kind == EXACT:
+        tau = _remainder(lam - psi, _TWO_PI)
+        delta, m = _mobility_exact(e, tau, state[0], state[1] > 0.0)
+        state[0] = delta
+        state[1] = 1.0
+        speed = gain * m * load
+        ang = psi + delta
+        return speed * math.cos(ang), speed * math.sin(ang), delta
+    s = 1.0 if wbar >= 0.0 else -1.0
+    ux, uy = wx / load, wy / load
+    nx, ny = -s * uy, s * ux
+    xi, mu = ex * ux + ey * uy, ex * nx + ey * ny
+    if kind == BOOKER:
+        q = 1.0 - xi
+        mxi, mmu = q ** 2.5 / math.pi, -4.0 * mu * q ** 1.5 / math.pi ** 2
+    else:
+        mxi, mmu, inside = _table(xi, mu, t_eps, t_mxi, t_mmu)
+        if not inside:
+            state[2] = 1.0
+    g = gain * load
+    vx, vy = g * (mxi * ux + mmu * nx), g * (mxi * uy + mmu * ny)
+    return vx, vy, _remainder(math.atan2(vy, vx) - psi, _TWO_PI)
+
+
+@njit(cache=True, error_model="numpy")
+def _rhs(tt, x, y, p0, slope, kind, gain, state, t_eps, t_mxi, t_mmu):
+    wx = p0[0] + slope[0] * tt
+    wy = p0[1] + slope[1] * tt
+    wb = p0[2] + slope[2] * tt
+    vx, vy, _ = _squeeze(x, y, wx, wy, wb, kind, gain, state, t_eps, t_mxi, t_mmu)
+    return vx - wb * y, vy + wb * x
+
+
+@njit(cache=True, error_model="numpy")
+def steady_start(wx, wy, wbar, ocvirk_k):
+    """Quasi-static eps vector for the load (wx, wy): the Ocvirk load inverted by the 64-step
+    bisection of formulas.bearings.ocvirk_eccentricity, turned by the Ocvirk attitude angle in
+    the sense of wbar (steady.steady_eccentricity_vector). ``ocvirk_k`` = eta r land^3 / (2 c^2)
+    per land (the Ocvirk load at journal speed 2 |wbar| is |wbar| ocvirk_k shape(eps))."""
+    load = math.hypot(wx, wy)
+    if load == 0.0 or wbar == 0.0:
+        return 0.0, 0.0
+    target = load / (abs(wbar) * ocvirk_k)
+    lo, hi = 0.0, 1.0
+    top = np.nextafter(1.0, 0.0)
+    for _ in range(64):
+        mid = min(0.5 * (lo + hi), top)
+        q = 1.0 - mid ** 2
+        if mid / q ** 2 * math.sqrt(math.pi ** 2 * q + 16.0 * mid ** 2) > target:
+            hi = mid
+        else:
+            lo = mid
+    e = 0.5 * (lo + hi)
+    att = math.atan2(math.pi * math.sqrt(1.0 - e ** 2), 4.0 * e)
+    ang = math.atan2(wy, wx) + math.copysign(att, wbar)
+    return e * math.cos(ang), e * math.sin(ang)
+
+
+@njit(cache=True, error_model="numpy")
+def march_orbit(fx, fy, wbar, t, dts, y0x, y0y, kind, gain, tol, period_tol, max_cycles,
+                max_steps, eps_limit, t_eps, t_mxi, t_mmu):
+    """Periodic orbit on the load grid.
+
+    Returns (eps (n, 2), squeeze (n, 3) = [vx, vy, delta] at the grid points, cycles, change,
+    status, time and |eps| where a march failed).
+    """
+    n = t.size
+    state = np.zeros(3)
+    cur = np.empty((n, 2))
+    prev = np.empty((n, 2))
+    ks = np.empty((7, 2))
+    p0 = np.empty(3)
+    slope = np.empty(3)
+    ex, ey = y0x, y0y
+    h = dts[0]
+    change = np.inf
+    cycles = 0
+    for cyc in range(1, max_cycles + 1):
+        cycles = cyc
+        budget = max_steps
+        for i in range(n):
+            cur[i, 0], cur[i, 1] = ex, ey
+            j = (i + 1) % n
+            dt = dts[i]
+            p0[0], p0[1], p0[2] = fx[i], fy[i], wbar[i]
+            slope[0] = (fx[j] - fx[i]) / dt
+            slope[1] = (fy[j] - fy[i]) / dt
+            slope[2] = (wbar[j] - wbar[i]) / dt
+            tl, used = 0.0, 0
+            k1x, k1y = _rhs(0.0, ex, ey, p0, slope, kind, gain, state, t_eps, t_mxi, t_mmu)
+            while tl < dt:
+                if used >= budget:
+                    return cur, np.empty((0, 3)), cycles, change, BUDGET, t[i] + tl, \
+                        math.hypot(ex, ey)
+                used += 1
+                h = min(h, dt - tl)
+                if dt - tl - h < 1e-12 * dt:
+                    h = dt - tl
+                ks[0, 0], ks[0, 1] = k1x, k1y
+                ok = True
+                xs, ys = ex, ey
+                for st in range(1, 7):
+                    sx, sy = 0.0, 0.0
+                    for q in range(st):
+                        sx += _A[st, q] * ks[q, 0]
+                        sy += _A[st, q] * ks[q, 1]
+                    xs, ys = ex + h * sx, ey + h * sy
+                    if math.hypot(xs, ys) >= eps_limit:
+                        ok = False
+                        break
+                    ks[st, 0], ks[st, 1] = _rhs(tl + _C[st] * h, xs, ys, p0, slope, kind, gain,
+                                                state, t_eps, t_mxi, t_mmu)
+                if state[2] > 0.0:
+                    return cur, np.empty((0, 3)), cycles, change, OFF_MAP, t[i] + tl, \
+                        math.hypot(xs, ys)
+                if not ok:
+                    h *= 0.25
+                    continue
+                errx, erry = 0.0, 0.0
+                for q in range(7):
+                    errx += _E[q] * ks[q, 0]
+                    erry += _E[q] * ks[q, 1]
+                err = max(abs(h * errx), abs(h * erry)) / tol
+                if err <= 1.0:
+                    tl += h
+                    ex, ey = xs, ys
+                    k1x, k1y = ks[6, 0], ks[6, 1]
+                h *= min(5.0, max(0.2, 0.9 * (err + 1e-300) ** -0.2))
+            budget -= used
+            h = max(h, 1e-9 * dt)
+        if cyc > 1:
+            change = 0.0
+            for i in range(n):
+                change = max(change, math.hypot(cur[i, 0] - prev[i, 0], cur[i, 1] - prev[i, 1]))
+            if change <= period_tol:
+                break
+        prev[:, :] = cur
+    vel = np.empty((n, 3))
+    for i in range(n):
+        vel[i, 0], vel[i, 1], vel[i, 2] = _squeeze(cur[i, 0], cur[i, 1], fx[i], fy[i], wbar[i],
+                                                   kind, gain, state, t_eps, t_mxi, t_mmu)
+    status = OK if change <= period_tol else NOT_PERIODIC
+    return cur, vel, cycles, change, status, 0.0, 0.0
