@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from conftest import ROOT, note
+from conftest import ENV, ROOT, note
 
 from camtrain import api
 
@@ -57,12 +57,11 @@ print(first, warm)
 def test_bench_orbit_first_call(benchmark, tmp_path):
     """First orbit of a process: compiling the kernel (empty numba cache) and loading it from
     the on-disk cache, reported apart from the warm orbit."""
-    import os
     import subprocess
     import sys
 
     def first_call(cache):
-        env = dict(os.environ, NUMBA_CACHE_DIR=str(cache))
+        env = dict(ENV, NUMBA_CACHE_DIR=str(cache))
         out = subprocess.run([sys.executable, "-c", _FIRST_CALL], capture_output=True,
                              check=True, text=True, env=env, cwd=ROOT).stdout.split()
         return float(out[0]) - float(out[1])

@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 import pytest
-from conftest import ROOT, paired, record
+from conftest import ENV, ROOT, paired, record
 from harrison_floor import harrison_floor
 
 from camtrain import api
@@ -36,7 +36,7 @@ def test_bench_chain(benchmark, points, target):
 
 def _process(*args: str):
     cmd = [sys.executable, *args]
-    return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT)
+    return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT, env=ENV)
 
 
 def test_bench_run_process(benchmark, tmp_path):

@@ -10,7 +10,7 @@ import subprocess
 import sys
 
 import pytest
-from conftest import ROOT, note, paired, record
+from conftest import ENV, ROOT, note, paired, record
 
 DECK = str(ROOT / "decks" / "harrison_flat.toml")
 CASES = 1000
@@ -29,7 +29,7 @@ def _sweep_cmd(out, jobs: int) -> list[str]:
 
 
 def _run(cmd):
-    return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT)
+    return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT, env=ENV)
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
@@ -47,7 +47,7 @@ def test_bench_sweep_1000(benchmark, tmp_path, jobs):
 def test_bench_sweep_peak_memory(benchmark, tmp_path):
     cmd = [sys.executable, "-c", PEAK, *_sweep_cmd(tmp_path / "out", 2)]
     out = benchmark.pedantic(lambda: subprocess.run(cmd, capture_output=True, check=True,
-                                                    cwd=ROOT, text=True).stdout,
+                                                    cwd=ROOT, text=True, env=ENV).stdout,
                              rounds=1, iterations=1)
     mb = int(out.split()[-1]) / 1024.0
     benchmark.extra_info["peak_rss_mb"] = mb

@@ -12,7 +12,6 @@ only remedy is a finer grid.
 from __future__ import annotations
 
 import numpy as np
-from scipy.integrate import simpson
 
 from ._util import arr, out
 
@@ -80,5 +79,7 @@ def cycle_mean(values, axis: int = -1, method: str = "trapezoid", closed: bool =
         n = ring.shape[-1] - 1
         if n % 2:
             raise ValueError(f"Simpson's rule needs an even number of intervals, got {n}")
+        from scipy.integrate import simpson
+
         return out(simpson(ring, dx=1.0 / n, axis=-1))
     raise ValueError("method must be 'trapezoid' or 'simpson'")

@@ -10,7 +10,6 @@ the float range.
 from __future__ import annotations
 
 import numpy as np
-from scipy.special import iv, ive, modstruve
 
 from ._util import arr, capped_exp_product, check, non_negative, out, positive, safe_divide, safe_exp
 from .viscosity import ROELANDS_ETA_INF, ROELANDS_P_R, roelands_z
@@ -38,6 +37,8 @@ def barus_line_integral_closed_form(a):
     r"""J(a) = pi [I_1(a) + L_1(a)] + 2 (Ball 1988 eq. 4.7 corrected, closed form); the reference
     the fast quadrature of :func:`log_barus_line_integral` is tested against (overflows above
     a ~ 700)."""
+    from scipy.special import iv, modstruve
+
     a = non_negative("a", a)
     return out(np.pi * (iv(1, a) + modstruve(1, a)) + 2.0)
 
@@ -56,7 +57,10 @@ def log_barus_line_integral(a):
     a_lo = a[small]
     result[small] = np.log(np.exp(np.multiply.outer(a_lo, _GL_COS)) @ _GL_WEIGHTS)
     a_hi = a[~small]
-    result[~small] = np.log(2.0 * np.pi * ive(1, a_hi)) + a_hi
+    if a_hi.size:  # scipy.special only when a contact is this heavily loaded
+        from scipy.special import ive
+
+        result[~small] = np.log(2.0 * np.pi * ive(1, a_hi)) + a_hi
     return out(result)
 
 

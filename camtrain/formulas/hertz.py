@@ -17,7 +17,6 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import ellipe, ellipkm1, elliprd
 
 from ._util import arr, non_negative, out, positive, radius
 
@@ -107,6 +106,8 @@ def _one_minus_gamma(p):
     1 - Gamma = 2 p (K - E) / (m E) = (2/3) p R_D(0, p, 1) / E(m), using K - E = (m/3) R_D(0, 1-m, 1)
     (DLMF 19.25.1), which has no cancellation at either end (p -> 0 line-like, p -> 1 circular).
     """
+    from scipy.special import ellipe, elliprd
+
     return (2.0 / 3.0) * p * elliprd(0.0, p, 1.0) / ellipe(1.0 - p)
 
 
@@ -204,6 +205,8 @@ def hertz_point(W, Rx, Ry, E_r, method: str = "exact") -> HertzPoint:
     if method == "exact":
         k = arr(ellipticity_exact(small, big))  # R_y argument largest, so k >= 1
         p = 1.0 / k**2
+        from scipy.special import ellipe, ellipkm1
+
         E, F = ellipe(1.0 - p), ellipkm1(p)
     elif method in HERTZ_POINT_METHODS:
         k, E, F = _approx_integrals(big / small, method)

@@ -14,7 +14,6 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import gamma, pbdv
 
 from ._util import arr, check, non_negative, out, positive
 
@@ -44,6 +43,8 @@ def greenwood_tripp_function(lam, n):
         raise ValueError("lambda must be finite")
     far = lam > _LAMBDA_ZERO
     lc = np.where(far, 0.0, lam)
+    from scipy.special import gamma, pbdv
+
     d, _ = pbdv(-float(n) - 1.0, lc)
     val = gamma(n + 1.0) / np.sqrt(2.0 * np.pi) * np.exp(-lc**2 / 4.0) * d
     return out(np.where(far, 0.0, val))

@@ -13,7 +13,6 @@ integrals in :mod:`.friction`, which combine the exponent with the boundary cap 
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from camtrain.errors import field_error
 
@@ -184,6 +183,8 @@ def vogel_fit(T, eta):
         d1, d2 = T[1] - T[0], T[2] - T[1]
         c = (d1 * T[2] - q * d2 * T[0]) / (d1 - q * d2)
     else:
+        from scipy.optimize import minimize_scalar
+
         c = minimize_scalar(lambda c: solve_ab(c)[1], bounds=(0.0, T[0] - 1e-6),
                             method="bounded", options={"xatol": 1e-10}).x
     if not c < T[0]:

@@ -19,7 +19,6 @@ from collections.abc import Sequence
 
 import numpy as np
 from numpy.polynomial import polynomial as P
-from scipy.optimize import brentq
 
 from camtrain.lift import _checks as chk
 from camtrain.lift.base import TWO_PI, LiftLaw
@@ -87,6 +86,8 @@ class ExpPolyLift(LiftLaw):
                            "revolution", None,
                            f"a single lift event falling below the {chk.shown(c, 'length')} mm "
                            "cut-off within +-180 deg of the nose")
+        from scipy.optimize import brentq  # only exp_poly decks pay for scipy.optimize
+
         f = lambda t: P.polyval(t, a) - level  # noqa: E731
         self._open = brentq(f, grid[lo], grid[lo + 1], xtol=1e-14)
         self._close = brentq(f, grid[hi - 1], grid[hi], xtol=1e-14)

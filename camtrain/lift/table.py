@@ -25,7 +25,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import make_splrep
 
 from camtrain.lift import _checks as chk
 from camtrain.lift.base import DEG, MM, TWO_PI, LiftLaw, per_degree
@@ -199,6 +198,8 @@ class TableLift(LiftLaw):
         acceleration and almost no noise); the spline it returns is then the closest it found,
         and the warning text is kept in ``fit_note`` instead of escaping as a warning.
         """
+        from scipy.interpolate import make_splrep  # only table decks pay for the splines
+
         s = self.smoothing * self.angles.size * self.sigma ** 2
         x = np.append(self._x, self._x[0] + TWO_PI)      # periodic: last point closes the loop
         with warnings.catch_warnings(record=True) as caught:

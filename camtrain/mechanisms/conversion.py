@@ -16,8 +16,6 @@ grid (Ball used central differences on data); the grid must be uniform over one 
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import BPoly, make_interp_spline
-from scipy.optimize import minimize_scalar
 
 from camtrain.errors import ConvergenceError, field_error
 from camtrain.lift.base import LiftCurve
@@ -37,15 +35,17 @@ def _periodic_grid_step(theta: np.ndarray) -> float:
     return h
 
 
-def _inspection_interpolant(cam: LiftCurve) -> BPoly:
+def _inspection_interpolant(cam: LiftCurve):
     """C2 piecewise quintic through l_c, l_c', l_c'', repeated over three revolutions."""
     x = np.concatenate([cam.theta - 2 * np.pi, cam.theta, cam.theta + 2 * np.pi,
                         cam.theta[:1] + 4 * np.pi])
     y = np.stack([cam.lift, cam.d1, cam.d2], axis=1)
+    from scipy.interpolate import BPoly
+
     return BPoly.from_derivatives(x, np.concatenate([y, y, y, y[:1]]))
 
 
-def _pad_centre_locus(poly: BPoly, s, alpha, base_radius, inspection_radius, follower_radius):
+def _pad_centre_locus(poly, s, alpha, base_radius, inspection_radius, follower_radius):
     """Points of the pad-centre locus and their derivative with respect to s."""
     rho = base_radius + inspection_radius + poly(s)
     r1, r2 = poly.derivative(1)(s), poly.derivative(2)(s)
@@ -108,6 +108,9 @@ def valve_lift_from_cam_lift(cam_lift: LiftCurve, geometry: PivotGeometry,
     else:
         valve = _convert_clockwise(reverse_lift(cam_lift), geometry, inspection_radius)[::-1]
     x = np.append(theta, theta[0] + 2.0 * np.pi)
+    from scipy.interpolate import make_interp_spline
+    from scipy.optimize import minimize_scalar
+
     spline = make_interp_spline(x, np.append(valve, valve[0]), k=5, bc_type="periodic")
     shift = 0.0
     if recentre:

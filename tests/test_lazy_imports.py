@@ -1,0 +1,28 @@
+"""Import only what a deck uses: the flagship deck's whole run loads none of scipy's heavy
+subpackages (optimisers, splines, special functions, integrators) nor numba; a lift-table deck
+loads the splines it needs."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+HEAVY = ("scipy.optimize", "scipy.special", "scipy.interpolate", "scipy.integrate", "numba",
+         "matplotlib")
+CODE = ("import sys; from camtrain import api; api.run(api.load(sys.argv[1])); "
+        f"print(' '.join(m for m in {HEAVY!r} if m in sys.modules))")
+
+
+def _loaded(deck: str) -> set[str]:
+    out = subprocess.run([sys.executable, "-c", CODE, str(ROOT / "decks" / deck)], cwd=ROOT,
+                         capture_output=True, text=True, check=True).stdout
+    return set(out.split())
+
+
+def test_harrison_run_imports_no_heavy_package():
+    assert _loaded("harrison_flat.toml") == set()
+
+
+def test_table_deck_imports_the_splines_it_needs():
+    assert "scipy.interpolate" in _loaded("zeta_intake.toml")
