@@ -72,7 +72,7 @@ def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: floa
           plots: str = "sheets") -> list[Path]:
     """Write a run's outputs into ``out_dir`` atomically: cycle.csv, report.txt, summary.json
     (with the deck's design-limit checks) and, unless ``plots="none"``, the plot sheets
-    (``plots="all"`` adds every panel on its own)."""
+    (``plots``: "sheets" PNG, "pdf" PNG and PDF, "all" also every panel alone)."""
     from camtrain.report.outputs import check_limits, write_run
 
     return write_run(result, deck, Path(out_dir), wall_time,

@@ -124,10 +124,10 @@ EXIT_PRECEDENCE = (EXIT_INTERNAL, 2, 3, 4, 1, 0)
               help="Check the decks' [limits]: exit 1 if any is violated (or cannot be checked).")
 @click.option("--junit", type=click.Path(dir_okay=False), default=None,
               help="Write a JUnit XML report: a test suite per deck, a test case per limit.")
-@click.option("--plots", type=click.Choice(["sheets", "all", "none"]), default="sheets",
+@click.option("--plots", type=click.Choice(["sheets", "pdf", "all", "none"]), default="sheets",
               show_default=True,
-              help="sheets: the multi-panel sheets (PNG and PDF); all: also every panel on its "
-                   "own (twice the drawing time); none.")
+              help="sheets: the multi-panel sheets as PNG; pdf: the sheets as PNG and PDF; all: "
+                   "also every panel on its own (PNG and PDF); none.")
 @click.option("--no-plots", is_flag=True, help="Same as --plots none (fastest, for CI).")
 @click.option("--quiet", "-q", is_flag=True, help="Print only errors and violated limits.")
 @click.option("--json", "as_json", is_flag=True,

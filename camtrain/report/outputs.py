@@ -31,7 +31,8 @@ def check_limits(result: Result, loaded: LoadedDeck) -> list[Check]:
 def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: float, *,
               checks: list[Check] | None = None, plots: str = "sheets",
               progress: Callable[[str, int, int], None] | None = None) -> list[Path]:
-    """Write cycle.csv, report.txt, plots (``plots``: all, sheets or none) and summary.json."""
+    """Write cycle.csv, report.txt, plots and summary.json. ``plots``: "sheets" (PNG sheets),
+    "pdf" (the sheets as PNG and PDF), "all" (also every panel alone, PNG and PDF) or "none"."""
     out_dir = Path(out_dir)
     summary = json.dumps(summary_dict(result, loaded, wall_time, checks), indent=2,
                          allow_nan=False, ensure_ascii=False) + "\n"
@@ -46,9 +47,10 @@ def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: floa
         for name, text in texts.items():
             (stage / name).write_text(text, encoding="utf-8", newline="")
         if plots != "none":
-            from camtrain.report.sheets import write_plots
+            from camtrain.report.sheets import PLOT_CHOICES, write_plots
 
-            write_plots(result, loaded.model, stage, single_panels=plots == "all",
+            formats, single = PLOT_CHOICES[plots]
+            write_plots(result, loaded.model, stage, single_panels=single, formats=formats,
                         sha=loaded.sha256, progress=progress)
         (stage / "summary.json").write_text(summary, encoding="utf-8")
         return _move_in(stage, out_dir)

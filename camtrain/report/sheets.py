@@ -16,7 +16,7 @@ from camtrain.report import profile
 from camtrain.report.findings import Findings, find
 from camtrain.report.header import header_rows, title_line
 from camtrain.report.panels import PANELS, Ctx
-from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC, pyplot
+from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
 from camtrain.result import Result
 
 #: name -> (heading, panels); "profile" is the cam drawn to scale
@@ -36,21 +36,6 @@ Progress = Callable[[str, int, int], None]
 
 def _ctx(result: Result) -> Ctx:
     return Ctx(np.degrees(result["cam_angle"]), find(result))
-
-
-def _drawable(result: Result, ctx: Ctx, names: list[str]) -> list[str]:
-    """Panels that can be drawn: try each on a scratch axes (cheap compared with saving)."""
-    plt = pyplot()
-    out = []
-    fig = plt.figure()
-    for name in names:
-        ax = fig.add_subplot()
-        ok = profile.can_draw(result) if name == "profile" else PANELS[name][1](ax, result, ctx)
-        if ok:
-            out.append(name)
-        fig.delaxes(ax)
-    plt.close(fig)
-    return out
 
 
 def _header(ax, deck, result: Result, heading: str, sha: str | None,
@@ -85,57 +70,109 @@ def _header(ax, deck, result: Result, heading: str, sha: str | None,
 #: height of the header band and the tallest row of panels on a sheet [in]
 HEADER_IN = 1.45
 MAX_ROW_IN = 4.3
+#: fixed margins of a sheet [in]: page edges, room for titles above and tick labels and axis
+#: labels around each panel (a twin axis on the right of a panel needs the gap between columns)
+PAGE_IN = 0.1
+LEFT_IN, RIGHT_IN = 0.5, 0.45
+GAP_X_IN = 0.95
+TITLE_IN, XLABEL_IN = 0.28, 0.42
 
 
-def _sheet(result: Result, deck, name: str, ctx: Ctx, panels: list[str], sha: str | None,
-           title: str | None = None):
-    plt = pyplot()
+def _frac(x0: float, y0: float, w: float, h: float, size) -> list[float]:
+    """A rectangle in inches from the bottom left as figure fractions."""
+    return [x0 / size[0], y0 / size[1], w / size[0], h / size[1]]
+
+
+def _panel_rects(count: int, size=A4_PORTRAIT) -> list[list[float]]:
+    """Axes rectangles of ``count`` panels in two columns under the header band, rows of
+    at most MAX_ROW_IN (a short sheet leaves the bottom of the page empty)."""
+    rows = max((count + 1) // 2, 1)
+    top = size[1] - PAGE_IN - HEADER_IN
+    row_in = min((top - PAGE_IN) / rows, MAX_ROW_IN)
+    width = (size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN - GAP_X_IN) / 2
+    rects = []
+    for i in range(count):
+        r, c = divmod(i, 2)
+        x0 = PAGE_IN + LEFT_IN + c * (width + GAP_X_IN)
+        y0 = top - (r + 1) * row_in + XLABEL_IN
+        rects.append(_frac(x0, y0, width, row_in - XLABEL_IN - TITLE_IN, size))
+    return rects
+
+
+def _sheet(fig, result: Result, deck, name: str, ctx: Ctx, sha: str | None,
+           title: str | None = None) -> int:
+    """Draw sheet ``name`` on the (cleared) A4 figure ``fig``; the number of panels drawn.
+
+    Each panel is drawn into its own axes and dropped if it has nothing to show; the survivors
+    are then placed on a fixed grid (no layout solver: the page is always the same A4 frame)."""
     heading = SHEETS[name][0]
-    fig = plt.figure(figsize=A4_PORTRAIT, layout="constrained")
+    size = A4_PORTRAIT
+    header = fig.add_axes(_frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
+                                HEADER_IN - 0.1, size))
+    _header(header, deck, result, heading, sha, title)
     if name == "profile":
-        gs = fig.add_gridspec(2, 1, height_ratios=[HEADER_IN, A4_PORTRAIT[1] - HEADER_IN])
-        _header(fig.add_subplot(gs[0]), deck, result, heading, sha)
-        ax = fig.add_subplot(gs[1])
+        if not profile.can_draw(result):
+            return 0
+        side = size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN
+        ax = fig.add_axes(_frac(PAGE_IN + LEFT_IN, size[1] - PAGE_IN - HEADER_IN - TITLE_IN - side,
+                                side, side, size))
         profile.draw(ax, result, ctx.findings, deck.cam.base_radius if deck else None)
         ax.set_title("Cam profile to scale, film thickness laid around it")
-        return fig
-    rows = (len(panels) + 1) // 2
-    # ratios in inches: the header keeps its size and a short sheet keeps panels in proportion,
-    # leaving the bottom of the page empty rather than stretching one row over it
-    row_in = min((A4_PORTRAIT[1] - HEADER_IN) / rows, MAX_ROW_IN)
-    spare = A4_PORTRAIT[1] - HEADER_IN - rows * row_in
-    heights = [HEADER_IN] + [row_in] * rows + ([spare] if spare > 0.1 else [])
-    gs = fig.add_gridspec(len(heights), 2, height_ratios=heights)
-    _header(fig.add_subplot(gs[0, :]), deck, result, heading, sha, title)
-    for i, pname in enumerate(panels):
-        ax = fig.add_subplot(gs[1 + i // 2, i % 2])
-        title, func = PANELS[pname]
-        func(ax, result, ctx)
-        ax.set_title(title)
-    return fig
+        return 1
+    drawn = []
+    for pname in SHEETS[name][1]:
+        before = len(fig.axes)
+        ax = fig.add_axes([0.0, 0.0, 0.1, 0.1])
+        panel_title, func = PANELS[pname]
+        if func(ax, result, ctx):
+            ax.set_title(panel_title)
+            drawn.append(ax)
+        else:   # nothing to show: drop the axes and any twin the panel made
+            for added in fig.axes[before:]:
+                fig.delaxes(added)
+    for ax, rect in zip(drawn, _panel_rects(len(drawn), size), strict=True):
+        ax.set_position(rect)   # twin axes follow their host
+    return len(drawn)
 
 
-def _panel(result: Result, deck, pname: str, ctx: Ctx):
-    plt = pyplot()
+def _panel(fig, result: Result, deck, pname: str, ctx: Ctx) -> bool:
+    """One panel alone on ``fig`` (PANEL_SIZE, or square for the profile)."""
     square = pname == "profile"
-    fig = plt.figure(figsize=(6.4, 6.4) if square else PANEL_SIZE, layout="constrained")
-    ax = fig.add_subplot()
+    w, h = fig.get_size_inches()
+    ax = fig.add_axes(_frac(0.8, 0.55, w - 1.5, h - 1.05, (w, h)))
     if square:
-        profile.draw(ax, result, ctx.findings, deck.cam.base_radius if deck else None)
+        ok = profile.draw(ax, result, ctx.findings, deck.cam.base_radius if deck else None)
         title = "Cam profile and film"
     else:
         title = PANELS[pname][0]
-        PANELS[pname][1](ax, result, ctx)
+        ok = PANELS[pname][1](ax, result, ctx)
     ax.set_title(title)
-    fig.suptitle(title_line(deck), fontsize=7.5, color="#595959")
+    fig.suptitle(title_line(deck), fontsize=7.5, color="#595959", y=0.995)
+    return bool(ok)
+
+
+def _figure(size):
+    """A bare Agg figure (no pyplot figure manager: nothing to close, nothing kept)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=size)
+    FigureCanvasAgg(fig)
     return fig
+
+
+#: --plots: which files a run draws (sheet formats, and whether every panel also goes alone)
+PLOT_CHOICES = {"sheets": (("png",), False), "pdf": (("png", "pdf"), False),
+                "all": (("png", "pdf"), True), "none": ((), False)}
 
 
 def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = True,
                 formats=("png", "pdf"), sha: str | None = None,
                 progress: Progress | None = None, dpi: int | None = None) -> list[Path]:
     """Draw every sheet (and every panel alone) that the result supports into ``out_dir``,
-    and a polar orbit plot per journal bearing when the run has bearings."""
+    and a polar orbit plot per journal bearing when the run has bearings.
+
+    One A4 figure is drawn on, saved and cleared for every sheet in turn."""
     from camtrain.report.bearing_plots import orbit_series, write_orbit_plots
 
     orbits: list[Path] = []
@@ -147,25 +184,33 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
         return orbits
     import matplotlib
 
-    plt = pyplot()
     out_dir.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     with matplotlib.rc_context({**RC, **({"savefig.dpi": dpi} if dpi else {})}):
         ctx = _ctx(result)
-        plan = {name: _drawable(result, ctx, panels) for name, (_, panels) in SHEETS.items()}
-        jobs = [("sheet", name) for name, panels in plan.items() if panels]
+        fig = _figure(A4_PORTRAIT)
+        panels = [(sheet, p) for sheet, (_, names) in SHEETS.items() for p in names]
+        total = len(SHEETS) + (len(panels) if single_panels else 0)
+        done, drawn = 0, set()
+        for name in SHEETS:
+            fig.clear()
+            if _sheet(fig, result, deck, name, ctx, sha):
+                written += _save(fig, out_dir / f"sheet_{name}", formats)
+                drawn.add(name)
+            done += 1
+            if progress:
+                progress(f"sheet {name}", done, total)
         if single_panels:
             (out_dir / "panels").mkdir(exist_ok=True)
-            jobs += [("panel", p) for panels in plan.values() for p in panels]
-        for done, (kind, name) in enumerate(jobs, 1):
-            if kind == "sheet":
-                fig = _sheet(result, deck, name, ctx, plan[name], sha)
-                written += _save(plt, fig, out_dir / f"sheet_{name}", formats)
-            else:
-                fig = _panel(result, deck, name, ctx)
-                written += _save(plt, fig, out_dir / "panels" / name, formats)
-            if progress:
-                progress(f"{kind} {name}", done, len(jobs))
+            panel_fig, square_fig = _figure(PANEL_SIZE), _figure((6.4, 6.4))
+            for sheet, pname in panels:
+                f = square_fig if pname == "profile" else panel_fig
+                f.clear()
+                if sheet in drawn and _panel(f, result, deck, pname, ctx):
+                    written += _save(f, out_dir / "panels" / pname, formats)
+                done += 1
+                if progress:
+                    progress(f"panel {pname}", done, total)
     return written + orbits
 
 
@@ -174,26 +219,23 @@ def kinematics_sheet(result: Result, deck, title: str, stem: Path,
     """The kinematics sheet alone, under a given title and file stem (``camtrain lift``)."""
     import matplotlib
 
-    plt = pyplot()
     with matplotlib.rc_context(RC):
-        ctx = _ctx(result)
-        panels = _drawable(result, ctx, SHEETS["kinematics"][1])
-        fig = _sheet(result, deck, "kinematics", ctx, panels, None, title)
+        fig = _figure(A4_PORTRAIT)
+        _sheet(fig, result, deck, "kinematics", _ctx(result), None, title)
         stem.parent.mkdir(parents=True, exist_ok=True)
-        return _save(plt, fig, stem, formats)
+        return _save(fig, stem, formats)
 
 
-def _save(plt, fig, stem: Path, formats) -> list[Path]:
-    engine = fig.get_layout_engine()
-    if engine is not None:      # lay out once, not once per file format (it is the slow part)
-        engine.execute(fig)
-        fig.set_layout_engine("none")
+def _save(fig, stem: Path, formats) -> list[Path]:
     paths = []
     for ext in formats:
         path = stem.with_suffix(f".{ext}")
-        fig.savefig(path, metadata={"Creator": f"camtrain {__version__}"} if ext == "pdf" else None)
+        if ext == "png":   # fast zlib level: encoding at the default level costs a third of a
+            fig.savefig(path, pil_kwargs={"compress_level": 1})    # sheet; files ~5 % larger
+        else:
+            fig.savefig(path, metadata={"Creator": f"camtrain {__version__}"} if ext == "pdf"
+                        else None)
         paths.append(path)
-    plt.close(fig)
     return paths
 
 

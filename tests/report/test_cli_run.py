@@ -132,11 +132,15 @@ def test_repeated_deck_names_get_their_own_directories(decks, tmp_path):
 
 def test_sheets_are_written_for_a_real_deck(decks, tmp_path):
     out = tmp_path / "o"
-    res = run(decks / "good.toml", "--out", out, "-q")      # default: sheets, no single panels
+    res = run(decks / "good.toml", "--out", out, "-q")      # default: PNG sheets only
+    assert res.exit_code == 0, res.output
+    assert (out / "sheet_kinematics.png").exists() and not (out / "sheet_kinematics.pdf").exists()
+    assert not (out / "panels").exists()
+    assert json.loads((out / "summary.json").read_text())["metrics"]
+    res = run(decks / "good.toml", "--out", out, "-q", "--plots", "pdf")   # PDF when asked
     assert res.exit_code == 0, res.output
     assert (out / "sheet_kinematics.png").exists() and (out / "sheet_kinematics.pdf").exists()
     assert not (out / "panels").exists()
-    assert json.loads((out / "summary.json").read_text())["metrics"]
 
 
 @pytest.mark.parametrize("codes,expected", [([0, 1, 0], 1), ([1, 2, 0], 2), ([4, 3, 1], 3),

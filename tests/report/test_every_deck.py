@@ -18,7 +18,7 @@ DECK_FILES = sorted(p.name for p in DECKS.glob("*.toml"))
 def test_deck_outputs_render_and_parse(name, tmp_path):
     loaded = api.load(DECKS / name)
     result = api.run(loaded)
-    written = api.write(result, loaded, tmp_path, 0.0)
+    written = api.write(result, loaded, tmp_path, 0.0, plots="pdf")
     names = {p.name for p in written}
     assert {"cycle.csv", "summary.json", "report.txt"} <= names
     pngs = [p for p in written if p.suffix == ".png"]
