@@ -60,8 +60,9 @@ def test_huge_pressure_viscosity_in_the_chain_stays_finite():
 
 
 def _pinto(mu: float, extra: str = "") -> str:
-    assert "[tribology]" not in PINTO and "[solver]" not in PINTO
-    return PINTO + f"\n[tribology]\nboundary_friction = {mu}\n" + extra
+    assert "[solver]" not in PINTO
+    return variant(PINTO, ('entrainment = "sum"\n',
+                           f'entrainment = "sum"\nboundary_friction = {mu}\n')) + extra
 
 
 @pytest.mark.parametrize("mu", [0.3, 1.0])
@@ -72,7 +73,7 @@ def test_pivoted_follower_near_self_locking_converges(mu):
     res = run_strict(_pinto(mu))
     assert 1 < res.metrics["load_iterations"].value < 50
     finite_columns(res, ("load", "friction_force", "friction_torque", "power_loss"))
-    assert res.metrics["power_loss_mean"].value > 153.0  # the datum at mu = 0.08
+    assert res.metrics["power_loss_mean"].value > 145.8  # the datum at mu = 0.08
 
 
 def test_friction_iteration_budget_exhausted_is_exit_4():

@@ -97,6 +97,11 @@ EXPECTED = {
 KNOWN_DIFFERENCES = {
     ("pinto_finger", "equivalent_mass", W): "power loss is nearly flat in M and peaks near the "
                                             "datum; Ball has it falling",
+    ("harrison_flat", "speed", W): "the loss peaks near 2500 rpm under either entrainment "
+                                   "convention (mean 46.5/47.4/47.4 W, Ball's sum 44.2/44.4/"
+                                   "43.3 W at 2250/2500/2750 rpm); with the sum, the deck's, "
+                                   "the +10 % point lies past the peak. Ball's Table 5.1: "
+                                   "rises, its growth falling toward bounce",
 }
 
 _CASES = [(deck, param, metric, direction) for deck, table in EXPECTED.items()
