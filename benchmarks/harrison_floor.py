@@ -27,6 +27,7 @@ HARRISON = dict(
     ramp_height=0.5 * MM, ramp_length=25.0 * DEG,
     rate=38.254e3, preload=6.4 * MM, mass=0.172, clearance=0.4 * MM,
     modulus=207e9, poisson=0.29, eta0=0.050, alpha=22.0e-9, sigma=0.2e-6, mu=0.08,
+    film_speed="sum",   # Ball's "entraining velocity" V_c + V_f, as the deck ("mean" = /2)
 )
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
@@ -77,7 +78,8 @@ def harrison_floor(points: int, p: dict = HARRISON) -> dict[str, np.ndarray]:
     # line Hertz, EHL films, Barus shear capped at mu W
     e_r = p["modulus"] / (1.0 - p["poisson"] ** 2)
     ok = (load > 0.0) & (radius > 0.0)
-    w, R, u = load[ok] / p["width"], radius[ok], np.abs(entrainment[ok])
+    speed = 2.0 * entrainment if p["film_speed"] == "sum" else entrainment
+    w, R, u = load[ok] / p["width"], radius[ok], np.abs(speed[ok])
     half_width, pmax = np.zeros(points), np.zeros(points)
     half_width[ok] = np.sqrt(8.0 * w * R / (np.pi * e_r))
     pmax[ok] = np.sqrt(w * e_r / (2.0 * np.pi * R))

@@ -360,14 +360,14 @@ def conventions_section() -> list[str]:
     lines = ["## Ball's targets under both entrainment conventions and both clearances", "",
              "Ball defines the entraining velocity as the **sum** V_c + V_f of the surface "
              "velocities (Ch 3 and 5, e.g. ω(2l'' + l + r_B) for the flat follower, although "
-             "his nomenclature defines the mean), so his decks use the sum; camtrain's "
-             "default for new decks stays the physically standard mean (V_c + V_f)/2. He "
-             "does not state the valve clearance of these trains; his template's 0.4 mm (the Harrison data file) is assumed for all "
-             "conventional trains. The desmodromic deck has none: App D leaves the opening "
-             "pair unloaded on the base circle and lets the closing pair hold the valve (a "
-             "0.4 mm clearance would also cut off the 0.33 mm opening ramp). This table shows "
-             "every Ball target under all four combinations, so that nothing is chosen to hit "
-             "a number; the deck's own choice is in bold.", "",
+             "his nomenclature defines the mean), so his decks use the sum; camtrain's default"
+             " for new decks stays the physically standard mean (V_c + V_f)/2. He does not "
+             "state the valve clearance of these trains; his template's 0.4 mm (the Harrison "
+             "data file) is assumed for all conventional trains. The desmodromic deck has "
+             "none: App D leaves the opening pair unloaded on the base circle and lets the "
+             "closing pair hold the valve (a 0.4 mm clearance would also cut off the 0.33 mm "
+             "opening ramp). This table shows every Ball target under all four combinations, "
+             "so that nothing is chosen to hit a number; the deck's own choice is in bold.", "",
              f"| target | Ball | {head} |", "|---|---|" + "---|" * len(CONVENTIONS)]
     for stem, metric, value, label in BALL_TARGETS:
         own = _deck_convention(stem)
