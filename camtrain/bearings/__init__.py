@@ -1,5 +1,7 @@
 """Plain journal bearings under dynamic load: short-bearing (Ocvirk) pi film, Booker's mobility
-orbit, the steady-load approximation and friction power (Petroff, Martin 1985, Yang 1992).
+orbit, the steady-load approximation and friction power (Petroff, Martin 1985, Yang 1992); and
+the finite-length Reynolds film over the whole bearing (:mod:`.reynolds`, :mod:`.finite`; imported
+on use, they need scipy.sparse).
 
 Stand-alone use: a load diagram in, an orbit out (:func:`journal_orbit`); engine and camshaft
 bearings build a :class:`JournalBearing` and call :func:`bearing_orbit` or :func:`steady_orbit`.

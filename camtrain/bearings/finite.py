@@ -119,3 +119,130 @@ def finite_performance(b_over_d: float, eps: float, *, cavitation: str = "reynol
         flow_variable=flow, side_flow_ratio=(math.pi * q_side / (2.0 * ld)) / flow,
         pressure_ratio=load / (4.0 * ld * pmax) if pmax > 0 else math.inf, load=load,
         field=field)
+
+
+@dataclass(frozen=True)
+class FiniteSteady:
+    """Steady-load operating point of a finite bearing (SI).
+
+    Attributes:
+        eccentricity: eps [-]; h_min = c (1 - eps) [m].
+        attitude: angle from the load to the line of centres [rad], in the sense of wbar.
+        h_min: minimum film thickness [m].
+        friction_force: journal friction force [N] (clearance full of oil for the Couette part,
+            Raimondi & Boyd's convention); friction_coefficient = friction_force / load.
+        friction_torque: journal friction torque [N m].
+        power: film dissipation [W]: Couette (clearance full) plus Poiseuille.
+        side_flow: leakage out of the land ends [m^3/s]; inflow: flow entering the film at the
+            thickest film [m^3/s] (meaningful with feed = "max_film").
+        max_pressure: peak film pressure [Pa].
+        sommerfeld: (R/c)^2 eta N L D / W with N = |wbar|/pi (rev/s of a fixed-bush journal).
+        solves: Reynolds solutions used by the eccentricity search; mesh: (n_theta, n_z).
+        cavitation, feed: the options used.
+    """
+
+    eccentricity: float
+    attitude: float
+    h_min: float
+    friction_force: float
+    friction_coefficient: float
+    friction_torque: float
+    power: float
+    side_flow: float
+    inflow: float
+    max_pressure: float
+    sommerfeld: float
+    solves: int
+    mesh: tuple[int, int]
+    cavitation: str
+    feed: str
+
+
+def finite_steady(bearing: JournalBearing, load: float, omega_journal: float,
+                  omega_bearing: float = 0.0, *, cavitation: str = "reynolds",
+                  feed: str = "none", n_theta: int = DEFAULT_MESH[0],
+                  n_z: int = DEFAULT_MESH[1], eps_tol: float = 1e-9) -> FiniteSteady:
+    """Eccentricity, attitude, minimum film, friction and flow of a finite bearing under a
+    steady load ``load`` [N] (the eccentricity-from-load problem).
+
+    The eccentricity is the root of ``F(eps) = W c^2 / (12 eta |wbar| R^4)`` (one land, half the
+    load when centrally grooved), bracketed on (0, 1) because the film force grows
+    monotonically to infinity; Brent's method on log F, each step one Reynolds solution warm
+    started from the last. A journal turning against the load direction (wbar < 0) is the
+    mirror image: the attitude changes sign.
+    """
+    if cavitation not in CAVITATION:
+        raise field_error("cavitation", "unknown cavitation condition", cavitation,
+                          " or ".join(CAVITATION))
+    load = abs(float(load))
+    wbar = 0.5 * (float(omega_journal) + float(omega_bearing))
+    rel = float(omega_journal) - float(omega_bearing)
+    if not math.isfinite(load):
+        raise field_error("load", "must be finite", load)
+    if wbar == 0.0:
+        raise field_error("omega", "a steady load needs (omega_j + omega_b)/2 != 0", 0.0,
+                          hint="at half-speed whirl only squeeze carries load; use an orbit")
+    share = 0.5 if bearing.grooved else 1.0
+    r, c, eta, land = bearing.radius, bearing.clearance, bearing.viscosity, bearing.land
+    unit_force = 12.0 * eta * abs(wbar) * r ** 4 / c ** 2
+    target = share * load / unit_force
+    b_over_d = land / bearing.diameter
+    fd = _feed(feed)
+    grid = film_grid(b_over_d, n_theta, n_z)
+    state = {"start": None, "n": 0, "field": None}
+
+    def solve(e):
+        f = solve_film(grid, e, cavitation=cavitation, feed=fd, start=state["start"])
+        state["start"], state["field"] = f.pressure, f
+        state["n"] += 1
+        return f
+
+    def gap(e):
+        f = solve(e)
+        return math.log(max(math.hypot(f.force_r, f.force_t), 1e-300)) - math.log(target)
+
+    if target == 0.0:
+        eps = 0.0
+        field = solve(0.0)
+    else:
+        lo, hi = 1e-6, 1.0 - 1e-6
+        if gap(hi) < 0.0:
+            raise field_error("load", "too large for the bearing: the film would need "
+                              "eps > 1 - 1e-6", load, hint="check the load units")
+        if gap(lo) > 0.0:
+            eps = lo
+        else:
+            eps = brentq(gap, lo, hi, xtol=eps_tol, rtol=4 * np.finfo(float).eps)
+        field = solve(eps)
+    fr, ft = field.force_r, field.force_t
+    att = math.atan2(-ft, fr) if target > 0 else 0.5 * math.pi
+    att = math.copysign(att, wbar)
+    s_full, _, q_in, q_side = _integrals(field)
+    couette = eta * rel ** 2 * r ** 4 / c * s_full
+    A_energy = _poiseuille(field)
+    poiseuille = 12.0 * eta * wbar ** 2 * r ** 4 / c * A_energy
+    # friction on the journal: Couette shear plus the pressure part W e sin(phi) / (2 R)
+    f_couette = eta * abs(rel) * r ** 3 / c * s_full
+    f_pressure = 0.5 * c * eps * share * load * abs(math.sin(att)) / r
+    n_lands = 2 if bearing.grooved else 1
+    friction = n_lands * (f_couette + f_pressure)
+    flow_unit = c * r ** 2 * abs(wbar)
+    n_rev = abs(wbar) / math.pi
+    return FiniteSteady(
+        eccentricity=float(eps), attitude=att, h_min=c * (1.0 - eps),
+        friction_force=friction, friction_coefficient=friction / load if load else math.inf,
+        friction_torque=friction * r, power=n_lands * (couette + poiseuille),
+        side_flow=n_lands * flow_unit * q_side, inflow=n_lands * flow_unit * q_in,
+        max_pressure=float(np.max(field.pressure)) * 12.0 * eta * abs(wbar) * r ** 2 / c ** 2,
+        sommerfeld=(r / c) ** 2 * eta * n_rev * land * bearing.diameter / (share * load)
+        if load else math.inf,
+        solves=state["n"], mesh=(grid.n_theta, grid.n_z), cavitation=cavitation, feed=feed)
+
+
+def _poiseuille(field: FilmField) -> float:
+    """int H^3 |grad P|^2 over the whole bearing (= 2 P.A.P on the half mesh)."""
+    from .reynolds import _diffusion, _film
+
+    _, h, hf = _film(field.grid, field.eps)
+    p = field.pressure.ravel()
+    return 2.0 * float(p @ (_diffusion(field.grid, h, hf) @ p))

@@ -292,9 +292,9 @@ def _jfo(A, C, f, fixed, values, p0, tol, max_iter):
     g, phi, dp, dr = resid(p, r)
     merit = 0.5 * (g @ g + phi @ phi)
     dinv = sp.diags(1.0 / diag)
-    for it in range(1, max_iter + 1):
-        if math.sqrt(2.0 * merit / n) < tol:
-            break
+    it = 0
+    while math.sqrt(2.0 * merit / n) >= tol and it < max_iter:
+        it += 1
         J = sp.bmat([[dinv @ (scale * Auu), -(dinv @ Cuu)], [sp.diags(dp), sp.diags(dr)]],
                     format="csc")
         step = spla.spsolve(J, -np.concatenate([g, phi]))
@@ -308,10 +308,9 @@ def _jfo(A, C, f, fixed, values, p0, tol, max_iter):
             t *= 0.5
         p, r = p + t * sp_, r + t * sr
         g, phi, dp, dr, merit = g2, phi2, dp2, dr2, m2
-    else:
-        if math.sqrt(2.0 * merit / n) >= tol:
-            raise ConvergenceError(f"JFO cavitation: Newton not converged in {max_iter} steps "
-                                   f"(residual {math.sqrt(2 * merit / n):.3g})")
+    if math.sqrt(2.0 * merit / n) >= tol:
+        raise ConvergenceError(f"JFO cavitation: Newton not converged in {max_iter} steps "
+                               f"(residual {math.sqrt(2 * merit / n):.3g})")
     P = values.copy()
     P[u] = np.maximum(scale * p, 0.0)
     R = np.zeros_like(values)
