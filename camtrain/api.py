@@ -33,28 +33,12 @@ def plan(deck: LoadedDeck | Deck) -> Plan:
 
 
 def run(deck: LoadedDeck | Deck | str | Path) -> Result:
-    """Run a deck (object or path) and return its Result."""
+    """Run a deck (object or path) of any kind and return its Result."""
     from camtrain.runner import run_plan
 
     if isinstance(deck, str | Path):
         deck = load(deck)
-    model = _model(deck)
-    if getattr(model, "kind", "valve_train") == "journal_bearing":
-        return _run_bearing(model)
-    return run_plan(model)
-
-
-def _run_bearing(model) -> Result:
-    """A stand-alone journal-bearing deck: its one-effect plan, run and timed."""
-    import time
-
-    from camtrain.effects.bearings import run_bearing_deck
-
-    result = Result(plan=resolve(model))
-    start = time.perf_counter()
-    run_bearing_deck(model, result)
-    result.timings["journal_bearing"] = time.perf_counter() - start
-    return result
+    return run_plan(_model(deck))
 
 
 def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Result:

@@ -37,7 +37,6 @@ class Result:
     warnings: list[str] = field(default_factory=list)
     timings: dict[str, float] = field(default_factory=dict)
     plan: object = None
-    not_available: list[str] = field(default_factory=list)
 
     def add_column(self, name: str, values, unit: str, description: str) -> None:
         self.columns[name] = Column(np.asarray(values, dtype=float), unit, description)

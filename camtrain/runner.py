@@ -1,41 +1,71 @@
-"""Run a resolved plan: call each chosen effect in order, time it, collect one Result."""
+"""Run a resolved plan: call each chosen effect in order, hand it the products it declared,
+check what it returns, time it, and collect one Result."""
 from __future__ import annotations
 
 import importlib
 import time
+from typing import TypeVar
 
-from camtrain.deck.schema import Deck
+from camtrain.effects.catalogue import PRODUCTS, EffectSpec
 from camtrain.result import Result
-from camtrain.scene import EFFECTS, Plan, resolve
+from camtrain.scene import Plan, effect_module, resolve
+
+T = TypeVar("T")
 
 
-class State:
-    """What effects share during one run: the model, the result, and intermediate objects."""
+class Inputs:
+    """The products one effect may read: those it ``needs`` (always there) and those it
+    ``uses`` (there when the plan provides them). Keyed by product class."""
 
-    def __init__(self, deck: Deck, result: Result):
-        self.deck = deck
-        self.result = result
-        self.objects: dict[str, object] = {}
+    def __init__(self, spec: EffectSpec, products: dict[str, object]):
+        self._spec = spec
+        self._products = products
+
+    def _declared(self, cls: type, kinds: tuple[str, ...]) -> str:
+        name = cls.__name__
+        if name not in kinds:
+            raise TypeError(f"effect {self._spec.name!r} reads {name}, which it does not "
+                            f"declare in the catalogue ({', '.join(kinds) or 'nothing'})")
+        return name
+
+    def __getitem__(self, cls: type[T]) -> T:
+        """A needed product."""
+        return self._products[self._declared(cls, self._spec.needs)]
+
+    def get(self, cls: type[T]) -> T | None:
+        """An optional (``uses``) or needed product, None when the plan does not provide it."""
+        return self._products.get(self._declared(cls, self._spec.needs + self._spec.uses))
 
 
-def run_plan(deck: Deck, plan: Plan | None = None) -> Result:
-    """Run every chosen effect of the plan. Effects not available yet are reported, not faked."""
+def product_class(name: str) -> type:
+    module, cls = PRODUCTS[name].split(":")
+    return getattr(importlib.import_module(module), cls)
+
+
+def run_plan(deck, plan: Plan | None = None) -> Result:
+    """Run every chosen effect of the plan (resolved here when not given)."""
     plan = plan or resolve(deck)
     result = Result(plan=plan)
-    state = State(deck, result)
-    blocked: set[str] = set()
-    for name in plan.chosen:
-        effect = EFFECTS[name]
-        if not effect.available or any(dep in blocked for dep in effect.needs):
-            blocked.add(name)
-            result.not_available.append(name)
-            why = (f"is not available yet (arrives with {effect.planned_in})"
-                   if not effect.available else "cannot run: an effect it needs is not available")
-            result.warn(f"effect '{name}' {why}; nothing was computed for it")
-            continue
-        module_name, func_name = effect.runner.split(":")
-        func = getattr(importlib.import_module(module_name), func_name)
+    products: dict[str, object] = {}
+    for spec in plan.effects:
         start = time.perf_counter()
-        func(deck, state)
-        result.timings[name] = time.perf_counter() - start
+        out = effect_module(spec).run(deck, Inputs(spec, products), result)
+        result.timings[spec.name] = time.perf_counter() - start
+        products.update(_checked(spec, out))
     return result
+
+
+def _checked(spec: EffectSpec, out) -> dict[str, object]:
+    """The products an effect returned, by name, after checking them against its declaration."""
+    items = out if isinstance(out, tuple) else (() if out is None else (out,))
+    got = {}
+    for obj in items:
+        name = type(obj).__name__
+        if name not in spec.produces or not isinstance(obj, product_class(name)):
+            raise TypeError(f"effect {spec.name!r} returned a {name}, which is not one of the "
+                            f"products it declares ({', '.join(spec.produces)})")
+        got[name] = obj
+    if set(got) != set(spec.produces):
+        lost = sorted(set(spec.produces) - set(got))
+        raise TypeError(f"effect {spec.name!r} did not return {', '.join(lost)}")
+    return got

@@ -1,31 +1,20 @@
 """Scene plan: which effects a deck calls for, in which order, and why.
 
-Each effect declares the effects it needs, the deck data it needs, and what it produces. A deck
-either lists the effects it wants or says ``auto``; then an effect runs only when the deck supplies
-its data (as in Ball's program: no spring or mass data -> kinematics and the load-free Blok film
-only). The plan is resolved before any computation and printed by ``check`` and ``run``.
+The deck's kind (:data:`camtrain.effects.catalogue.KINDS`) gives the effects that may run. A deck
+either lists the effects it wants or says ``auto``; then an effect runs only when the deck
+supplies its data and the products it needs are planned (as in Ball's program: no spring or mass
+data -> kinematics and the load-free Blok film only). Where several effects offer the same
+product, the highest ranked with its data present is chosen, and the plan says so. The plan is
+resolved before any computation (no physics or numpy is imported) and printed by ``check`` and
+``run``.
 """
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+import importlib
+from dataclasses import dataclass, field
 
-from camtrain.deck.schema import EFFECT_NAMES, Deck
+from camtrain.effects.catalogue import EffectSpec, kind_of
 from camtrain.errors import InputError, Problem
-
-
-@dataclass(frozen=True)
-class Effect:
-    """One physical effect of the run chain."""
-
-    name: str
-    description: str
-    needs: tuple[str, ...]
-    produces: tuple[str, ...]
-    missing: Callable[[Deck], list[str]]
-    runner: str  # "module:function"; imported only when the effect runs
-    available: bool = True
-    planned_in: str = ""  # where an effect that is not available yet will come from
 
 
 @dataclass(frozen=True)
@@ -35,183 +24,142 @@ class Step:
     effect: str
     chosen: bool
     reason: str
-    available: bool = True
+    spec: EffectSpec | None = field(default=None, compare=False, repr=False)
 
     def as_dict(self) -> dict:
-        return {"effect": self.effect, "chosen": self.chosen, "reason": self.reason,
-                "available": self.available}
+        return {"effect": self.effect, "chosen": self.chosen, "reason": self.reason}
 
 
 @dataclass(frozen=True)
 class Plan:
     mode: str
     steps: tuple[Step, ...]
+    kind: str = "valve_train"
 
     @property
     def chosen(self) -> list[str]:
         return [s.effect for s in self.steps if s.chosen]
 
+    @property
+    def effects(self) -> list[EffectSpec]:
+        """The chosen effects in run order."""
+        return [s.spec for s in self.steps if s.chosen]
+
     def as_dict(self) -> dict:
         return {"mode": self.mode, "steps": [s.as_dict() for s in self.steps]}
 
 
-def _missing_loads(deck: Deck) -> list[str]:
-    out = []
-    if deck.spring is None:
-        out.append("spring (rate, preload_compression)")
-    if deck.masses is None:
-        out.append("masses (valve_side)")
-    return out
+def effect_module(spec: EffectSpec):
+    """The module of an effect (its top level imports no physics)."""
+    return importlib.import_module(spec.module)
 
 
-def _missing_hertz(deck: Deck) -> list[str]:
-    return [] if deck.cam.width is not None else ["cam.width"]
+def resolve(deck, effects: tuple[EffectSpec, ...] | None = None) -> Plan:
+    """Resolve the plan for a deck before any computation.
 
-
-def _missing_film(deck: Deck) -> list[str]:
-    return [] if deck.lubricant is not None else ["lubricant (viscosity, pressure_viscosity)"]
-
-
-def _nothing(deck: Deck) -> list[str]:
-    return []
-
-
-def _missing_camshaft(deck: Deck) -> list[str]:
-    return [] if deck.camshaft is not None else ["[camshaft] section (lobes)"]
-
-
-def _missing_bearings(deck: Deck) -> list[str]:
-    if deck.camshaft is None:
-        return ["[camshaft] section"]
-    out = [] if deck.camshaft.bearings else ["[[camshaft.bearings]]"]
-    if deck.camshaft.viscosity is None and deck.lubricant is None:
-        out.append("camshaft.viscosity or lubricant.viscosity")
-    return out
-
-
-EFFECTS: dict[str, Effect] = {e.name: e for e in (
-    Effect("kinematics", "lift law and follower kinematics: lift and derivatives, contact point, "
-           "r_c, R, surface, entrainment and sliding velocities",
-           (), ("lift", "r_c", "R", "V_c", "V_f", "u_e", "V_s"), _nothing,
-           "camtrain.effects.kinematics:run"),
-    Effect("loads", "contact load from the rigid-train D'Alembert balance; loss of contact",
-           ("kinematics",), ("load",), _missing_loads,
-           "camtrain.effects.loads:run"),
-    Effect("hertz", "Hertz contact half-width and maximum pressure",
-           ("loads",), ("hertz_pmax", "hertz_half_width"), _missing_hertz,
-           "camtrain.effects.hertz:run"),
-    Effect("film", "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
-           ("kinematics",), ("film_min", "film_central", "lambda"), _missing_film,
-           "camtrain.effects.film:run"),
-    Effect("friction", "friction force and coefficient: viscous shear capped by boundary "
-           "friction", ("hertz", "film"), ("friction_force", "friction_coefficient"), _nothing,
-           "camtrain.effects.friction:run"),
-    Effect("power", "friction torque about the cam axis and power loss",
-           ("friction",), ("friction_torque", "power_loss"), _nothing,
-           "camtrain.effects.power:run"),
-    Effect("camshaft_torque", "camshaft: lobe torques phased and summed, drive power, harmonic "
-           "orders, second bank, pendulum dampers", ("loads",),
-           ("camshaft_torque", "order_n"), _missing_camshaft,
-           "camtrain.effects.camshaft:run"),
-    Effect("bearings", "camshaft bearings: lobe and drive forces split as beams, journal "
-           "orbits (Booker mobility), minimum film and power",
-           ("camshaft_torque",), ("bearing_i_load_x/y", "bearing_i_eccentricity"),
-           _missing_bearings, "camtrain.effects.bearings:run"),
-)}
-
-#: The one effect of a stand-alone ``kind = "journal_bearing"`` deck (run by camtrain.api).
-BEARING_EFFECT = Effect("journal_bearing", "journal orbit, minimum film and power of one "
-                        "bearing under its load diagram", (), ("eccentricity", "min_film"),
-                        _nothing, "camtrain.effects.bearings:run_bearing_deck")
-
-assert tuple(EFFECTS) == EFFECT_NAMES
-
-
-def resolve(deck: Deck) -> Plan:
-    """Resolve the plan for a deck before any computation."""
-    if getattr(deck, "kind", "valve_train") == "journal_bearing":
-        solver = deck.solver
-        why = f"stand-alone bearing deck: {solver.method} method, {solver.film} film"
-        return Plan("journal_bearing", (Step(BEARING_EFFECT.name, True, why),))
+    ``effects`` replaces the deck kind's registered effects (tests and extensions)."""
+    kind = kind_of(deck)
+    specs = order(effects if effects is not None else kind.effects)
     if deck.effects == "auto":
-        return _resolve_auto(deck)
-    return _resolve_explicit(deck, deck.effects)
+        return Plan("auto", _resolve_auto(deck, specs), kind.name)
+    return Plan("explicit", _resolve_explicit(deck, specs, deck.effects), kind.name)
 
 
-def _film_reason(deck: Deck, with_load: bool) -> str:
-    if with_load:
-        return "lubricant given and contact loads planned: EHL film with the contact load"
-    return ("lubricant given, no contact loads: Blok rigid-piezoviscous film, "
-            "which needs no load (Ball 1988 eq. 4.3)")
+def order(specs: tuple[EffectSpec, ...]) -> list[EffectSpec]:
+    """Topological order over products (needs and uses); ties: higher rank, then listed order.
+
+    Raises ValueError on a cycle (a catalogue error, not a user error)."""
+    producers: dict[str, list[int]] = {}
+    for i, s in enumerate(specs):
+        for p in s.produces:
+            producers.setdefault(p, []).append(i)
+    deps = [{j for p in s.needs + s.uses for j in producers.get(p, ()) if j != i}
+            for i, s in enumerate(specs)]
+    done: list[int] = []
+    left = set(range(len(specs)))
+    while left:
+        ready = [i for i in left if deps[i] <= set(done)]
+        if not ready:
+            names = ", ".join(specs[i].name for i in sorted(left))
+            raise ValueError(f"the effects {names} need each other's products (a cycle)")
+        nxt = min(ready, key=lambda i: (-specs[i].rank, i))
+        done.append(nxt)
+        left.remove(nxt)
+    return [specs[i] for i in done]
 
 
-def _resolve_auto(deck: Deck) -> Plan:
-    chosen: set[str] = set()
+def _resolve_auto(deck, specs: list[EffectSpec]) -> tuple[Step, ...]:
+    planned: dict[str, str] = {}  # product -> effect that provides it
     steps = []
-    for name, eff in EFFECTS.items():
-        unmet = [n for n in eff.needs if n not in chosen]
-        missing = eff.missing(deck)
+    for spec in specs:
+        module = effect_module(spec)
+        unmet = [p for p in spec.needs if p not in planned]
+        taken = [p for p in spec.produces if p in planned]
+        if taken:
+            by = planned[taken[0]]
+            steps.append(Step(spec.name, False, f"{taken[0]} comes from {by} instead "
+                              f"(ranked higher, its data are present)", spec))
+            continue
         if unmet:
-            steps.append(Step(name, False, "needs " + ", ".join(unmet) + ", which will not run",
-                              eff.available))
-        elif missing:
-            steps.append(Step(name, False, "no data: " + "; ".join(missing), eff.available))
-        else:
-            chosen.add(name)
-            reason = _auto_reason(deck, name, chosen)
-            steps.append(Step(name, True, reason, eff.available))
-    return Plan("auto", tuple(steps))
+            steps.append(Step(spec.name, False, "needs " + ", ".join(unmet)
+                              + ", which no planned effect provides", spec))
+            continue
+        missing = module.missing(deck)
+        if missing:
+            steps.append(Step(spec.name, False, "no data: " + "; ".join(missing), spec))
+            continue
+        reason = module.reason(deck, frozenset(planned))
+        rivals = [s.name for s in specs if s is not spec and set(s.produces) & set(spec.produces)]
+        if rivals:
+            reason += f" (chosen over {', '.join(rivals)} for {', '.join(spec.produces)})"
+        for p in spec.produces:
+            planned[p] = spec.name
+        steps.append(Step(spec.name, True, reason, spec))
+    return tuple(steps)
 
 
-def _auto_reason(deck: Deck, name: str, chosen: set[str]) -> str:
-    if name == "kinematics":
-        return f"always: {deck.lift.form} lift on a {deck.mechanism.type} follower"
-    if name == "loads":
-        return "spring and masses given"
-    if name == "hertz":
-        return "contact load and cam width available"
-    if name == "film":
-        return _film_reason(deck, "loads" in chosen)
-    if name == "friction":
-        return "Hertz zone and film available"
-    if name == "power":
-        return "friction available"
-    if name == "camshaft_torque":
-        torque = "W e + F r" if "power" in chosen else "W e only (no friction)"
-        return f"{len(deck.camshaft.lobes)} lobes given; lobe torque {torque}"
-    if name == "bearings":
-        return f"{len(deck.camshaft.bearings)} bearings given; {deck.camshaft.method} method"
-    return "data given"  # pragma: no cover
-
-
-def _resolve_explicit(deck: Deck, requested: tuple[str, ...]) -> Plan:
+def _resolve_explicit(deck, specs: list[EffectSpec], requested: tuple[str, ...]) -> tuple[Step, ...]:
+    by_name = {s.name: s for s in specs}
     wanted: dict[str, str] = {}
+
+    def provider(product: str) -> EffectSpec | None:
+        offers = [s for s in specs if product in s.produces]
+        for s in offers:
+            if s.name in wanted or s.name in requested:
+                return s
+        for s in offers:  # the first with its data, else the first (it reports what is missing)
+            if not effect_module(s).missing(deck):
+                return s
+        return offers[0] if offers else None
 
     def want(name: str, why: str) -> None:
         if name in wanted:
             return
-        for dep in EFFECTS[name].needs:
-            want(dep, f"needed by {name}")
+        for product in by_name[name].needs:
+            dep = provider(product)
+            if dep is not None:
+                want(dep.name, f"needed by {name}")
         wanted[name] = why
 
     for name in requested:
+        if name not in by_name:
+            raise InputError(Problem("effects", "is not an effect of this deck kind", name,
+                                     "one of " + ", ".join(by_name)))
         want(name, "requested in the deck")
     problems = []
-    for name in wanted:
-        missing = EFFECTS[name].missing(deck)
+    for name, why in wanted.items():
+        missing = effect_module(by_name[name]).missing(deck)
         if missing:
-            problems.append(Problem("effects", f"effect {name!r} is requested "
-                                    f"({wanted[name]}) but its data are missing: "
-                                    + "; ".join(missing)))
+            problems.append(Problem("effects", f"effect {name!r} is requested ({why}) but its "
+                                    "data are missing: " + "; ".join(missing)))
     if problems:
         raise InputError(problems)
+    planned = frozenset(p for n in wanted for p in by_name[n].produces)
     steps = []
-    for name, eff in EFFECTS.items():
-        if name in wanted:
-            reason = wanted[name]
-            if name == "film":
-                reason += "; " + _film_reason(deck, "loads" in wanted)
-            steps.append(Step(name, True, reason, eff.available))
+    for spec in specs:
+        if spec.name in wanted:
+            reason = wanted[spec.name] + "; " + effect_module(spec).reason(deck, planned)
+            steps.append(Step(spec.name, True, reason, spec))
         else:
-            steps.append(Step(name, False, "not requested", eff.available))
-    return Plan("explicit", tuple(steps))
+            steps.append(Step(spec.name, False, "not requested", spec))
+    return tuple(steps)

@@ -252,7 +252,7 @@ def deck_section(path: Path) -> list[str]:
         lines += pinto_camshaft_sections(result)
     have = [row for row in SHOWN if result is not None and row[0] in result.metrics]
     if have or error:
-        missing = NOT_YET if (error or result.not_available) else "not computed for this deck"
+        missing = NOT_YET if error else "not computed for this deck"
         lines += ["camtrain's key numbers for this deck:", "", "| quantity | camtrain |",
                   "|---|---|"]
         for name, label, unit, factor in SHOWN:

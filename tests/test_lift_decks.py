@@ -9,9 +9,9 @@ import pytest
 from click.testing import CliRunner
 
 from camtrain import api
+from camtrain.build.lift_law import build_lift_law
 from camtrain.cli import main
 from camtrain.deck.load import validate
-from camtrain.effects.lift_law import build_lift_law
 from camtrain.errors import InputError
 from tests.conftest import DECKS, MINIMAL_DECK
 

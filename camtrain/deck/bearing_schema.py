@@ -14,8 +14,6 @@ from camtrain.deck.schema_camshaft import bearing_geometry_problems
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
-BEARING_EFFECT = "journal_bearing"
-
 
 @dataclass(frozen=True, kw_only=True)
 class BearingGeometry:
@@ -128,5 +126,6 @@ class BearingDeck:
     solver: BearingSolver = section("Model and resolution", default=BearingSolver())
 
     @property
-    def effects(self) -> tuple[str, ...]:
-        return (BEARING_EFFECT,)
+    def effects(self) -> str:
+        """The plan is automatic: the deck kind has one effect, the bearing orbit."""
+        return "auto"

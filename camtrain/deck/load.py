@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import importlib
 import math
 import tomllib
 from dataclasses import dataclass
@@ -13,6 +14,7 @@ from pathlib import Path
 
 from camtrain.deck.fields import build_section, schema_paths
 from camtrain.deck.schema import Deck
+from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
 from camtrain.errors import InputError, Problem
 
 MAX_DECK_BYTES = 20 * 1024 * 1024
@@ -69,38 +71,26 @@ def parse_toml(text: str, name: str) -> dict:
         raise InputError(Problem("", f"malformed TOML: {exc}"), source=name) from None
 
 
-KINDS = ("valve_train", "journal_bearing")
-
-
 def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
     """Validate raw TOML data into the immutable SI model, reporting every problem at once.
 
-    The top-level ``kind`` picks the schema: ``valve_train`` (the default) or
-    ``journal_bearing`` (:mod:`camtrain.deck.bearing_schema`).
+    The top-level ``kind`` picks the schema among the registered deck kinds
+    (:data:`camtrain.effects.catalogue.KINDS`; ``valve_train`` is the default).
     """
-    kind = raw.get("kind", "valve_train")
-    if kind == "journal_bearing":
-        return _validate_bearing(raw, name)
-    if kind != "valve_train":
+    kind = raw.get("kind", DEFAULT_KIND)
+    if not isinstance(kind, str) or kind not in KINDS:
         raise InputError(Problem("kind", "is not a known deck kind", kind,
                                  " or ".join(repr(k) for k in KINDS)), source=name)
-    if "kind" in raw:  # the valve-train schema itself has no kind key
-        raw = {k: v for k, v in raw.items() if k != "kind"}
+    module, cls = KINDS[kind].schema.split(":")
+    schema = getattr(importlib.import_module(module), cls)
+    if "kind" in raw and not any(f.name == "kind" for f in dataclasses.fields(schema)):
+        raw = {k: v for k, v in raw.items() if k != "kind"}  # a schema without its own kind key
     problems: list[Problem] = []
-    deck = build_section(Deck, raw, "", problems, schema_paths(Deck))
+    deck = build_section(schema, raw, "", problems, schema_paths(schema))
     if deck is None or problems:
         raise InputError(problems or [Problem("", "invalid deck")], source=name)
-    deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
-    return deck
-
-
-def _validate_bearing(raw: dict, name: str):
-    from camtrain.deck.bearing_schema import BearingDeck
-
-    problems: list[Problem] = []
-    deck = build_section(BearingDeck, raw, "", problems, schema_paths(BearingDeck))
-    if deck is None or problems:
-        raise InputError(problems or [Problem("", "invalid deck")], source=name)
+    if isinstance(deck, Deck):
+        deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
     return deck
 
 

@@ -44,6 +44,7 @@ from camtrain.deck.schema_tribology import (  # noqa: F401
     Spring,
     Tribology,
 )
+from camtrain.effects.catalogue import effect_names
 from camtrain.errors import Problem
 from camtrain.units import from_si, mm_text
 
@@ -247,8 +248,8 @@ class Cam:
 
 # --------------------------------------------------------------------------- the deck
 
-EFFECT_NAMES = ("kinematics", "loads", "hertz", "film", "friction", "power", "camshaft_torque",
-                "bearings")
+#: the effects a valve-train deck may list (registered in camtrain.effects.catalogue)
+EFFECT_NAMES = effect_names("valve_train")
 
 
 @dataclass(frozen=True, kw_only=True)

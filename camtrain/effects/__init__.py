@@ -1,4 +1,6 @@
-"""Effects: each takes the model and the result so far, and adds its per-angle arrays and metrics.
+"""Effects: each takes the deck model and the products of earlier effects, adds its per-angle
+arrays and metrics to the result, and returns its own products.
 
-An effect module exposes ``run(deck, state)``; the scene plan (camtrain.scene) decides which run.
+Which effects exist, what they need and produce, and which deck kinds they serve is listed in one
+place, :mod:`camtrain.effects.catalogue`; the scene plan (:mod:`camtrain.scene`) decides which run.
 """

@@ -15,42 +15,47 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from camtrain.camshaft import (
-    damper_motion,
-    drive_power,
-    harmonic_orders,
-    lobe_force,
-    optimum_damper,
-    pendulum_effective_inertia,
-    second_bank,
-    shift_curve,
-)
-from camtrain.formulas import cam_torque, cycle_mean
-
 #: a pendulum swing above this [rad] leaves the small-angle theory of Williams ch 10
 _LARGE_SWING = 0.5
 
 
-def lobe_torque(state) -> tuple[np.ndarray, bool]:
-    """The single-lobe torque [N m] on the run grid, and whether it includes friction."""
-    if "cam_torque" in state.result.columns:
-        return state.result["cam_torque"], True
-    kin = state.objects["kinematics"]
-    load = np.maximum(state.objects["load"], 0.0)
-    return np.asarray(cam_torque(load, kin.torque_arm_normal, 0.0, 0.0), dtype=float), False
+def missing(deck) -> list[str]:
+    return [] if deck.camshaft is not None else ["[camshaft] section (lobes)"]
 
 
-def order_phases(harm, theta0: float) -> np.ndarray:
+def reason(deck, planned) -> str:
+    torque = "W e + F r" if "CamTorque" in planned else "W e only (no friction)"
+    return f"{len(deck.camshaft.lobes)} lobes given; lobe torque {torque}"
+
+
+def lobe_torque(kin, load, cam_torque_product):
+    """The single-lobe torque [N m] on the run grid: the power effect's W e + F r when planned,
+    else the normal-load torque W e."""
+    import numpy as np
+
+    from camtrain.formulas import cam_torque
+
+    if cam_torque_product is not None:
+        return cam_torque_product.cam_torque
+    return np.asarray(cam_torque(np.maximum(load, 0.0), kin.torque_arm_normal, 0.0, 0.0),
+                      dtype=float)
+
+
+def order_phases(harm, theta0: float):
     """Phases of T = sum A_n cos(n theta + phase_n) on a grid starting at theta0 (not 0)."""
+    import numpy as np
+
     ph = harm.phase - harm.order * theta0
     return np.angle(np.exp(1j * ph))
 
 
-def add_orders(res, torque: np.ndarray, theta0: float, highest: int, prefix: str,
+def add_orders(res, torque, theta0: float, highest: int, prefix: str,
                what: str):
     """Order metrics ``<prefix>_n`` [N m] (angle = first maximum) and ``<prefix>_n_phase``."""
+    import numpy as np
+
+    from camtrain.camshaft import harmonic_orders
+
     harm = harmonic_orders(torque)
     phase = order_phases(harm, theta0)
     res.add_metric(f"{prefix}_0", harm.mean, "N*m", f"{what}: order 0, the mean torque")
@@ -65,14 +70,24 @@ def add_orders(res, torque: np.ndarray, theta0: float, highest: int, prefix: str
     return harm
 
 
-def run(deck, state) -> None:
+def run(deck, inputs, res):
+    import numpy as np
+
+    from camtrain.camshaft import drive_power, lobe_force, second_bank, shift_curve
+    from camtrain.camshaft.product import CamshaftLoads
+    from camtrain.contact.products import CamTorque, ContactFriction
+    from camtrain.formulas import cycle_mean
+    from camtrain.loads import ContactLoad
+    from camtrain.mechanisms import TrainKinematics
+
     cs = deck.camshaft
-    res = state.result
-    kin = state.objects["kinematics"]
+    kin = inputs[TrainKinematics].main
+    contact = inputs[ContactLoad]
     theta = res["cam_angle"]
     omega = abs(deck.speed.omega)
-    single, with_friction = lobe_torque(state)
-    if not with_friction:
+    torque = inputs.get(CamTorque)
+    single = lobe_torque(kin, contact.load, torque)
+    if torque is None:
         res.warn("camshaft torque without friction (W e only): the power effect did not run")
     bank1 = [lobe for lobe in cs.lobes if lobe.bank == 1]
     curves = [shift_curve(single, lobe.max_lift_angle) for lobe in bank1]
@@ -106,20 +121,24 @@ def run(deck, state) -> None:
         _dampers(deck, res, total, harm, omega)
 
     # lobe forces on the shaft for the bearings effect (this shaft's lobes only)
-    load = np.maximum(state.objects["load"], 0.0)
-    friction = state.objects.get("friction")
-    friction = np.zeros_like(load) if friction is None else np.asarray(friction, dtype=float)
+    load = np.maximum(contact.load, 0.0)
+    friction = inputs.get(ContactFriction)
+    friction = np.zeros_like(load) if friction is None else friction.main.force
     turn = 1.0 if cs.rotation == "anticlockwise" else -1.0
     # friction torque on the shaft opposes its rotation; positive tangential is z x axis
     signed = -turn * friction * np.sign(np.where(kin.friction_arm == 0, 1.0, kin.friction_arm))
     forces = [lobe_force(shift_curve(load, lobe.max_lift_angle),
                          shift_curve(signed, lobe.max_lift_angle), lobe.follower_axis_angle)
               for lobe in bank1]
-    state.objects["camshaft"] = {"torque": total, "lobe_torques": curves, "lobes": bank1,
-                                 "lobe_forces": forces, "omega": turn * omega}
+    return CamshaftLoads(torque=total, lobe_positions=tuple(lobe.position for lobe in bank1),
+                         lobe_forces=tuple(forces), omega=turn * omega)
 
 
 def _dampers(deck, res, total, harm, omega) -> None:
+    import numpy as np
+
+    from camtrain.camshaft import damper_motion, optimum_damper, pendulum_effective_inertia
+
     d = deck.camshaft.damper
     orders = [int(n) for n in d.orders]
     top = harm.order.size - 1

@@ -1,101 +1,68 @@
 """Film effect: minimum and central EHL film thickness and the film parameter lambda = h/sigma.
 
-With contact loads: Dowson & Higginson (1977) minimum and Dowson & Toyoda (1979) central film for
-line contacts (Ball 1988 eqs. 4.1, 4.2); Hamrock & Dowson (1977) or Chittenden et al. (1985) for
-point contacts. Without loads: the load-free rigid-piezoviscous (Blok) film of Dowson, Dunn &
-Taylor (1983), Ball eq. 4.3, as the minimum film. The entrainment speed is the mean (V_c+V_f)/2
-or, as Ball's "entraining velocity", the sum (``tribology.entrainment``); only |u| enters.
-Zero entrainment gives h = 0. Angles out of contact (no load) and non-Hertzian geometry give NaN.
+Physics: :func:`camtrain.contact.film.contact_film`. With a planned contact load the EHL film of
+each loaded pair (Ball 1988 eqs. 4.1, 4.2; Hamrock & Dowson 1977 or Chittenden et al. 1985 for
+point contacts); without, the load-free Blok film (Dowson, Dunn & Taylor 1983; Ball eq. 4.3).
+The plan says which, from the products it provides.
 """
 from __future__ import annotations
 
-import numpy as np
 
-from camtrain.effects.hertz import is_line, modulus
-from camtrain.formulas import film_parameter, film_thickness
-
-_CENTRAL = {"dowson_higginson_1977": "dowson_toyoda_1979",
-            "hamrock_dowson_1977_min": "hamrock_dowson_1977_cen",
-            "chittenden_1985_min": "chittenden_1985_cen"}
+def missing(deck) -> list[str]:
+    return [] if deck.lubricant is not None else ["lubricant (viscosity, pressure_viscosity)"]
 
 
-def entrainment(deck, kin) -> np.ndarray:
-    """|u| [m/s] by the deck's convention (mean or sum of the surface speeds)."""
-    u = kin.entrainment_sum if deck.tribology.entrainment == "sum" else kin.entrainment
-    return np.abs(u)
+def reason(deck, planned) -> str:
+    if "ContactLoad" in planned:
+        return "lubricant given and contact loads planned: EHL film with the contact load"
+    return ("lubricant given, no contact loads: Blok rigid-piezoviscous film, "
+            "which needs no load (Ball eq. 4.3)")
 
 
-def methods(deck, kin, with_load: bool) -> tuple[str, str | None]:
-    """(minimum-film method, central-film method or None)."""
-    chosen = deck.tribology.film_formula
-    if not with_load or chosen == "dowson_dunn_taylor_1983":
-        return "dowson_dunn_taylor_1983", None
-    if chosen == "auto":
-        chosen = "dowson_higginson_1977" if is_line(kin) else "hamrock_dowson_1977_min"
-    return chosen, _CENTRAL[chosen]
+def run(deck, inputs, res):
+    from camtrain.components import MAIN, column_prefix
+    from camtrain.contact.hertz import pair_deck
+    from camtrain.contact.products import ContactFilm
+    from camtrain.loads import ContactLoad
+    from camtrain.mechanisms import TrainKinematics
+
+    train, loads = inputs[TrainKinematics], inputs.get(ContactLoad)
+    pairs = loads.pairs() if loads is not None else ((MAIN, None),)
+    fields = []
+    for component, load in pairs:
+        film = run_pair(pair_deck(deck, component), train[component], load, res,
+                        column_prefix(component))
+        fields.append((component, film))
+    return ContactFilm(tuple(fields), with_load=loads is not None)
 
 
-def contact_film(deck, kin, load=None) -> dict:
-    """Per-angle ``min`` and ``central`` film [m] (central None for the Blok film)."""
-    lub = deck.lubricant
-    u = entrainment(deck, kin)
-    R, Ry = kin.radius_x, kin.radius_y
-    line = is_line(kin)
-    ok = (R > 0.0) & np.isfinite(R)
-    if not line:
-        ok &= (Ry > 0.0) & np.isfinite(Ry)
-    if load is not None:
-        ok &= np.asarray(load) > 0.0
-    m_min, m_cen = methods(deck, kin, load is not None)
-    common = dict(u=u[ok], eta0=lub.viscosity, alpha=lub.pressure_viscosity, E_r=modulus(deck))
-    if load is None:
-        inputs = dict(common, R=R[ok])
-    elif line:
-        inputs = dict(common, w=np.asarray(load)[ok] / deck.cam.width, R=R[ok])
-    else:
-        inputs = dict(common, W=np.asarray(load)[ok], Rx=R[ok], Ry=Ry[ok], R_e=R[ok],
-                      R_s=Ry[ok])
-    out = {"min": np.full(u.shape, np.nan), "central": None, "method": m_min,
-           "central_method": m_cen}
-    if np.any(ok):
-        out["min"][ok] = film_thickness(method=m_min, **inputs)
-    if m_cen is not None:
-        out["central"] = np.full(u.shape, np.nan)
-        if np.any(ok):
-            out["central"][ok] = film_thickness(method=m_cen, **inputs)
-    return out
+def run_pair(deck, kin, load, res, prefix: str = ""):
+    """Columns and metrics of one pair's film; returns its FilmField."""
+    import numpy as np
 
+    from camtrain.contact.film import contact_film
+    from camtrain.formulas import film_parameter
 
-def run(deck, state) -> None:
-    if state.objects.get("kinematics") is None:
-        from camtrain.effects.loads import get_kinematics
-        get_kinematics(deck, state)
-    from camtrain.effects.hertz import pairs
-    for prefix, pdeck, kin, load in pairs(deck, state):
-        state.objects[prefix + "film"] = run_pair(pdeck, kin, load, state.result, prefix)
-
-
-def run_pair(deck, kin, load, res, prefix: str = "") -> dict:
     tag = " (closing pair)" if prefix else ""
     film = contact_film(deck, kin, None if load is None else np.maximum(load, 0.0))
     what = "out of contact" if load is not None else "non-Hertzian geometry"
-    res.add_column(prefix + "film_min", film["min"], "m",
-                   f"minimum film thickness, {film['method']} (NaN: {what}){tag}")
-    if film["central"] is not None:
-        res.add_column(prefix + "film_central", film["central"], "m",
-                       f"central film thickness, {film['central_method']}{tag}")
-    lam = np.full(film["min"].shape, np.nan)
-    fin = np.isfinite(film["min"])
-    lam[fin] = film_parameter(film["min"][fin], deck.lubricant.roughness)
+    res.add_column(prefix + "film_min", film.min, "m",
+                   f"minimum film thickness, {film.method} (NaN: {what}){tag}")
+    if film.central is not None:
+        res.add_column(prefix + "film_central", film.central, "m",
+                       f"central film thickness, {film.central_method}{tag}")
+    lam = np.full(film.min.shape, np.nan)
+    fin = np.isfinite(film.min)
+    lam[fin] = film_parameter(film.min[fin], deck.lubricant.roughness)
     res.add_column(prefix + "lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
     if np.any(fin):
-        h = np.where(fin, film["min"], np.inf)
+        h = np.where(fin, film.min, np.inf)
         i = int(np.argmin(h))
         res.add_metric(prefix + "film_min", h[i], "m",
                        "smallest minimum film over the cycle" + tag, kin.theta[i])
     k = int(np.argmax(kin.valve_lift))
-    res.add_metric(prefix + "film_min_at_max_lift", film["min"][k], "m",
+    res.add_metric(prefix + "film_min_at_max_lift", film.min[k], "m",
                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
     if load is None:

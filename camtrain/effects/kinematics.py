@@ -1,17 +1,30 @@
-"""Kinematics effect: the lift law on the run's angle grid, then the follower kinematics."""
+"""Kinematics effect: the lift law on the run's angle grid, then the follower kinematics.
+
+Produces :class:`camtrain.mechanisms.TrainKinematics` (the only pair, or both pairs of a
+desmodromic train). Like every effect module, its top level imports no physics: numpy and the
+physics are imported where they are used, so that resolving a plan stays light.
+"""
 from __future__ import annotations
 
 from functools import lru_cache
 
-import numpy as np
 
-from camtrain.effects.lift_law import build_lift_law
-from camtrain.lift import angle_grid
+def missing(deck) -> list[str]:
+    return []
+
+
+def reason(deck, planned) -> str:
+    return f"always: {deck.lift.form} lift on a {deck.mechanism.type} follower"
+
 
 # Lift laws and their noise estimates depend only on the immutable [lift] model, so they are
 # built once per process: sweeps over speed, spring or geometry reuse them (a table law's spline
 # fit and noise estimate cost far more than the rest of a run).
-_cached_law = lru_cache(maxsize=32)(build_lift_law)
+@lru_cache(maxsize=32)
+def _cached_law(lift_model):
+    from camtrain.build.lift_law import build_lift_law
+
+    return build_lift_law(lift_model)
 
 
 @lru_cache(maxsize=32)
@@ -29,6 +42,10 @@ def lift_columns(deck, result, points: int | None = None):
 
     Returns the LiftLaw and the LiftCurve for later effects.
     """
+    import numpy as np
+
+    from camtrain.lift import angle_grid
+
     law = _cached_law(deck.lift)
     theta = angle_grid(points or deck.solver.angle_points)
     curve = law.evaluate(theta)
@@ -120,6 +137,8 @@ _COLUMNS = (
 
 def kinematics_columns(k, result, prefix: str = "") -> None:
     """Add the per-angle kinematics; ``prefix`` marks the closing pair of a desmodromic train."""
+    import numpy as np
+
     for name, attr, unit, description in _COLUMNS:
         values = getattr(k, attr)
         if name == "radius_y" and not np.any(np.isfinite(values)):
@@ -130,6 +149,8 @@ def kinematics_columns(k, result, prefix: str = "") -> None:
 
 def kinematics_metrics(deck, k, result, prefix: str = "") -> None:
     """Scalar results a valve-train engineer looks for first."""
+    import numpy as np
+
     theta = k.theta
     nose = int(np.argmax(k.valve_lift))
     label = " of the closing pair" if prefix else ""
@@ -164,8 +185,10 @@ def kinematics_metrics(deck, k, result, prefix: str = "") -> None:
                     "steady EHL film vanishes there (squeeze films are not modelled)")
 
 
-def zero_crossings(theta: np.ndarray, values: np.ndarray) -> list[float]:
+def zero_crossings(theta, values) -> list[float]:
     """Angles where a periodic per-angle quantity changes sign (linear interpolation)."""
+    import numpy as np
+
     v = np.asarray(values, dtype=float)
     v_next = np.roll(v, -1)
     t_next = np.roll(theta, -1).copy()
@@ -188,7 +211,8 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     """Cam lift converted to valve lift: depends only on the lift, the pivot geometry and the
     grid, so a sweep over other parameters converts once (the conversion is a root search per
     angle). The arrays are made read-only because they are shared between runs."""
-    from camtrain.effects.mechanism import valve_lift
+    from camtrain.build.mechanism import valve_lift
+    from camtrain.lift import angle_grid
 
     curve = _cached_law(lift_model).evaluate(angle_grid(points))
     valve = valve_lift(lift_model, mechanism, base_radius, curve)
@@ -197,17 +221,20 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     return valve
 
 
-def run(deck, state) -> None:
-    from camtrain.effects.mechanism import kinematics
+def run(deck, inputs, result):
+    from camtrain.build.mechanism import kinematics
+    from camtrain.components import CLOSING, MAIN
+    from camtrain.mechanisms import TrainKinematics
 
-    law, curve = lift_columns(deck, state.result)
+    law, curve = lift_columns(deck, result)
     valve = curve if deck.lift.measured_at == "valve" else _cached_valve_lift(
         deck.lift, deck.mechanism, deck.cam.base_radius, deck.solver.angle_points)
     opening, closing = kinematics(deck, valve)
-    kinematics_columns(opening, state.result)
-    kinematics_metrics(deck, opening, state.result)
+    kinematics_columns(opening, result)
+    kinematics_metrics(deck, opening, result)
+    pairs = ((MAIN, opening),)
     if closing is not None:
-        kinematics_columns(closing, state.result, "closing_")
-        kinematics_metrics(deck, closing, state.result, "closing_")
-    state.objects.update(lift_law=law, lift_curve=curve, valve_lift=valve,
-                         kinematics=opening, kinematics_closing=closing)
+        kinematics_columns(closing, result, "closing_")
+        kinematics_metrics(deck, closing, result, "closing_")
+        pairs += ((CLOSING, closing),)
+    return TrainKinematics(pairs)

@@ -1,49 +1,28 @@
 """Loads effect: cam/follower contact load per angle, friction/load iteration, loss of contact.
 
-Reads the mechanism's Kinematics from ``state.objects["kinematics"]`` and the deck's spring,
-masses and clearance; writes ``load[N]`` and ``valve_force[N]`` columns, the load metrics and the
-camshaft speed of valve bounce. Physics lives in :mod:`camtrain.loads`.
+Reads the train's kinematics and the deck's spring, masses and clearance; returns a
+:class:`camtrain.loads.ContactLoad` (model: the rigid train, Ball 1988 §4.2; or Ball App D for a
+desmodromic train) and writes ``load[N]`` and ``valve_force[N]`` columns, the load metrics and the
+camshaft speed of valve bounce. Physics lives in :mod:`camtrain.loads`; the friction of the
+friction/load iteration is the contact model's (:mod:`camtrain.contact.friction`).
 """
 from __future__ import annotations
 
-import numpy as np
-
-from camtrain.errors import CamtrainError
-from camtrain.loads import (
-    bounce_speed,
-    contact_load,
-    contact_mask,
-    desmodromic_loads,
-    iterate_load,
-    valve_force,
-)
-from camtrain.units import rad_s_to_rpm
+RIGID = "rigid valve train, D'Alembert balance (Ball 1988 §4.2)"
+DESMODROMIC = "rigid desmodromic train, both pairs (Ball 1988 App D)"
 
 
-def get_kinematics(deck, state):
-    """The run's Kinematics. Until the kinematics effect stores it, translating followers are
-    built here from the lift curve (pivoted and push-rod trains need the kinematics effect)."""
-    kin = state.objects.get("kinematics")
-    if kin is not None:
-        return kin
-    curve = state.objects.get("lift_curve")
-    mech = deck.mechanism
-    if curve is not None and mech.type in ("flat", "domed"):
-        from camtrain import mechanisms as M
-        if mech.type == "flat":
-            kin = M.flat_faced(curve, base_radius=deck.cam.base_radius, omega=deck.speed.omega,
-                               rotation=mech.rotation, offset=mech.offset,
-                               face_length=mech.face_length)
-        else:
-            kin = M.domed(curve, base_radius=deck.cam.base_radius,
-                          follower_radius=mech.follower_radius, omega=deck.speed.omega,
-                          rotation=mech.rotation, offset=mech.offset,
-                          min_concave_radius=mech.min_concave_radius,
-                          face_length=mech.face_length)
-        state.objects["kinematics"] = kin
-        return kin
-    raise CamtrainError(f"no follower kinematics available for a {mech.type} follower; the "
-                        "kinematics effect must provide them")
+def missing(deck) -> list[str]:
+    out = []
+    if deck.spring is None:
+        out.append("spring (rate, preload_compression)")
+    if deck.masses is None:
+        out.append("masses (valve_side)")
+    return out
+
+
+def reason(deck, planned) -> str:
+    return "spring and masses given"
 
 
 def body_inertia(deck) -> dict[str, float]:
@@ -70,13 +49,18 @@ def _friction_callback(deck, kin):
     """F(W) for the iteration when the friction chain has its data, else None (mu fixed)."""
     if deck.lubricant is None or deck.cam.width is None:
         return None
-    from camtrain.effects.friction import contact_friction
-    return lambda load: contact_friction(deck, kin, load)["friction"]
+    from camtrain.contact.friction import contact_friction
+
+    return lambda load: contact_friction(deck, kin, load).force
 
 
 def solve_loads(deck, kin):
     """LoadSolution for the deck: one pass for followers without a friction arm, otherwise
     Ball's friction/load iteration (§4.2.3.2) started at the boundary coefficient."""
+    import numpy as np
+
+    from camtrain.loads import contact_load, iterate_load
+
     kw = load_inputs(deck)
     trib = deck.tribology
     depends = bool(np.any(kin.arm_friction != 0.0))
@@ -87,10 +71,14 @@ def solve_loads(deck, kin):
                         depends_on_mu=depends)
 
 
-def run_desmodromic(deck, state) -> None:
+def run_desmodromic(deck, train, res):
     """Ball App D loads of both pairs; no bounce speed: the closing cam controls the valve."""
-    kin, closing = state.objects["kinematics"], state.objects["kinematics_closing"]
-    res = state.result
+    import numpy as np
+
+    from camtrain.components import CLOSING, MAIN
+    from camtrain.loads import ContactLoad, desmodromic_loads
+
+    kin, closing = train[MAIN], train[CLOSING]
     s = deck.spring.rate * deck.spring.preload_compression
     kw = load_inputs(deck)
     d = desmodromic_loads(kin, closing, closing_spring=s, valve_mass=deck.masses.valve_side,
@@ -120,14 +108,21 @@ def run_desmodromic(deck, state) -> None:
         deg = np.degrees(kin.theta[d.jammed])
         res.warn(f"desmodromic train jams: a pair cannot carry its load (load ratio <= 0) at "
                  f"{int(d.jammed.sum())} angles between {deg.min():.1f} and {deg.max():.1f} deg")
-    state.objects.update(load=d.opening, closing_load=d.closing, desmodromic_loads=d)
+    return ContactLoad(load=d.opening, in_contact=np.asarray(d.in_control) > 0,
+                       model=DESMODROMIC, closing=d.closing)
 
 
-def run(deck, state) -> None:
+def run(deck, inputs, res):
+    import numpy as np
+
+    from camtrain.loads import ContactLoad, bounce_speed, contact_mask, valve_force
+    from camtrain.mechanisms import TrainKinematics
+    from camtrain.units import rad_s_to_rpm
+
+    train = inputs[TrainKinematics]
     if deck.mechanism.type == "desmodromic":
-        return run_desmodromic(deck, state)
-    kin = get_kinematics(deck, state)
-    res = state.result
+        return run_desmodromic(deck, train, res)
+    kin = train.main
     sol = solve_loads(deck, kin)
     kw = load_inputs(deck)
     load = sol.load
@@ -161,6 +156,5 @@ def run(deck, state) -> None:
     if sol.friction is None and np.any(kin.arm_friction != 0.0):
         res.warn("friction/load iteration skipped (no lubricant or cam width): loads use the "
                  f"boundary coefficient {deck.tribology.boundary_friction:g} everywhere")
-    state.objects["kinematics"] = kin
-    state.objects["load_solution"] = sol
-    state.objects["load"] = load
+    return ContactLoad(load=load, in_contact=inside, model=RIGID,
+                       friction=sol.friction, mu=sol.mu, iterations=sol.iterations)

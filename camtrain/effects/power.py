@@ -3,32 +3,49 @@
 H(theta) = F r omega with r the arm of the friction force about the cam axis (Ball 1988 eq. 4.8;
 r = r_B + l for a flat follower) and the cycle mean of eq. 4.9 (trapezoidal rule, spectrally
 accurate on the periodic grid). The total torque adds the normal-load torque W e. A desmodromic
-train reports both pairs (closing pair prefixed ``closing_``) and their sum. With a ``[guides]``
-section the follower/guide and valve/guide shear losses are added (:mod:`camtrain.effects.guides`).
+train reports both pairs (closing pair prefixed ``closing_``) and their sum. The guide losses are
+the ``guides`` effect's.
 """
 from __future__ import annotations
 
-import numpy as np
 
-from camtrain.effects.hertz import label, pairs
-from camtrain.formulas import cam_torque, cycle_mean, friction_torque
-
-
-def run(deck, state) -> None:
-    total = 0.0
-    for prefix, _, kin, load in pairs(deck, state):
-        total += run_pair(kin, load, state.objects[prefix + "friction"], state.result, prefix)
-    if state.objects.get("kinematics_closing") is not None:
-        state.result.add_metric("power_loss_total", total, "W", "cycle-mean friction power of "
-                                "both cam/follower pairs of the desmodromic train")
-    if getattr(deck, "guides", None) is not None:
-        from camtrain.effects.guides import run as run_guides
-        run_guides(deck, state)
+def missing(deck) -> list[str]:
+    return []
 
 
-def run_pair(kin, load, force, res, prefix: str = "") -> float:
-    """Columns and metrics of one pair; returns its cycle-mean friction power [W]."""
-    tag = label(prefix)
+def reason(deck, planned) -> str:
+    return "friction available"
+
+
+def run(deck, inputs, res):
+    from camtrain.components import MAIN, column_prefix
+    from camtrain.contact.products import CamTorque, ContactFriction
+    from camtrain.loads import ContactLoad
+    from camtrain.mechanisms import TrainKinematics
+
+    train, loads = inputs[TrainKinematics], inputs[ContactLoad]
+    friction = inputs[ContactFriction]
+    total, main = 0.0, None
+    for component, load in loads.pairs():
+        mean, torques = run_pair(train[component], load, friction[component].force, res,
+                                 column_prefix(component))
+        total += mean
+        if component == MAIN:
+            main = torques
+    if len(loads.pairs()) > 1:
+        res.add_metric("power_loss_total", total, "W", "cycle-mean friction power of "
+                       "both cam/follower pairs of the desmodromic train")
+    return CamTorque(*main, total_power=total)
+
+
+def run_pair(kin, load, force, res, prefix: str = ""):
+    """Columns and metrics of one pair; returns its cycle-mean friction power [W] and its
+    (cam torque, friction torque, power) arrays."""
+    import numpy as np
+
+    from camtrain.formulas import cam_torque, cycle_mean, friction_torque
+
+    tag = " (closing pair)" if prefix else ""
     load = np.maximum(load, 0.0)
     tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
     total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
@@ -51,4 +68,4 @@ def run_pair(kin, load, force, res, prefix: str = "") -> float:
                    "followers)" + tag)
     res.add_metric(prefix + "cam_torque_mean", cycle_mean(total), "N*m",
                    "cycle-mean camshaft torque" + tag)
-    return mean
+    return mean, (total, tf, power)

@@ -4,7 +4,8 @@ from camtrain.loads.bounce import Bounce, bounce_speed, loss_of_contact
 from camtrain.loads.desmodromic import DesmodromicLoads, desmodromic_loads, handover_angles
 from camtrain.loads.forces import contact_load, contact_mask, load_parts, spring_force, valve_force
 from camtrain.loads.iteration import LoadSolution, iterate_load
+from camtrain.loads.product import ContactLoad
 
-__all__ = ["Bounce", "DesmodromicLoads", "LoadSolution", "bounce_speed", "contact_load",
+__all__ = ["Bounce", "ContactLoad", "DesmodromicLoads", "LoadSolution", "bounce_speed", "contact_load",
            "contact_mask", "desmodromic_loads", "handover_angles", "iterate_load", "load_parts",
            "loss_of_contact", "spring_force", "valve_force"]

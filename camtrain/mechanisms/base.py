@@ -44,6 +44,7 @@ from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
+from camtrain.components import ByPair
 from camtrain.errors import field_error
 from camtrain.lift.base import LiftCurve
 
@@ -224,3 +225,11 @@ def cross(ax, ay, bx, by):
 def wrap_angle(a: np.ndarray) -> np.ndarray:
     """Wrap angles to (-pi, pi]."""
     return np.pi - np.mod(np.pi - a, 2.0 * np.pi)
+
+
+
+@dataclass(frozen=True)
+class TrainKinematics(ByPair[Kinematics]):
+    """Contact kinematics of every cam/follower pair of a valve train (the kinematics effect's
+    product): the only pair, or the opening (``main``) and ``closing`` pair of a desmodromic
+    train."""

@@ -5,6 +5,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from camtrain.deck.load import LoadedDeck
@@ -35,10 +36,9 @@ def print_plan(console: Console, plan: Plan, timings: dict[str, float] | None = 
         table.add_column(name, overflow="fold", justify="right" if name == "time" else "left")
     for step in plan.steps:
         runs = "yes" if step.chosen else "no"
-        if step.chosen and not step.available:
-            runs = "[yellow]not available yet[/]"
         t = (timings or {}).get(step.effect)
-        table.add_row(step.effect, runs, "" if t is None else f"{t * 1e3:.1f} ms", step.reason)
+        table.add_row(step.effect, runs, "" if t is None else f"{t * 1e3:.1f} ms",
+                      escape(step.reason))
     console.print(table)
 
 

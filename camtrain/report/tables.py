@@ -36,7 +36,6 @@ def summary_dict(result: Result, deck: LoadedDeck, wall_time: float, checks=None
         "camtrain_version": __version__,
         "deck": {"path": deck.path, "sha256": deck.sha256, "title": deck.model.title},
         "plan": result.plan.as_dict() if result.plan is not None else None,
-        "not_available": list(result.not_available),
         "metrics": metrics,
         "warnings": list(result.warnings),
         "findings": find(result).as_dict(),

@@ -56,8 +56,6 @@ def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
         lines += [_rule(f"PLAN ({result.plan.mode})", "-")]
         for s in result.plan.steps:
             runs = "runs" if s.chosen else "skipped"
-            if s.chosen and not s.available:
-                runs = "not available"
             t = result.timings.get(s.effect)
             when = f"{t * 1e3:8.1f} ms" if t is not None else " " * 11
             lines.append(f"  {s.effect:<12} {runs:<14} {when}  {s.reason}")
@@ -76,11 +74,9 @@ def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
         lines += [_rule("DESIGN LIMITS", "-")]
         lines += [f"  {'ok  ' if c.ok else 'FAIL'}  {c.text()}" for c in checks] + [""]
     findings = find(result).messages(result.warnings)
-    if result.warnings or findings or result.not_available:
+    if result.warnings or findings:
         lines += [_rule("WARNINGS", "-")]
         lines += [f"  * {w}" for w in result.warnings + findings]
-        lines += [f"  * not computed: {n}" for n in result.not_available if
-                  not any(n in w for w in result.warnings)]
         lines.append("")
     lines += _cycle_table(result, step_deg)
     return "\n".join(lines).rstrip() + "\n"

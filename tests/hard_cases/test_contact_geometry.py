@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from camtrain import mechanisms as M
+from camtrain.build.lift_law import build_lift_law
+from camtrain.contact.film import contact_film
+from camtrain.contact.hertz import contact_hertz
 from camtrain.deck.load import load_deck
-from camtrain.effects.film import contact_film
-from camtrain.effects.hertz import contact_hertz
-from camtrain.effects.lift_law import build_lift_law
 from camtrain.errors import GeometryError
 from camtrain.lift import angle_grid
 
@@ -109,9 +109,9 @@ def test_conformal_contact_r_c_to_minus_r_f(harrison_curve):
     with np.errstate(all="raise"):
         hz = contact_hertz(deck, kin, load)
         film = contact_film(deck, kin, load)
-    pmax = np.asarray(hz["pmax"])
+    pmax = np.asarray(hz.pmax)
     assert np.isfinite(pmax[i]) and 0 < pmax[i] < np.median(pmax[load > 0])  # flatter contact
-    assert np.isfinite(film["min"][i]) and film["min"][i] > 0
+    assert np.isfinite(film.min[i]) and film.min[i] > 0
 
 
 def test_sharp_nose_r_c_to_zero():

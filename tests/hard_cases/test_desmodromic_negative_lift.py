@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from camtrain.build.lift_law import build_lift_law
+from camtrain.build.mechanism import closing_geometry, pivot_geometry
 from camtrain.deck.load import load_deck
-from camtrain.effects.lift_law import build_lift_law
-from camtrain.effects.mechanism import closing_geometry, pivot_geometry
 from camtrain.lift import LiftCurve, angle_grid
 from camtrain.mechanisms import desmodromic
 

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 from camtrain import mechanisms as M
+from camtrain.build.lift_law import build_lift_law
 from camtrain.deck.load import load_deck
-from camtrain.effects.lift_law import build_lift_law
 from camtrain.lift import angle_grid
 
 DECKS = Path(__file__).resolve().parents[2] / "decks"

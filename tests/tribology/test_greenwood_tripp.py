@@ -6,9 +6,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from camtrain.contact.friction import GT_LAMBDA_LIMIT, contact_friction, greenwood_tripp_friction
+from camtrain.contact.hertz import contact_hertz
 from camtrain.deck.load import load_deck
-from camtrain.effects.friction import GT_LAMBDA_LIMIT, contact_friction, greenwood_tripp_friction
-from camtrain.effects.hertz import contact_hertz
 from camtrain.formulas import ball_1988_shear_force
 from camtrain.runner import run_plan
 from tests.tribology.conftest import DECKS, harrison_kinematics
@@ -40,8 +40,8 @@ def harrison():
 def newtonian(deck, kin, hz, h, load):
     lub = deck.lubricant
     return np.asarray(ball_1988_shear_force(np.abs(kin.sliding), h, lub.viscosity,
-                                            lub.pressure_viscosity, hz["pmax"],
-                                            hz["half_width"], deck.cam.width), dtype=float)
+                                            lub.pressure_viscosity, hz.pmax,
+                                            hz.half_width, deck.cam.width), dtype=float)
 
 
 def test_thick_film_limit_is_the_viscous_result(harrison):
@@ -49,7 +49,7 @@ def test_thick_film_limit_is_the_viscous_result(harrison):
     deck, kin, load, use, hz = harrison
     h = np.full(load.shape, 50.0 * deck.lubricant.roughness)      # lambda = 50
     f = greenwood_tripp_friction(deck, hz, h, np.abs(kin.sliding), load, use)
-    area = 2.0 * hz["half_width"] * deck.cam.width
+    area = 2.0 * hz.half_width * deck.cam.width
     lim = 2.0e6 * area + 0.08 * load
     np.testing.assert_allclose(f, np.minimum(newtonian(deck, kin, hz, h, load), lim), rtol=1e-12)
     # with a very strong fluid the result is the Newtonian (Ball eq. 4.7) shear itself
@@ -76,7 +76,7 @@ def test_thin_film_adds_asperity_friction(harrison):
 
 def test_wired_through_contact_friction(harrison):
     deck, kin, load, _, _ = harrison
-    f = contact_friction(deck, kin, load)["friction"]
+    f = contact_friction(deck, kin, load).force
     cap = contact_friction(replace(deck, tribology=replace(deck.tribology,
                                                            friction_model="cap")), kin, load)
-    assert np.all(np.isfinite(f)) and not np.allclose(f, cap["friction"])
+    assert np.all(np.isfinite(f)) and not np.allclose(f, cap.force)

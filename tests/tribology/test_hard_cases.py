@@ -7,8 +7,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from camtrain.effects.film import contact_film
-from camtrain.effects.friction import contact_friction
+from camtrain.contact.film import contact_film
+from camtrain.contact.friction import contact_friction
 from camtrain.loads import bounce_speed
 from camtrain.runner import run_plan
 
@@ -29,9 +29,9 @@ def test_entrainment_exactly_zero(harrison_deck, harrison_kin):
     with np.errstate(all="raise"):
         film = contact_film(harrison_deck, kin, load)
         fr = contact_friction(harrison_deck, kin, load)
-    assert film["min"][i] == 0.0 and film["central"][i] == 0.0
-    assert fr["friction"][i] == pytest.approx(0.08 * 300.0)
-    assert np.all(np.isfinite(fr["friction"]))
+    assert film.min[i] == 0.0 and film.central[i] == 0.0
+    assert fr.force[i] == pytest.approx(0.08 * 300.0)
+    assert np.all(np.isfinite(fr.force))
 
 
 @pytest.mark.parametrize("factor", [1 - 1e-9, 1 - 1e-4])

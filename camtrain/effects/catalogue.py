@@ -1,0 +1,127 @@
+"""The one catalogue of effects, products and deck kinds: plain data, no physics imported.
+
+Reading this file tells what camtrain can compute. An **effect** is one module (``module``)
+exposing three functions::
+
+    missing(deck) -> list[str]            # deck data it lacks ([] = it can run)
+    reason(deck, planned) -> str          # why it runs, for the plan; ``planned`` = the product
+                                          # names the plan provides (to explain optional inputs)
+    run(deck, inputs, result) -> product or tuple of products
+
+``needs`` are the products it cannot run without, ``uses`` optional products it takes when the
+plan provides them (its ``reason`` says which way it went), ``produces`` what it returns: the
+runner checks the returned objects against these names. Effects never import each other; they
+meet only through products. Several effects may offer the same product (rigid-train loads and
+dynamic loads; steady and transient film): the plan takes the highest ``rank`` whose data are
+present (ties: the first listed) and says why. The order of a run is a topological sort over
+products. Modules are imported only when a plan is resolved (their top level imports no numpy)
+or run.
+
+A **product** is a frozen dataclass living beside its physics; ``PRODUCTS`` maps its name to
+where it lives. A **deck kind** is a schema plus its effects (``KINDS``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class EffectSpec:
+    """One registered effect (see the module docstring)."""
+
+    name: str
+    module: str
+    description: str
+    needs: tuple[str, ...] = ()
+    produces: tuple[str, ...] = ()
+    uses: tuple[str, ...] = ()
+    rank: int = 0
+
+
+#: product name -> "module:Class" (imported by the runner to check what an effect returns)
+PRODUCTS: dict[str, str] = {
+    "TrainKinematics": "camtrain.mechanisms.base:TrainKinematics",
+    "ContactLoad": "camtrain.loads.product:ContactLoad",
+    "ContactHertz": "camtrain.contact.products:ContactHertz",
+    "ContactFilm": "camtrain.contact.products:ContactFilm",
+    "ContactFriction": "camtrain.contact.products:ContactFriction",
+    "CamTorque": "camtrain.contact.products:CamTorque",
+    "GuideLosses": "camtrain.contact.guides:GuideLosses",
+    "CamshaftLoads": "camtrain.camshaft.product:CamshaftLoads",
+    "BearingOrbits": "camtrain.bearings.product:BearingOrbits",
+}
+
+VALVE_TRAIN: tuple[EffectSpec, ...] = (
+    EffectSpec("kinematics", "camtrain.effects.kinematics",
+               "lift law and follower kinematics: lift and derivatives, contact point, r_c, R, "
+               "surface, entrainment and sliding velocities",
+               produces=("TrainKinematics",)),
+    EffectSpec("loads", "camtrain.effects.loads",
+               "contact load from the rigid-train D'Alembert balance; loss of contact",
+               needs=("TrainKinematics",), produces=("ContactLoad",)),
+    EffectSpec("hertz", "camtrain.effects.hertz",
+               "Hertz contact half-width and maximum pressure",
+               needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",)),
+    EffectSpec("film", "camtrain.effects.film",
+               "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
+               needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",)),
+    EffectSpec("friction", "camtrain.effects.friction",
+               "friction force and coefficient: viscous shear capped by boundary friction",
+               needs=("TrainKinematics", "ContactLoad", "ContactHertz", "ContactFilm"),
+               produces=("ContactFriction",)),
+    EffectSpec("power", "camtrain.effects.power",
+               "friction torque about the cam axis and power loss",
+               needs=("TrainKinematics", "ContactLoad", "ContactFriction"),
+               produces=("CamTorque",)),
+    EffectSpec("guides", "camtrain.effects.guides",
+               "follower/guide and valve/guide Couette shear losses (Yang 1992 eq. 3.29)",
+               needs=("TrainKinematics",), produces=("GuideLosses",)),
+    EffectSpec("camshaft_torque", "camtrain.effects.camshaft",
+               "camshaft: lobe torques phased and summed, drive power, harmonic orders, second "
+               "bank, pendulum dampers",
+               needs=("TrainKinematics", "ContactLoad"), uses=("ContactFriction", "CamTorque"),
+               produces=("CamshaftLoads",)),
+    EffectSpec("bearings", "camtrain.effects.bearings",
+               "camshaft bearings: lobe and drive forces split as beams, journal orbits (Booker "
+               "mobility), minimum film and power",
+               needs=("CamshaftLoads",), produces=("BearingOrbits",)),
+)
+
+JOURNAL_BEARING: tuple[EffectSpec, ...] = (
+    EffectSpec("journal_bearing", "camtrain.effects.journal_bearing",
+               "journal orbit, minimum film and power of one bearing under its load diagram",
+               produces=("BearingOrbits",)),
+)
+
+
+@dataclass(frozen=True)
+class DeckKind:
+    """A deck kind: its top-level ``kind`` name, its schema class ("module:Class") and its
+    effects."""
+
+    name: str
+    schema: str
+    effects: tuple[EffectSpec, ...]
+
+
+#: every deck kind, by the name a deck gives in ``kind = "..."`` (valve_train is the default)
+KINDS: dict[str, DeckKind] = {k.name: k for k in (
+    DeckKind("valve_train", "camtrain.deck.schema:Deck", VALVE_TRAIN),
+    DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING),
+)}
+DEFAULT_KIND = "valve_train"
+
+
+def effect_names(kind: str = DEFAULT_KIND) -> tuple[str, ...]:
+    """Names of the effects a deck of ``kind`` may list in ``effects``."""
+    return tuple(e.name for e in KINDS[kind].effects)
+
+
+def kind_of(deck) -> DeckKind:
+    """The deck kind whose schema class ``deck`` is (or derives from)."""
+    for cls in type(deck).__mro__:
+        path = f"{cls.__module__}:{cls.__qualname__}"
+        for kind in KINDS.values():
+            if kind.schema == path:
+                return kind
+    raise TypeError(f"{type(deck).__name__} is not the schema of a registered deck kind")

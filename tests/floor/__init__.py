@@ -1,0 +1,1 @@
+"""Tests of the middle floor: catalogue, plan, runner, products, imports."""
