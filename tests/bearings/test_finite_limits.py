@@ -204,3 +204,18 @@ def test_jfo_fallback_newton_agrees_with_the_switch():
     b = rey._jfo(A, C, rhs, fixed, values, p0, 1e-12, 400)
     assert np.allclose(a[0], b[0], atol=1e-8 * a[0].max())
     assert np.allclose(a[1], b[1], atol=1e-8)
+
+
+def test_short_film_ratio_grows_with_b_over_d_and_load():
+    """The validity map of docs/bearings.md: the short bearing is optimistic (ratio > 1), more so
+    at longer bearings and heavier loads (lower S), and exact as b/d -> 0 (within 3.5 % at b/d 0.05,
+    S >= 0.1)."""
+    from camtrain.bearings.validity import short_film_ratio
+
+    s = [1.0, 0.1, 0.03]
+    short = short_film_ratio(0.05, s[:2])
+    r25, r50 = short_film_ratio(0.25, s), short_film_ratio(0.5, s)
+    assert np.all(short > 1.0) and np.all(short < 1.035)
+    assert np.all(np.diff(r25) > 0) and np.all(np.diff(r50) > 0)
+    assert np.all(r50 > r25)
+    assert r50[1] == pytest.approx(1.256, abs=0.01)  # regression of the documented table
