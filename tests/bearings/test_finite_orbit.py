@@ -105,3 +105,32 @@ def test_map_tables_are_cached_in_process_and_on_disk(tmp_path, monkeypatch):
     assert len(files) == 1
     b = _correction_table.__wrapped__(0.05, "reynolds", 72, 6, True)
     assert np.array_equal(a[2], b[2])
+
+
+def test_finite_steady_locus_matches_the_steady_solve():
+    """The quasi-static finite locus interpolates a cached F(eps) curve: within 0.3 % in eps and
+    0.3 deg of the full eccentricity search at each angle (loads 100-3000 N)."""
+    from camtrain.bearings.models import finite_steady_orbit
+
+    brg = JournalBearing(25e-3, 18e-3, 25e-6, 0.01)
+    w = 1500 * RPM
+    loads = np.array([100.0, 500.0, 1500.0, 3000.0])
+    th = np.arange(4) * (math.pi / 2)
+    o = finite_steady_orbit(brg, np.zeros(4), -loads, th, w)
+    for i, load in enumerate(loads):
+        s = finite_steady(brg, load, w)
+        assert o.eccentricity[i] == pytest.approx(s.eccentricity, rel=3e-3)
+        assert math.degrees(o.attitude[i]) == pytest.approx(math.degrees(s.attitude), abs=0.3)
+
+
+def test_model_choice_and_reasons():
+    from camtrain.bearings.models import choose_model
+
+    long_ = JournalBearing(25e-3, 18e-3, 25e-6, 0.01)
+    tiny = JournalBearing(50e-3, 2.0e-3, 25e-6, 0.01)
+    assert choose_model(long_)[0] == "finite" and "0.72" in choose_model(long_)[1]
+    assert choose_model(tiny)[0] == "short"
+    assert choose_model(long_, "short")[0] == "short"
+    assert choose_model(tiny, "finite")[0] == "finite"
+    with pytest.raises(Exception, match="model"):
+        choose_model(long_, "long")
