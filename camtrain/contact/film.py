@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from camtrain.contact.hertz import is_line, modulus
+from camtrain.contact.hertz import is_line
 from camtrain.contact.products import FilmField
 from camtrain.formulas import film_thickness
 
@@ -20,15 +20,16 @@ _CENTRAL = {"dowson_higginson_1977": "dowson_toyoda_1979",
             "chittenden_1985_min": "chittenden_1985_cen"}
 
 
-def entrainment(deck, kin) -> np.ndarray:
-    """|u| [m/s] by the deck's convention (mean or sum of the surface speeds)."""
-    u = kin.entrainment_sum if deck.tribology.entrainment == "sum" else kin.entrainment
+def entrainment(tribology, kin) -> np.ndarray:
+    """|u| [m/s] by the deck's convention (``tribology.entrainment``: mean or sum of the surface
+    speeds)."""
+    u = kin.entrainment_sum if tribology.entrainment == "sum" else kin.entrainment
     return np.abs(u)
 
 
-def methods(deck, kin, with_load: bool) -> tuple[str, str | None]:
-    """(minimum-film method, central-film method or None)."""
-    chosen = deck.tribology.film_formula
+def methods(tribology, kin, with_load: bool) -> tuple[str, str | None]:
+    """(minimum-film method, central-film method or None) of the closed-form formulas."""
+    chosen = tribology.film_formula
     if not with_load or chosen == "dowson_dunn_taylor_1983":
         return "dowson_dunn_taylor_1983", None
     if chosen == "auto":
@@ -36,10 +37,11 @@ def methods(deck, kin, with_load: bool) -> tuple[str, str | None]:
     return chosen, _CENTRAL[chosen]
 
 
-def contact_film(deck, kin, load=None) -> FilmField:
-    """Per-angle film of one pair; ``load`` None gives the load-free Blok film."""
-    lub = deck.lubricant
-    u = entrainment(deck, kin)
+def steady_film(contact, kin, load=None) -> FilmField:
+    """Per-angle steady film of one pair from the closed-form formulas (the ``steady`` film law
+    of :mod:`camtrain.contact.model`); ``load`` None gives the load-free Blok film."""
+    lub = contact.lubricant
+    u = entrainment(contact.tribology, kin)
     R, Ry = kin.radius_x, kin.radius_y
     line = is_line(kin)
     ok = (R > 0.0) & np.isfinite(R)
@@ -47,12 +49,13 @@ def contact_film(deck, kin, load=None) -> FilmField:
         ok &= (Ry > 0.0) & np.isfinite(Ry)
     if load is not None:
         ok &= np.asarray(load) > 0.0
-    m_min, m_cen = methods(deck, kin, load is not None)
-    common = dict(u=u[ok], eta0=lub.viscosity, alpha=lub.pressure_viscosity, E_r=modulus(deck))
+    m_min, m_cen = methods(contact.tribology, kin, load is not None)
+    common = dict(u=u[ok], eta0=lub.viscosity, alpha=lub.pressure_viscosity,
+                  E_r=contact.reduced_modulus)
     if load is None:
         inputs = dict(common, R=R[ok])
     elif line:
-        inputs = dict(common, w=np.asarray(load)[ok] / deck.cam.width, R=R[ok])
+        inputs = dict(common, w=np.asarray(load)[ok] / contact.width, R=R[ok])
     else:
         inputs = dict(common, W=np.asarray(load)[ok], Rx=R[ok], Ry=Ry[ok], R_e=R[ok],
                       R_s=Ry[ok])

@@ -8,29 +8,22 @@ Angles without load give zero size and pressure; angles where the contact is not
 """
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 
 from camtrain.contact.products import HertzField
-from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure, reduced_modulus
-
-
-def modulus(deck) -> float:
-    """Reduced modulus E' of the cam and follower materials [Pa]."""
-    m = deck.materials
-    return float(reduced_modulus(m.cam_modulus, m.cam_poisson, m.follower_modulus,
-                                 m.follower_poisson))
+from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure
 
 
 def is_line(kin) -> bool:
     return bool(np.all(np.isinf(kin.radius_y)))
 
 
-def contact_hertz(deck, kin, load) -> HertzField:
-    """Per-angle Hertz field of one pair under a per-angle load [N]."""
+def hertz_field(contact, kin, load) -> HertzField:
+    """Per-angle Hertz field of one pair (a :class:`camtrain.contact.model.CamContact`) under a
+    per-angle load [N]."""
     load = np.asarray(load, dtype=float)
-    E_r = modulus(deck)
+    E_r = contact.reduced_modulus
+    width = contact.width
     R, Ry = kin.radius_x, kin.radius_y
     line = is_line(kin)
     good_r = (R > 0.0) & np.isfinite(R) & (line | ((Ry > 0.0) & np.isfinite(Ry)))
@@ -39,30 +32,15 @@ def contact_hertz(deck, kin, load) -> HertzField:
     by = np.zeros_like(load)
     if np.any(use):
         if line:
-            h = hertz_line(load[use], R[use], E_r, L=deck.cam.width)
+            h = hertz_line(load[use], R[use], E_r, L=width)
             pmax[use], bx[use] = h.max_pressure, h.half_width
-            by[use] = 0.5 * deck.cam.width
+            by[use] = 0.5 * width
         else:
             h = hertz_point(load[use], R[use], Ry[use], E_r)
             bx[use], by[use], pmax[use] = h.a_x, h.a_y, h.max_pressure
-            if deck.tribology.hertz == "ball_1988":
+            if contact.tribology.hertz == "ball_1988":
                 pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], E_r,
                                                      method="ball_1988")
     bad = ~good_r & (load > 0.0)
     pmax[bad] = bx[bad] = by[bad] = np.nan
     return HertzField(pmax=pmax, half_width=bx, half_length=by, bad=bad, line=line)
-
-
-def closing_deck(deck):
-    """The deck as seen by the closing pair of a desmodromic train: its own cam width."""
-    c = deck.mechanism.closing
-    if c is None or c.width is None:
-        return deck
-    return replace(deck, cam=replace(deck.cam, width=c.width))
-
-
-def pair_deck(deck, component: str):
-    """The deck as one pair sees it (the closing pair has its own cam width)."""
-    from camtrain.components import CLOSING
-
-    return closing_deck(deck) if component == CLOSING else deck

@@ -1,7 +1,7 @@
 """Film effect: minimum and central EHL film thickness and the film parameter lambda = h/sigma.
 
-Physics: :func:`camtrain.contact.film.contact_film`. With a planned contact load the EHL film of
-each loaded pair (Ball 1988 eqs. 4.1, 4.2; Hamrock & Dowson 1977 or Chittenden et al. 1985 for
+Physics: the pair's :class:`camtrain.contact.model.CamContact` and its film law. With a planned
+contact load the EHL film of each loaded pair (Ball 1988 eqs. 4.1, 4.2; Hamrock & Dowson 1977 or Chittenden et al. 1985 for
 point contacts); without, the load-free Blok film (Dowson, Dunn & Taylor 1983; Ball eq. 4.3).
 The plan says which, from the products it provides.
 """
@@ -21,7 +21,7 @@ def reason(deck, planned) -> str:
 
 def run(deck, inputs, res):
     from camtrain.components import MAIN, column_prefix
-    from camtrain.contact.hertz import pair_deck
+    from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
@@ -30,21 +30,20 @@ def run(deck, inputs, res):
     pairs = loads.pairs() if loads is not None else ((MAIN, None),)
     fields = []
     for component, load in pairs:
-        film = run_pair(pair_deck(deck, component), train[component], load, res,
+        film = run_pair(CamContact.from_deck(deck, component), train[component], load, res,
                         column_prefix(component))
         fields.append((component, film))
     return ContactFilm(tuple(fields), with_load=loads is not None)
 
 
-def run_pair(deck, kin, load, res, prefix: str = ""):
+def run_pair(contact, kin, load, res, prefix: str = ""):
     """Columns and metrics of one pair's film; returns its FilmField."""
     import numpy as np
 
-    from camtrain.contact.film import contact_film
     from camtrain.formulas import film_parameter
 
     tag = " (closing pair)" if prefix else ""
-    film = contact_film(deck, kin, None if load is None else np.maximum(load, 0.0))
+    film = contact.film(kin, None if load is None else np.maximum(load, 0.0))
     what = "out of contact" if load is not None else "non-Hertzian geometry"
     res.add_column(prefix + "film_min", film.min, "m",
                    f"minimum film thickness, {film.method} (NaN: {what}){tag}")
@@ -53,7 +52,7 @@ def run_pair(deck, kin, load, res, prefix: str = ""):
                        f"central film thickness, {film.central_method}{tag}")
     lam = np.full(film.min.shape, np.nan)
     fin = np.isfinite(film.min)
-    lam[fin] = film_parameter(film.min[fin], deck.lubricant.roughness)
+    lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
     res.add_column(prefix + "lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
     if np.any(fin):

@@ -1,7 +1,7 @@
 """Friction effect: cam/follower friction force and coefficient around the cycle, every pair.
 
-Physics: :func:`camtrain.contact.friction.friction_field` on the planned Hertz field and film
-(the same function the friction/load iteration uses): Newtonian Barus shear over the Hertz zone
+Physics: the pair's :class:`camtrain.contact.model.CamContact` on the planned Hertz field and
+film (the same contact model the friction/load iteration uses): Newtonian Barus shear over the Hertz zone
 capped by boundary friction (Ball 1988 eqs. 4.4-4.7, §4.2.3.4; Yang 1992 eq. 3.24), or the
 Greenwood-Tripp mixed model (Teodorescu et al. 2005), by ``tribology.friction_model``.
 """
@@ -20,8 +20,7 @@ def run(deck, inputs, res):
     import numpy as np
 
     from camtrain.components import column_prefix, pair_label
-    from camtrain.contact.friction import friction_field
-    from camtrain.contact.hertz import pair_deck
+    from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
@@ -30,22 +29,21 @@ def run(deck, inputs, res):
     hertz, films = inputs[ContactHertz], inputs[ContactFilm]
     fields = []
     for component, load in loads.pairs():
-        pdeck, prefix, tag = pair_deck(deck, component), column_prefix(component), \
-            pair_label(component)
+        contact = CamContact.from_deck(deck, component)
+        prefix, tag = column_prefix(component), pair_label(component)
         load = np.maximum(load, 0.0)
-        field = friction_field(pdeck, train[component], load, hertz[component],
-                               films[component])
+        field = contact.friction(train[component], load, hertz[component], films[component])
         fields.append((component, field))
         force = field.force
         pos = load > 0.0
         mu = np.zeros_like(load)
         mu[pos] = force[pos] / load[pos]
         res.add_column(prefix + "friction_force", force, "N",
-                       f"cam/follower friction force ({pdeck.tribology.friction_model} model)"
+                       f"cam/follower friction force ({contact.friction_law} model)"
                        f"{tag}")
         res.add_column(prefix + "friction_coefficient", mu, "-",
                        "friction coefficient F/W (0 unloaded)" + tag)
-        capped = pos & (force >= pdeck.tribology.boundary_friction * load * (1.0 - 1e-12))
+        capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
         res.add_metric(prefix + "boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
         if not np.all(np.isfinite(force)):

@@ -1,6 +1,6 @@
 """Hertz effect: contact half-width and maximum pressure of every loaded pair.
 
-Physics: :func:`camtrain.contact.hertz.contact_hertz` (Ball 1988 eqs. 3.7-3.10, Hamrock &
+Physics: the pair's :class:`camtrain.contact.model.CamContact` (Ball 1988 eqs. 3.7-3.10, Hamrock &
 Dowson 1981). Writes ``hertz_pmax``, ``hertz_half_width`` (and ``hertz_half_length`` for a point
 contact) per pair; the closing pair of a desmodromic train is prefixed ``closing_``.
 """
@@ -19,7 +19,7 @@ def run(deck, inputs, res):
     import numpy as np
 
     from camtrain.components import column_prefix, pair_label
-    from camtrain.contact.hertz import contact_hertz, pair_deck
+    from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactHertz
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
@@ -28,7 +28,7 @@ def run(deck, inputs, res):
     fields = []
     for component, load in loads.pairs():
         kin, prefix = train[component], column_prefix(component)
-        hz = contact_hertz(pair_deck(deck, component), kin, np.maximum(load, 0.0))
+        hz = CamContact.from_deck(deck, component).hertz(kin, np.maximum(load, 0.0))
         fields.append((component, hz))
         tag = pair_label(component)
         res.add_column(prefix + "hertz_pmax", hz.pmax, "Pa", "maximum Hertz contact pressure" + tag)

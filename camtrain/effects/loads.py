@@ -49,9 +49,10 @@ def _friction_callback(deck, kin):
     """F(W) for the iteration when the friction chain has its data, else None (mu fixed)."""
     if deck.lubricant is None or deck.cam.width is None:
         return None
-    from camtrain.contact.friction import contact_friction
+    from camtrain.contact.model import CamContact
 
-    return lambda load: contact_friction(deck, kin, load).force
+    contact = CamContact.from_deck(deck)
+    return lambda load: contact.solve(kin, load).force
 
 
 def solve_loads(deck, kin):

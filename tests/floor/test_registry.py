@@ -7,8 +7,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from camtrain.contact.friction import contact_friction
-from camtrain.contact.hertz import contact_hertz
+from camtrain.contact.model import contact_friction, contact_hertz
 from camtrain.deck.load import load_deck
 from camtrain.effects.catalogue import KINDS, VALVE_TRAIN, EffectSpec, kind_of
 from camtrain.formulas import cycle_mean, friction_torque

@@ -7,8 +7,7 @@ import pytest
 
 from camtrain import mechanisms as M
 from camtrain.build.lift_law import build_lift_law
-from camtrain.contact.film import contact_film
-from camtrain.contact.hertz import contact_hertz
+from camtrain.contact.model import contact_film, contact_hertz
 from camtrain.deck.load import load_deck
 from camtrain.errors import GeometryError
 from camtrain.lift import angle_grid

@@ -7,8 +7,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from camtrain.contact.film import contact_film
-from camtrain.contact.friction import contact_friction
+from camtrain.contact.model import contact_film, contact_friction
 from camtrain.loads import bounce_speed
 from camtrain.runner import run_plan
 
