@@ -1,9 +1,9 @@
 """Film effect: minimum and central EHL film thickness and the film parameter lambda = h/sigma.
 
 Physics: the pair's :class:`camtrain.contact.model.CamContact` and its film law. With a planned
-contact load the EHL film of each loaded pair (Ball 1988 eqs. 4.1, 4.2; Hamrock & Dowson 1977 or Chittenden et al. 1985 for
-point contacts); without, the load-free Blok film (Dowson, Dunn & Taylor 1983; Ball eq. 4.3).
-The plan says which, from the products it provides.
+contact load the EHL film of each loaded pair (Ball 1988 eqs. 4.1, 4.2; Hamrock & Dowson 1977
+or Chittenden et al. 1985 for point contacts); without, the load-free Blok film (Dowson, Dunn &
+Taylor 1983; Ball eq. 4.3). The plan says which, from the products it provides.
 """
 from __future__ import annotations
 
