@@ -18,6 +18,7 @@ published limit.
 """
 from __future__ import annotations
 
+import functools
 import inspect
 
 import numpy as np
@@ -141,8 +142,15 @@ def film_thickness(method: str | None = None, **inputs):
     missing = [r for r in m.requires if r not in provided]
     if missing:
         raise ValueError(f"method {m.name!r} needs {', '.join(missing)}")
-    params = inspect.signature(m.func).parameters
+    params = _parameters(m.func)
     return out(m.func(**{k: v for k, v in inputs.items() if k in params and v is not None}))
+
+
+@functools.cache
+def _parameters(func) -> frozenset[str]:
+    """Argument names of a registered formula (cached: inspecting a signature costs more than
+    evaluating a film formula over a whole cam cycle)."""
+    return frozenset(inspect.signature(func).parameters)
 
 
 def film_thickness_methods(check_ranges: bool = True, kind: str | None = None, **inputs):
