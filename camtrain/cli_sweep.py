@@ -72,7 +72,8 @@ class _SweepCommand(click.Command):
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,
               help="Output directory (default: out/<deck name>_sweep).")
 @click.option("--jobs", "-j", type=int, default=None,
-              help="Worker processes (default: the CPUs available; 1 runs in this process).")
+              help="Processes: this one and N-1 workers (default: the CPUs available; 1 runs "
+                   "in this process).")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Run the cases on this Dask distributed scheduler, e.g. tcp://host:8786 "
                    "(needs camtrain[dask]).")

@@ -28,6 +28,16 @@ def _cached_law(lift_model):
 
 
 @lru_cache(maxsize=32)
+def _cached_curve(lift_model, points: int):
+    """The lift curve on the run's grid: depends only on the [lift] model and the grid, so a
+    sweep over anything else evaluates it once (arrays read-only: shared between runs)."""
+    curve = _cached_law(lift_model).evaluate(angle_grid(points))
+    for values in (curve.theta, curve.lift, curve.d1, curve.d2, curve.d3):
+        values.flags.writeable = False
+    return curve
+
+
+@lru_cache(maxsize=32)
 def _cached_noise(lift_model):
     return _cached_law(lift_model).noise_estimate()
 
@@ -47,8 +57,8 @@ def lift_columns(deck, result, points: int | None = None):
     from camtrain.lift import angle_grid
 
     law = _cached_law(deck.lift)
-    theta = angle_grid(points or deck.solver.angle_points)
-    curve = law.evaluate(theta)
+    curve = _cached_curve(deck.lift, points or deck.solver.angle_points)
+    theta = curve.theta
     where = "valve" if deck.lift.measured_at == "valve" else "cam (inspection follower)"
     result.add_column("cam_angle", theta, "rad", "cam angle from the maximum-lift position")
     result.add_column("lift", curve.lift, "m", f"lift at the {where}")
@@ -214,7 +224,7 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     from camtrain.build.mechanism import valve_lift
     from camtrain.lift import angle_grid
 
-    curve = _cached_law(lift_model).evaluate(angle_grid(points))
+    curve = _cached_curve(lift_model, points)
     valve = valve_lift(lift_model, mechanism, base_radius, curve)
     for arr in (valve.theta, valve.lift, valve.d1, valve.d2, valve.d3):
         arr.flags.writeable = False

@@ -9,10 +9,9 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
-from pathlib import Path
 
 from camtrain.errors import CamtrainError
-from camtrain.study.sweep import Case, Parameter, case_raw
+from camtrain.study.sweep import Case, Parameter
 
 #: Per-angle columns kept for the overlay plots (film, load, stress; lift for kinematics-only runs).
 OVERLAY_COLUMNS = ("film_min", "load", "hertz_pmax", "lift")
@@ -28,6 +27,9 @@ class Job:
     name: str
     base_dir: str
     keep_curves: bool = False
+    #: identity of the datum deck (:func:`camtrain.study.case_model.datum_key`), computed once
+    #: by the sweep so a worker recognises a deck it has already validated
+    datum: str = ""
 
 
 def _contact_lost(metrics: dict) -> bool:
@@ -38,17 +40,20 @@ def _contact_lost(metrics: dict) -> bool:
 def run_case(job: Job) -> dict:
     """Build, validate and run one case; never raises for a case that fails.
 
-    Returns a plain record: index, values, status (ok | lost_contact | failed | error), message,
-    metrics {name: (value, unit)} and, if asked, the overlay curves.
+    The datum deck is validated once per process and each case changes only its swept fields
+    (:mod:`camtrain.study.case_model`). Returns a plain record: index, values, status (ok |
+    lost_contact | failed | error), message, metrics {name: (value, unit)} and, if asked, the
+    overlay curves (the per-angle columns travel back only for those cases).
     """
-    from camtrain.deck.load import validate
     from camtrain.runner import run_plan
+    from camtrain.study.case_model import build_case_model
 
     record = {"index": job.case.index, "values": job.case.as_dict(), "status": "ok",
               "message": "", "metrics": {}, "curves": None}
     try:
-        raw = case_raw(job.raw, list(job.params), job.case)
-        result = run_plan(validate(raw, job.name, Path(job.base_dir)))
+        model = build_case_model(job.raw, list(job.params), job.case, job.name, job.base_dir,
+                                 job.datum)
+        result = run_plan(model)
     except CamtrainError as exc:
         record.update(status="failed", message=f"{type(exc).__name__}: {exc}")
         return record
@@ -85,28 +90,58 @@ class SerialExecutor:
         pass
 
 
+def run_chunk(fn: Callable, chunk: list) -> list:
+    """``fn`` over a chunk of jobs in one worker round trip."""
+    return [fn(job) for job in chunk]
+
+
 class ProcessExecutor:
-    """Local worker processes (``--jobs N``). Spawned, not forked: the parent may run threads
-    (the progress bar) and forking a threaded process can deadlock."""
+    """``--jobs N``: this process and N - 1 spawned workers share the cases.
+
+    The cases go out in small chunks (about eight per process); this process works through
+    chunks from the end of the queue while the workers start and take chunks from the front, so
+    the sweep begins at once and the workers' start-up is not paid as idle time; when the queue
+    is empty, chunks that no worker has started yet are taken back and run here. Workers are
+    spawned, not forked: the parent may run threads (the progress bar) and forking a threaded
+    process can deadlock. Results arrive in completion order (the output layer sorts by case).
+    """
 
     def __init__(self, jobs: int):
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor
 
         self.jobs = jobs
-        self.description = f"{jobs} worker processes"
-        self._pool = ProcessPoolExecutor(max_workers=jobs,
+        self.description = f"{jobs} processes (this one and {jobs - 1} workers)"
+        self._pool = ProcessPoolExecutor(max_workers=max(jobs - 1, 1),
                                          mp_context=multiprocessing.get_context("spawn"))
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
-        from concurrent.futures import as_completed
+        from collections import deque
+        from concurrent.futures import FIRST_COMPLETED, wait
 
-        futures = [self._pool.submit(fn, job) for job in jobs]
+        jobs = list(jobs)
+        size = max(1, min(100, len(jobs) // (8 * self.jobs)))
+        pending = deque(jobs[i:i + size] for i in range(0, len(jobs), size))
+        inflight: dict = {}
+        limit = 2 * (self.jobs - 1)
         try:
-            for fut in as_completed(futures):
-                yield fut.result()
+            while pending or inflight:
+                while pending and len(inflight) < limit:
+                    chunk = pending.popleft()
+                    inflight[self._pool.submit(run_chunk, fn, chunk)] = chunk
+                for fut in [f for f in inflight if f.done()]:
+                    del inflight[fut]
+                    yield from fut.result()
+                if pending:
+                    yield from run_chunk(fn, pending.pop())
+                    continue
+                idle = [f for f in inflight if f.cancel()]   # not started by any worker
+                for fut in idle:
+                    yield from run_chunk(fn, inflight.pop(fut))
+                if inflight and not idle:
+                    wait(list(inflight), return_when=FIRST_COMPLETED)
         finally:
-            for fut in futures:
+            for fut in inflight:
                 fut.cancel()
 
     def close(self) -> None:

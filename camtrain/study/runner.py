@@ -131,9 +131,12 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     if own:
         jobs = min(jobs, len(todo)) if jobs else jobs
         executor = make_executor(jobs, scheduler)
+    from camtrain.study.case_model import datum_key
+
+    key = datum_key(sweep.raw, sweep.name, sweep.base_dir)
     jobs_list = [Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
-                     c.index in keep) for c in todo]
-    last = time.monotonic()
+                     c.index in keep, key) for c in todo]
+    last, cost = time.monotonic(), 0.0
     try:
         if todo:
             for rec in executor.map(run_case, jobs_list):
@@ -142,9 +145,13 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
                 done[rec["index"]] = rec
                 if progress:
                     progress(rec, len(done), total)
-                if time.monotonic() - last > 1.0:
+                # at most once a second, and never more than a tenth of the time: the table
+                # grows with the sweep, so a fast sweep would otherwise spend its time here
+                if time.monotonic() - last > max(1.0, 10.0 * cost):
+                    tick = time.monotonic()
                     so.write_csv(csv_path, sweep.params, list(done.values()))
                     last = time.monotonic()
+                    cost = last - tick
     finally:
         so.write_csv(csv_path, sweep.params, list(done.values()))
         if own:
