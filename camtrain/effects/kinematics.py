@@ -31,6 +31,8 @@ def _cached_law(lift_model):
 def _cached_curve(lift_model, points: int):
     """The lift curve on the run's grid: depends only on the [lift] model and the grid, so a
     sweep over anything else evaluates it once (arrays read-only: shared between runs)."""
+    from camtrain.lift import angle_grid
+
     curve = _cached_law(lift_model).evaluate(angle_grid(points))
     for values in (curve.theta, curve.lift, curve.d1, curve.d2, curve.d3):
         values.flags.writeable = False
@@ -53,8 +55,6 @@ def lift_columns(deck, result, points: int | None = None):
     Returns the LiftLaw and the LiftCurve for later effects.
     """
     import numpy as np
-
-    from camtrain.lift import angle_grid
 
     law = _cached_law(deck.lift)
     curve = _cached_curve(deck.lift, points or deck.solver.angle_points)
@@ -222,7 +222,6 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     grid, so a sweep over other parameters converts once (the conversion is a root search per
     angle). The arrays are made read-only because they are shared between runs."""
     from camtrain.build.mechanism import valve_lift
-    from camtrain.lift import angle_grid
 
     curve = _cached_curve(lift_model, points)
     valve = valve_lift(lift_model, mechanism, base_radius, curve)
