@@ -46,3 +46,8 @@ def column_prefix(component: str) -> str:
 def pair_label(component: str) -> str:
     """Text appended to a pair's descriptions: none for the main pair."""
     return "" if component == MAIN else f" ({component} pair)"
+
+
+def result_component(component: str) -> str | None:
+    """The component of a pair in a Result: None for the main pair (the train itself)."""
+    return None if component == MAIN else component

@@ -22,24 +22,28 @@ def solve_bearing(brg: JournalBearing, lx, ly, angles, omega_journal, omega_bear
     return None
 
 
-def add_orbit(res, orbit, prefix: str, what: str) -> None:
-    """Columns and metrics of one orbit, named ``<prefix>eccentricity`` etc."""
-    res.add_column(f"{prefix}eccentricity", orbit.eccentricity, "-",
+def add_orbit(res, orbit, component: str | None, what: str) -> None:
+    """Columns and metrics of one orbit (``eccentricity`` etc.) of a result component."""
+    from functools import partial
+
+    col = partial(res.add_column, component=component)
+    met = partial(res.add_metric, component=component)
+    col("eccentricity", orbit.eccentricity, "-",
                    f"{what}: eccentricity ratio")
-    res.add_column(f"{prefix}attitude", orbit.attitude, "rad",
+    col("attitude", orbit.attitude, "rad",
                    f"{what}: attitude angle from the load to the line of centres")
-    res.add_column(f"{prefix}min_film", orbit.h_min, "m", f"{what}: minimum film c (1 - eps)")
-    res.add_column(f"{prefix}min_film_position", orbit.position, "rad",
+    col("min_film", orbit.h_min, "m", f"{what}: minimum film c (1 - eps)")
+    col("min_film_position", orbit.position, "rad",
                    f"{what}: direction of the minimum film in the bearing frame")
-    res.add_column(f"{prefix}power", orbit.power, "W", f"{what}: friction power ({orbit.film} "
+    col("power", orbit.power, "W", f"{what}: friction power ({orbit.film} "
                    "film)")
     i = int(np.argmax(orbit.eccentricity))
-    res.add_metric(f"{prefix}max_eccentricity", orbit.eccentricity[i], "-",
+    met("max_eccentricity", orbit.eccentricity[i], "-",
                    f"{what}: largest eccentricity ratio", orbit.angle[i])
-    res.add_metric(f"{prefix}min_film", orbit.min_film, "m",
+    met("min_film", orbit.min_film, "m",
                    f"{what}: smallest film; angle = where on the cycle", orbit.min_film_angle)
-    res.add_metric(f"{prefix}min_film_position", orbit.min_film_position, "rad",
+    met("min_film_position", orbit.min_film_position, "rad",
                    f"{what}: direction of the smallest film in the bearing frame")
-    res.add_metric(f"{prefix}power_mean", orbit.mean_power, "W",
+    met("power_mean", orbit.mean_power, "W",
                    f"{what}: cycle-mean friction power ({orbit.method}, {orbit.film} film)")
-    res.add_metric(f"{prefix}cycles", orbit.cycles, "-", f"{what}: load cycles marched")
+    met("cycles", orbit.cycles, "-", f"{what}: load cycles marched")

@@ -58,6 +58,8 @@ def bearing_loads(deck, shaft, res):
 
 
 def run(deck, inputs, res):
+    from functools import partial
+
     import numpy as np
 
     from camtrain.bearings import JournalBearing, bearing_petroff_power
@@ -75,17 +77,19 @@ def run(deck, inputs, res):
     orbits, total = [], 0.0
     for i, b in enumerate(cs.bearings):
         k = i + 1
-        what = f"bearing {k}"
+        what, comp = f"bearing {k}", f"bearing_{k}"
+        met = partial(res.add_metric, component=comp)
         brg = JournalBearing(b.diameter, b.length, b.clearance, viscosity, b.groove_width,
                              name=f"camshaft.bearings[{i}]")
-        res.add_column(f"bearing_{k}_load_x", bx[i], "N", f"{what}: load on the film, x")
-        res.add_column(f"bearing_{k}_load_y", by[i], "N", f"{what}: load on the film, y")
+        res.add_column("load_x", bx[i], "N", f"{what}: load on the film, x",
+                       component=comp)
+        res.add_column("load_y", by[i], "N", f"{what}: load on the film, y",
+                       component=comp)
         mag = np.hypot(bx[i], by[i])
         j = int(np.argmax(mag))
-        res.add_metric(f"bearing_{k}_max_load", mag[j], "N", f"{what}: largest load", theta[j])
+        met("max_load", mag[j], "N", f"{what}: largest load", theta[j])
         petroff = float(bearing_petroff_power(brg, omega))
-        res.add_metric(f"bearing_{k}_petroff_power", petroff, "W",
-                       f"{what}: Petroff power (concentric journal)")
+        met("petroff_power", petroff, "W", f"{what}: Petroff power (concentric journal)")
         try:
             orbit = solve_bearing(brg, bx[i], by[i], theta, omega, 0.0, angle_rate=abs(omega),
                                   period=TWO_PI, method=cs.method, film=cs.film,
@@ -97,11 +101,10 @@ def run(deck, inputs, res):
             continue
         orbits.append(orbit)
         if orbit is None:
-            res.add_metric(f"bearing_{k}_power_mean", petroff, "W",
-                           f"{what}: Petroff power (method = petroff)")
+            met("power_mean", petroff, "W", f"{what}: Petroff power (method = petroff)")
             total += petroff
             continue
-        add_orbit(res, orbit, f"bearing_{k}_", what)
+        add_orbit(res, orbit, comp, what)
         total += orbit.mean_power
     res.add_metric("bearings_power_total", total, "W",
                    "cycle-mean friction power of all camshaft bearings")

@@ -20,7 +20,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from camtrain.components import MAIN, column_prefix
+    from camtrain.components import MAIN, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm
     from camtrain.loads import ContactLoad
@@ -31,37 +31,41 @@ def run(deck, inputs, res):
     fields = []
     for component, load in pairs:
         film = run_pair(CamContact.from_deck(deck, component), train[component], load, res,
-                        column_prefix(component))
+                        result_component(component))
         fields.append((component, film))
     return ContactFilm(tuple(fields), with_load=loads is not None)
 
 
-def run_pair(contact, kin, load, res, prefix: str = ""):
+def run_pair(contact, kin, load, res, component: str | None = None):
     """Columns and metrics of one pair's film; returns its FilmField."""
+    from functools import partial
+
     import numpy as np
 
     from camtrain.formulas import film_parameter
 
-    tag = " (closing pair)" if prefix else ""
+    tag = f" ({component} pair)" if component else ""
+    col = partial(res.add_column, component=component)
+    met = partial(res.add_metric, component=component)
     film = contact.film(kin, None if load is None else np.maximum(load, 0.0))
     what = "out of contact" if load is not None else "non-Hertzian geometry"
-    res.add_column(prefix + "film_min", film.min, "m",
+    col("film_min", film.min, "m",
                    f"minimum film thickness, {film.method} (NaN: {what}){tag}")
     if film.central is not None:
-        res.add_column(prefix + "film_central", film.central, "m",
+        col("film_central", film.central, "m",
                        f"central film thickness, {film.central_method}{tag}")
     lam = np.full(film.min.shape, np.nan)
     fin = np.isfinite(film.min)
     lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
-    res.add_column(prefix + "lambda", lam, "-",
+    col("lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
     if np.any(fin):
         h = np.where(fin, film.min, np.inf)
         i = int(np.argmin(h))
-        res.add_metric(prefix + "film_min", h[i], "m",
+        met("film_min", h[i], "m",
                        "smallest minimum film over the cycle" + tag, kin.theta[i])
     k = int(np.argmax(kin.valve_lift))
-    res.add_metric(prefix + "film_min_at_max_lift", film.min[k], "m",
+    met("film_min_at_max_lift", film.min[k], "m",
                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
     if load is None:

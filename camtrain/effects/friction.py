@@ -17,9 +17,11 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
+    from functools import partial
+
     import numpy as np
 
-    from camtrain.components import column_prefix, pair_label
+    from camtrain.components import pair_label, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
     from camtrain.loads import ContactLoad
@@ -30,7 +32,9 @@ def run(deck, inputs, res):
     fields = []
     for component, load in loads.pairs():
         contact = CamContact.from_deck(deck, component)
-        prefix, tag = column_prefix(component), pair_label(component)
+        tag = pair_label(component)
+        col = partial(res.add_column, component=result_component(component))
+        met = partial(res.add_metric, component=result_component(component))
         load = np.maximum(load, 0.0)
         field = contact.friction(train[component], load, hertz[component], films[component])
         fields.append((component, field))
@@ -38,13 +42,13 @@ def run(deck, inputs, res):
         pos = load > 0.0
         mu = np.zeros_like(load)
         mu[pos] = force[pos] / load[pos]
-        res.add_column(prefix + "friction_force", force, "N",
+        col("friction_force", force, "N",
                        f"cam/follower friction force ({contact.friction_law} model)"
                        f"{tag}")
-        res.add_column(prefix + "friction_coefficient", mu, "-",
+        col("friction_coefficient", mu, "-",
                        "friction coefficient F/W (0 unloaded)" + tag)
         capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
-        res.add_metric(prefix + "boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
+        met("boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
         if not np.all(np.isfinite(force)):
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")

@@ -2,7 +2,7 @@
 
 Physics: the pair's :class:`camtrain.contact.model.CamContact` (Ball 1988 eqs. 3.7-3.10, Hamrock &
 Dowson 1981). Writes ``hertz_pmax``, ``hertz_half_width`` (and ``hertz_half_length`` for a point
-contact) per pair; the closing pair of a desmodromic train is prefixed ``closing_``.
+contact) per pair; the closing pair of a desmodromic train is the result's ``closing`` component.
 """
 from __future__ import annotations
 
@@ -16,9 +16,11 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
+    from functools import partial
+
     import numpy as np
 
-    from camtrain.components import column_prefix, pair_label
+    from camtrain.components import pair_label, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactHertz
     from camtrain.loads import ContactLoad
@@ -27,25 +29,27 @@ def run(deck, inputs, res):
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     fields = []
     for component, load in loads.pairs():
-        kin, prefix = train[component], column_prefix(component)
+        kin = train[component]
+        col = partial(res.add_column, component=result_component(component))
+        met = partial(res.add_metric, component=result_component(component))
         hz = CamContact.from_deck(deck, component).hertz(kin, np.maximum(load, 0.0))
         fields.append((component, hz))
         tag = pair_label(component)
-        res.add_column(prefix + "hertz_pmax", hz.pmax, "Pa", "maximum Hertz contact pressure" + tag)
-        res.add_column(prefix + "hertz_half_width", hz.half_width, "m",
+        col("hertz_pmax", hz.pmax, "Pa", "maximum Hertz contact pressure" + tag)
+        col("hertz_half_width", hz.half_width, "m",
                        "Hertz half-width along the rolling direction" + tag)
         if not hz.line:
-            res.add_column(prefix + "hertz_half_length", hz.half_length, "m",
+            col("hertz_half_length", hz.half_length, "m",
                            "Hertz semi-axis across the rolling direction" + tag)
         if np.any(hz.bad):
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
         p = np.where(np.isnan(hz.pmax), -np.inf, hz.pmax)
         i = int(np.argmax(p))
-        res.add_metric(prefix + "hertz_max", hz.pmax[i], "Pa",
+        met("hertz_max", hz.pmax[i], "Pa",
                        "largest Hertz pressure over the cycle" + tag, kin.theta[i])
         k = int(np.argmax(kin.valve_lift))
-        res.add_metric(prefix + "hertz_at_max_lift", hz.pmax[k], "Pa",
+        met("hertz_at_max_lift", hz.pmax[k], "Pa",
                        "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                        kin.theta[k])
     return ContactHertz(tuple(fields))

@@ -27,7 +27,7 @@ def run(deck, inputs, result):
     brg = JournalBearing(g.diameter, g.length, g.clearance, g.viscosity, g.groove_width)
     angles = np.asarray(ld.angles)
     lx, ly = np.asarray(ld.load_x), np.asarray(ld.load_y)
-    result.add_column("angle", angles, "rad", "load-diagram angle of the journal")
+    result.add_axis("angle", angles, "rad", "load-diagram angle of the journal")
     result.add_column("load_x", lx, "N", "load on the film, x")
     result.add_column("load_y", ly, "N", "load on the film, y")
     petroff = float(bearing_petroff_power(brg, s.journal, s.bearing))
@@ -40,7 +40,7 @@ def run(deck, inputs, result):
     if orbit is None:
         result.add_metric("power_mean", petroff, "W", "Petroff power (method = petroff)")
         return BearingOrbits((None,))
-    add_orbit(result, orbit, "", "bearing")
+    add_orbit(result, orbit, None, "bearing")
     result.add_metric("attitude_mean", float(np.mean(orbit.attitude)), "rad",
                       "mean attitude angle over the load diagram")
     result.add_metric("periodicity_error", orbit.periodicity_error, "-",

@@ -60,7 +60,7 @@ def lift_columns(deck, result, points: int | None = None):
     curve = _cached_curve(deck.lift, points or deck.solver.angle_points)
     theta = curve.theta
     where = "valve" if deck.lift.measured_at == "valve" else "cam (inspection follower)"
-    result.add_column("cam_angle", theta, "rad", "cam angle from the maximum-lift position")
+    result.add_axis("cam_angle", theta, "rad", "cam angle from the maximum-lift position")
     result.add_column("lift", curve.lift, "m", f"lift at the {where}")
     result.add_column("velocity", curve.d1, "m/rad", "dl/dtheta")
     result.add_column("acceleration", curve.d2, "m/rad^2", "d2l/dtheta2")
@@ -145,50 +145,56 @@ _COLUMNS = (
 )
 
 
-def kinematics_columns(k, result, prefix: str = "") -> None:
-    """Add the per-angle kinematics; ``prefix`` marks the closing pair of a desmodromic train."""
+def kinematics_columns(k, result, component: str | None = None) -> None:
+    """Add the per-angle kinematics of a pair (``component``: None, or the closing pair of a
+    desmodromic train)."""
     import numpy as np
 
     for name, attr, unit, description in _COLUMNS:
         values = getattr(k, attr)
         if name == "radius_y" and not np.any(np.isfinite(values)):
             continue  # line contact: nothing to tabulate
-        result.add_column(prefix + name, values, unit,
-                          description + (" (closing pair)" if prefix else ""))
+        result.add_column(name, values, unit,
+                          description + (f" ({component} pair)" if component else ""),
+                          component=component)
 
 
-def kinematics_metrics(deck, k, result, prefix: str = "") -> None:
+def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
     """Scalar results a valve-train engineer looks for first."""
     import numpy as np
 
     theta = k.theta
     nose = int(np.argmax(k.valve_lift))
-    label = " of the closing pair" if prefix else ""
-    add = result.add_metric
-    add(prefix + "max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label,
+    from functools import partial
+
+    label = f" of the {component} pair" if component else ""
+    add = partial(result.add_metric, component=component)
+    add("max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label,
         theta[nose])
-    add(prefix + "cam_radius_at_max_lift", k.cam_radius[nose], "m",
+    add("cam_radius_at_max_lift", k.cam_radius[nose], "m",
         "cam radius of curvature at maximum lift" + label, theta[nose])
-    add(prefix + "equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
+    add("equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
         "equivalent radius at maximum lift" + label, theta[nose])
     i = int(np.argmin(k.cam_radius))
-    add(prefix + "cam_radius_min", k.cam_radius[i], "m",
+    add("cam_radius_min", k.cam_radius[i], "m",
         "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
         theta[i])
     i = int(np.argmax(np.abs(k.eccentricity)))
-    add(prefix + "eccentricity_max", abs(k.eccentricity[i]), "m",
+    add("eccentricity_max", abs(k.eccentricity[i]), "m",
         "largest distance of the contact from the face centre" + label, theta[i])
     i = int(np.argmax(np.abs(k.pressure_angle)))
-    add(prefix + "pressure_angle_max", abs(k.pressure_angle[i]), "rad",
+    add("pressure_angle_max", abs(k.pressure_angle[i]), "rad",
         "largest pressure angle" + label, theta[i])
-    if deck.mechanism.type == "flat" and not prefix:
+    if deck.mechanism.type == "flat" and component is None:
         # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
         add("min_base_radius_convex", float(np.max(-(k.valve_lift + k.valve_d2))), "m",
             "smallest base radius for which the cam stays convex under a flat follower")
     zeros = zero_crossings(theta, k.entrainment)
     for j, angle in enumerate(zeros):
-        add(f"{prefix}zero_entrainment_{j + 1}", angle, "rad",
+        add(f"zero_entrainment_{j + 1}", angle, "rad",
             f"cam angle where the entrainment velocity passes through zero{label}", angle)
+        result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
+                         "zero: the steady EHL film vanishes", component=component)
     if zeros and deck.speed.omega > 0:
         where = ", ".join(f"{np.degrees(a):.2f}" for a in zeros)
         result.warn(f"entrainment velocity passes through zero{label} at {where} deg: the "
@@ -243,7 +249,7 @@ def run(deck, inputs, result):
     kinematics_metrics(deck, opening, result)
     pairs = ((MAIN, opening),)
     if closing is not None:
-        kinematics_columns(closing, result, "closing_")
-        kinematics_metrics(deck, closing, result, "closing_")
+        kinematics_columns(closing, result, CLOSING)
+        kinematics_metrics(deck, closing, result, CLOSING)
         pairs += ((CLOSING, closing),)
     return TrainKinematics(pairs)

@@ -88,20 +88,23 @@ def run_desmodromic(deck, train, res):
                    "constant closing spring S (0 while the valve is seated)")
     res.add_column("load", d.opening, "N", "opening cam/follower load (Ball App D; 0 while the "
                    "closing cam controls the valve)")
-    res.add_column("closing_load", d.closing, "N", "closing cam/follower load (Ball App D: "
-                   "RR_c S, or RR_c |M x''| while the closing cam drives the valve)")
+    res.add_column("load", d.closing, "N", "closing cam/follower load (Ball App D: "
+                   "RR_c S, or RR_c |M x''| while the closing cam drives the valve)",
+                   component=CLOSING)
     res.add_column("in_control", d.in_control, "-", "cam in control of the valve: +1 opening, "
                    "-1 closing (the closing spring holds the seated valve)")
     res.add_metric("closing_spring_force", s, "N", "constant closing spring force S = k delta "
                    "(Ball App F)")
-    for prefix, load in (("", d.opening), ("closing_", d.closing)):
+    for component, load in ((None, d.opening), (CLOSING, d.closing)):
         i = int(np.argmax(load))
-        res.add_metric(f"{prefix}load_max", load[i], "N", "largest contact load"
-                       + (" of the closing pair" if prefix else " of the opening pair"),
-                       kin.theta[i])
+        res.add_metric("load_max", load[i], "N", "largest contact load"
+                       + (" of the closing pair" if component else " of the opening pair"),
+                       kin.theta[i], component=component)
     for j, angle in enumerate(d.handovers):
         res.add_metric(f"handover_{j + 1}", angle, "rad", "cam angle where control of the valve "
                        "passes between the opening and the closing cam (M x'' + S = 0)", angle)
+        res.add_event("handover", angle, "control of the valve passes between the opening and "
+                      "the closing cam")
     where = ", ".join(f"{np.degrees(a):.1f}" for a in d.handovers) or "nowhere"
     res.warn(f"desmodromic train: control of the valve passes between the cams at {where} deg "
              "(Ball App D); no bounce speed: the closing cam controls the valve")
@@ -117,6 +120,7 @@ def run(deck, inputs, res):
     import numpy as np
 
     from camtrain.loads import ContactLoad, bounce_speed, contact_mask, valve_force
+    from camtrain.loads.product import runs
     from camtrain.mechanisms import TrainKinematics
     from camtrain.units import rad_s_to_rpm
 
@@ -149,6 +153,10 @@ def run(deck, inputs, res):
                        "camshaft speed at which the rigid train first loses contact",
                        b.angle)
     lost = inside & (load <= 0.0)
+    for start, end in runs(lost, kin.theta):
+        res.add_event("contact_loss", start, "the cam loses contact with the follower (W <= 0)")
+        res.add_event("contact_regained", end, "last angle without contact before the cam "
+                      "carries the follower again")
     if np.any(lost):
         deg = np.degrees(kin.theta[lost])
         res.warn(f"valve bounce: the cam loses contact (W <= 0) at {int(lost.sum())} angles "

@@ -3,8 +3,8 @@
 H(theta) = F r omega with r the arm of the friction force about the cam axis (Ball 1988 eq. 4.8;
 r = r_B + l for a flat follower) and the cycle mean of eq. 4.9 (trapezoidal rule, spectrally
 accurate on the periodic grid). The total torque adds the normal-load torque W e. A desmodromic
-train reports both pairs (closing pair prefixed ``closing_``) and their sum. The guide losses are
-the ``guides`` effect's.
+train reports both pairs (the closing pair as the result's ``closing`` component) and their sum.
+The guide losses are the ``guides`` effect's.
 """
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from camtrain.components import MAIN, column_prefix
+    from camtrain.components import MAIN, result_component
     from camtrain.contact.products import CamTorque, ContactFriction
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
@@ -28,7 +28,7 @@ def run(deck, inputs, res):
     total, main = 0.0, None
     for component, load in loads.pairs():
         mean, torques = run_pair(train[component], load, friction[component].force, res,
-                                 column_prefix(component))
+                                 result_component(component))
         total += mean
         if component == MAIN:
             main = torques
@@ -38,34 +38,38 @@ def run(deck, inputs, res):
     return CamTorque(*main, total_power=total)
 
 
-def run_pair(kin, load, force, res, prefix: str = ""):
+def run_pair(kin, load, force, res, component: str | None = None):
     """Columns and metrics of one pair; returns its cycle-mean friction power [W] and its
     (cam torque, friction torque, power) arrays."""
+    from functools import partial
+
     import numpy as np
 
     from camtrain.formulas import cam_torque, cycle_mean, friction_torque
 
-    tag = " (closing pair)" if prefix else ""
+    tag = f" ({component} pair)" if component else ""
+    col = partial(res.add_column, component=component)
+    met = partial(res.add_metric, component=component)
     load = np.maximum(load, 0.0)
     tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
     total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
                        dtype=float)
     power = tf * abs(kin.omega)
     dissipation = force * np.abs(kin.sliding)
-    res.add_column(prefix + "friction_torque", tf, "N*m",
+    col("friction_torque", tf, "N*m",
                    "friction torque about the cam axis F r" + tag)
-    res.add_column(prefix + "cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag)
-    res.add_column(prefix + "power_loss", power, "W",
+    col("cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag)
+    col("power_loss", power, "W",
                    "friction power F r omega (Ball eq. 4.8)" + tag)
     i = int(np.argmax(np.abs(tf)))
-    res.add_metric(prefix + "friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag,
+    met("friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag,
                    kin.theta[i])
     mean = float(cycle_mean(power))
-    res.add_metric(prefix + "power_loss_mean", mean, "W",
+    met("power_loss_mean", mean, "W",
                    "cycle-mean friction power (Ball eq. 4.9)" + tag)
-    res.add_metric(prefix + "dissipation_mean", cycle_mean(dissipation), "W",
+    met("dissipation_mean", cycle_mean(dissipation), "W",
                    "cycle-mean contact dissipation F |V_s| (equals the above for flat "
                    "followers)" + tag)
-    res.add_metric(prefix + "cam_torque_mean", cycle_mean(total), "N*m",
+    met("cam_torque_mean", cycle_mean(total), "N*m",
                    "cycle-mean camshaft torque" + tag)
     return mean, (total, tf, power)

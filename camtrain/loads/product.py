@@ -37,10 +37,10 @@ class ContactLoad:
         """[start, end] cam angles [rad] of each run of angles where the cam drives the valve
         and the load is positive (loss of contact splits a run)."""
         on = np.asarray(self.in_contact, dtype=bool) & (np.asarray(self.load) > 0.0)
-        return _runs(on, np.asarray(theta))
+        return runs(on, np.asarray(theta))
 
 
-def _runs(mask: np.ndarray, theta: np.ndarray) -> list[tuple[float, float]]:
+def runs(mask: np.ndarray, theta: np.ndarray) -> list[tuple[float, float]]:
     """Runs of True on a periodic grid; a run across the end of the grid is one run."""
     if not mask.any():
         return []

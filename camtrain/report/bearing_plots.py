@@ -10,7 +10,6 @@ module costs nothing and needs no display.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -33,22 +32,19 @@ class OrbitSeries:
 
 
 def orbit_series(result: Result) -> list[OrbitSeries]:
-    """Every orbit in a run: ``bearing_<i>_*`` columns of a camshaft run, or the single orbit
-    of a stand-alone bearing deck (``eccentricity`` on the ``angle`` grid)."""
+    """Every orbit in a run: each result component with an orbit (the bearings of a camshaft
+    run), or the orbit of the result itself (a stand-alone bearing deck)."""
     out = []
-    grid = "cam_angle" if "cam_angle" in result.columns else "angle"
-    if grid not in result.columns:
-        return out
-    names = sorted(int(m.group(1)) for c in result.columns
-                    if (m := re.fullmatch(r"bearing_(\d+)_eccentricity", c)))
-    for k in names:
-        out.append(OrbitSeries(f"bearing {k}", result[grid],
-                               result[f"bearing_{k}_eccentricity"],
-                               result[f"bearing_{k}_min_film_position"]))
-    if not names and "eccentricity" in result.columns and "min_film_position" in result.columns \
-            and grid == "angle":
-        out.append(OrbitSeries("bearing", result[grid], result["eccentricity"],
-                               result["min_film_position"]))
+    for name in [None, *result.components]:
+        part = result.component(name)
+        if "eccentricity" not in part.columns or "min_film_position" not in part.columns:
+            continue
+        col = part.columns["eccentricity"]
+        if not col.axis or col.axis not in result.columns:
+            continue
+        label = "bearing" if name is None else name.replace("_", " ")
+        out.append(OrbitSeries(label, result[col.axis], part["eccentricity"],
+                               part["min_film_position"]))
     return out
 
 
