@@ -55,11 +55,11 @@ def liner_speed(theta, crank_radius: float, rod_length: float, omega: float):
 
 
 def piston_position(theta, crank_radius: float, rod_length: float):
-    """Piston travel from TDC [m] of the exact slider crank."""
-    theta = np.asarray(theta, dtype=float)
-    s = np.sin(theta)
-    return crank_radius * (1.0 - np.cos(theta)) + rod_length - np.sqrt(rod_length ** 2 -
-                                                                         (crank_radius * s) ** 2)
+    """Piston travel from TDC [m] of the exact slider crank (Williams 2013 App. A5)."""
+    from camtrain.engine.crank import slider_crank_exact
+
+    x = slider_crank_exact(theta, crank_radius, rod_length, 0.0)[0]
+    return crank_radius + rod_length - x
 
 
 def composite_roughness(sigma_ring: float, sigma_liner: float, rule: str = "rms") -> float:

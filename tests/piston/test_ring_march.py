@@ -109,3 +109,26 @@ def test_second_ring_consumes_more_than_the_top_ring_over_most_of_the_cycle(zeta
     assert np.mean(power["second"] > power["top"]) > 0.5
     early_power = (theta > np.radians(5)) & (theta < np.radians(90))
     assert np.mean(power["top"][early_power] > power["second"][early_power]) > 0.5
+
+
+def test_liner_speed_is_the_exact_slider_crank():
+    """Derived cross-check: Yang's eq. 5.16 equals the piston speed of Williams' exact slider
+    crank (App. A5), with the liner moving against the ring (1e-12)."""
+    from camtrain.engine.crank import slider_crank_exact
+    from camtrain.piston.ring import liner_speed
+
+    theta = np.linspace(0.0, 4 * np.pi, 721)
+    xd = slider_crank_exact(theta, Z.CRANK_RADIUS, Z.ROD_LENGTH, 314.0)[1]
+    assert np.allclose(liner_speed(theta, Z.CRANK_RADIUS, Z.ROD_LENGTH, 314.0), xd,
+                       rtol=0, atol=1e-12 * 314 * Z.CRANK_RADIUS)
+
+
+def test_oil_control_ring_consumes_more_than_either_compression_ring(zeta_flooded):
+    """Yang Fig. 6.14: the oil-control ring (1.890 MPa on 0.5 mm, boundary) loses more power
+    than either compression ring (flooded rings, 3000 rpm)."""
+    from camtrain.piston.assembly import cycle_mean_power, oil_control_ring_friction
+
+    theta, U, rings = zeta_flooded
+    ocr = cycle_mean_power(oil_control_ring_friction(U, 1.890e6, 0.5e-3, Z.BORE), U)
+    for rc in rings.values():
+        assert ocr > cycle_mean_power(rc.friction * np.pi * Z.BORE, U)
