@@ -296,7 +296,7 @@ def pinto_camshaft_sections(result) -> list[str]:
               f"eight cam contacts, about 1/{contacts / bearings:.0f}. Ball says \"about one "
               "fifth\" over 500-3000 rpm, read from his Fig 6.10 (no numbers printed). Not "
               "reproduced: his eq. 6.7 taken literally gives 1/9 to 1/13 even at 43 Hz "
-              "(reference extraction §4.6), so the \"one fifth\" is an order of magnitude.", "",
+              "(references/ball1988.md §4.6), so the \"one fifth\" is an order of magnitude.", "",
               "Sensitivity to the assumed data: each row changes one assumption of the deck "
               "(`tests/integration_camshaft/pinto_layouts.py`); the literature test "
               "(`tests/integration_camshaft/test_pinto_camshaft_ball.py`) holds the deck to "

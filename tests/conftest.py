@@ -5,6 +5,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.tiers import TIERS, tier_of
+
 ROOT = Path(__file__).resolve().parent.parent
 DECKS = ROOT / "decks"
 
@@ -34,3 +36,16 @@ coefficients = [-11.6918407, 2.8498942, -0.5894568, 0.5314033]
 @pytest.fixture
 def minimal_deck() -> str:
     return MINIMAL_DECK
+
+
+def pytest_configure(config):
+    for tier in TIERS:
+        config.addinivalue_line("markers", f"{tier}: validation tier (tests/tiers.py)")
+
+
+def pytest_collection_modifyitems(config, items):
+    """Every test gets the marker of its validation tier (tests/tiers.py)."""
+    for item in items:
+        nodeid = item.nodeid if item.nodeid.startswith("tests/") else "tests/" + item.nodeid
+        own = {m.name for m in item.iter_markers()}
+        item.add_marker(getattr(pytest.mark, tier_of(nodeid, own)))

@@ -36,7 +36,7 @@ def test_every_deck_runs_its_kinematics_finitely(name):
 
 
 def test_harrison_seed_values():
-    """Ball (1988) §5.2 and §4.4 of the reference notes: nose R = 6.0766 mm, zero entrainment
+    """Ball (1988) §5.2 and docs/references/ball1988.md §4.4: nose R = 6.0766 mm, zero entrainment
     at +-39.56 deg, smallest base radius for a convex cam 13.59 mm. The four-power law is
     analytic, so the tolerances are the printed digits (the zero angle is found by linear
     interpolation on the 0.5 deg grid: 0.01 deg)."""
@@ -49,7 +49,7 @@ def test_harrison_seed_values():
 
 
 def test_rover_seed_values():
-    """Ball (1988) §5.3 (reference notes §4.6): Rover nose r_c = 4.50 mm, R = 3.99 mm, printed to
+    """Ball (1988) §5.3 (docs/references/ball1988.md §4.6): Rover nose r_c = 4.50 mm, R = 3.99 mm, printed to
     2 decimals (tolerance 0.005 mm)."""
     m = _kinematics_only("rover_2300_rocker.toml").metrics
     assert m["cam_radius_at_max_lift"].value == pytest.approx(4.50e-3, abs=5e-6)

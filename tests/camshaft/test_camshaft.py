@@ -83,7 +83,7 @@ def test_williams_table_9_10_damper_torque_extrema():
 @settings(max_examples=20, deadline=None)
 @given(v=st.integers(30, 180), seed=st.integers(0, 10_000))
 def test_v_bank_rule_holds_for_any_curve(v, seed):
-    """Derived in the Williams reference notes: |C_n, both| = 2 |cos(n V/4)| |C_n, bank| for any
+    """Derived (docs/references/williams2013.md §2.14): |C_n, both| = 2 |cos(n V/4)| |C_n, bank| for any
     bank curve (V in whole crank degrees is a whole number of grid steps: exact to round-off)."""
     rng = np.random.default_rng(seed)
     b1 = rng.normal(size=N)

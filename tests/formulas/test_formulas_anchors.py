@@ -1,6 +1,6 @@
 """Tier (a): each formula against published or hand-computed benchmark values.
 
-Benchmarks tagged [D] in the reference notes are hand computations printed to 4 significant
+Benchmarks tagged [D] in docs/references/ are hand computations printed to 4 significant
 figures, so they are matched to their printed precision (half a unit of the last digit); closed
 forms that can be written independently are matched to 1e-12.
 """
@@ -76,8 +76,8 @@ def test_hertz_line_benchmarks(w, R, b_um, p_gpa, printed):
 
 
 def test_reduced_modulus_values(printed):
-    """Ball (1988) nomenclature E' (extraction §2.0: 226.0 / 227.5 GPa); Yang (1992) eq. 3.20
-    Ford Zeta 201.80 GPa (extraction §2.2.3); Göçmen (2013) extraction §2.2: 184.46 GPa."""
+    """Ball (1988) nomenclature E' (226.0 / 227.5 GPa); Yang (1992) eq. 3.20
+    Ford Zeta 201.80 GPa; Göçmen (2013) docs/references/gocmen2013.md §2.2: 184.46 GPa."""
     printed(cf.reduced_modulus(207e9, 0.29, 207e9, 0.29), "226.0", 1e-9)
     printed(cf.reduced_modulus(207e9, 0.30, 207e9, 0.30), "227.5", 1e-9)
     printed(cf.reduced_modulus(170e9, 0.28, 204e9, 0.29), "201.80", 1e-9)
@@ -97,7 +97,7 @@ HARRISON = dict(eta0=0.05, alpha=22e-9, E_r=HARRISON_E)
     (353.0, 1.996, "0.0449", "417.3", "0.516", "0.647", "0.514"),
 ])
 def test_harrison_nose(W, u, b, p, hmin, hcen, hblok, printed):
-    """Ball (1988) Harrison flat follower at the nose, 1500 and 2500 rev/min (Ball extraction
+    """Ball (1988) Harrison flat follower at the nose, 1500 and 2500 rev/min (docs/references/ball1988.md
     §4.4, derived from Ball eqs. 3.9, 3.10, 4.1-4.3 with the mean entrainment speed):
     R = 6.0766 mm, L = 12 mm. Printed precision."""
     R, L = 6.0766e-3, 0.012
@@ -110,7 +110,7 @@ def test_harrison_nose(W, u, b, p, hmin, hcen, hblok, printed):
 
 
 def test_harrison_base_circle_and_flank(printed):
-    """Ball extraction §4.4 (2500 rev/min): base circle (R = 18 mm, W = k delta = 244.83 N,
+    """docs/references/ball1988.md §4.4 (2500 rev/min): base circle (R = 18 mm, W = k delta = 244.83 N,
     u = omega r_B / 2) p_max 201.9 MPa, h_min 0.970 um; flank at 57.4 deg (R = 119.8 mm,
     W = 1461.4 N) p_max 191.2 MPa."""
     w = 244.83 / 0.012
@@ -121,7 +121,7 @@ def test_harrison_base_circle_and_flank(printed):
 
 
 def test_gocmen_base_circle_film(printed):
-    """Göçmen (2013) Table 3.1 inputs, base circle at 1000 rev/min camshaft (Göçmen extraction
+    """Göçmen (2013) Table 3.1 inputs, base circle at 1000 rev/min camshaft (docs/references/gocmen2013.md
     §4 rows D1-D5), Dowson-Higginson as printed in his eq. 2.1 (coefficient 1.6).
 
     FLAGGED: 0.0938 um, his "around 0.1 um", is reproduced ONLY with a second halving of the
@@ -168,7 +168,7 @@ def test_blok_formula_closed_form():
 
 
 def test_yang_zeta_hertz_and_film(printed):
-    """Yang (1992) Ford Zeta intake cam on an 8 m domed follower (Yang extraction §4.6, derived
+    """Yang (1992) Ford Zeta intake cam on an 8 m domed follower (docs/references/yang1992.md §4.6, derived
     with Yang eqs. 3.13-3.22 and his approximations, eta = 0.010 Pa s): base circle p_max
     161 MPa, h_min 0.194 um, viscous friction 1.05 N (mu 0.016), power 3.0 W; nose
     (R_c = 4.07 mm, W = 492.9 N) p_max 613 MPa, semi-axes 7.76 mm x 0.049 mm."""
@@ -211,8 +211,9 @@ def test_petroff_and_ocvirk(printed):
 def test_camshaft_bearing_petroff_losses(printed):
     """Yang (1992) Table 4.1 Petroff column, Zeta intake camshaft at 1500 rev/min (eta =
     0.009865 Pa s, d = 25.97 mm, c = 22.5 um, effective lengths 18 and 15 mm): 2.7 and 2.2 W
-    (the extraction's check: 2.679 and 2.232 W); Ball (1988) eq. 6.7 at eps = 0, Pinto front
-    bearing at 25 Hz (eta 0.02, d 42 mm, b 20 mm, c 0.0965 mm): 5.95 W (Ball extraction §4.6)."""
+    (the check of docs/references/yang1992.md §4.6: 2.679 and 2.232 W); Ball (1988) eq. 6.7 at
+    eps = 0, Pinto front
+    bearing at 25 Hz (eta 0.02, d 42 mm, b 20 mm, c 0.0965 mm): 5.95 W (docs/references/ball1988.md §4.6)."""
     omega = 1500 * RPM
     for L, table, check in ((0.018, "2.7", "2.679"), (0.015, "2.2", "2.232")):
         P = cf.petroff_power(0.009865, omega, 0.012985, L, 22.5e-6)
@@ -242,7 +243,7 @@ def test_patton_nitschke_heywood_trend():
 
 def test_rahnejat_squeeze_factor(printed):
     """Teodorescu et al. (2005) eq. 5 squeeze term exp(-96.775 w_s): 2.632 / 0.380 / 1.102 at
-    w_s = -0.01 / +0.01 / -0.001 (Teodorescu extraction §4 row D2)."""
+    w_s = -0.01 / +0.01 / -0.001 (docs/references/teodorescu2005.md §4 row D2)."""
     base = cf.rahnejat_1984(**CASES["A"])
     for ws, factor in ((-0.01, "2.632"), (0.01, "0.380"), (-0.001, "1.102")):
         printed(cf.rahnejat_1984(**CASES["A"], squeeze_ratio=ws) / base, factor)

@@ -104,7 +104,7 @@ def test_hertz_point_fits_near_exact():
 
 def test_ball_point_formula_is_circular_hertz():
     """Ball (1988) eq. 3.7 with 1/R = 1/R_x + 1/R_y as printed equals exact circular Hertz for
-    R_x = R_y (to 1e-13). The extraction's claim that (3.7) is 2^(2/3) low holds only if R is
+    R_x = R_y (to 1e-13). The claim in earlier notes that (3.7) is 2^(2/3) low holds only if R is
     read as the ball radius, shown by the second assertion. For an elongated contact (3.7)
     over-predicts p_max because it ignores the ellipticity."""
     W, R, E = 50.0, 0.01, STEEL

@@ -79,7 +79,7 @@ def test_line_hertz_load_balance(w, R, scale):
 @pytest.mark.parametrize("a", np.linspace(0.0, 30.0, 31))
 def test_line_barus_integral_matches_quadrature(a):
     """Ball (1988) eq. 4.7 corrected: the closed form pi [I1(a) + L1(a)] + 2 equals the
-    integral of exp(a sqrt(1 - s^2)) over [-1, 1] to 1e-10 (adaptive quadrature, Ball extraction
+    integral of exp(a sqrt(1 - s^2)) over [-1, 1] to 1e-10 (adaptive quadrature, docs/references/ball1988.md
     §2.6)."""
     q, _ = quad(lambda s: np.exp(a * np.sqrt(1 - s * s)), -1, 1, epsabs=0, epsrel=1e-13,
                 limit=200)

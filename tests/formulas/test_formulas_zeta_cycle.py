@@ -15,7 +15,7 @@ import pytest
 import camtrain.formulas as cf
 
 # Intake cam lift [mm] at 1 deg steps from -74 to +79 deg (cam angle from maximum lift); zero
-# elsewhere. Yang (1992) Appendix C, as extracted (Yang extraction §3.4).
+# elsewhere. Yang (1992) Appendix C, as extracted (docs/references/yang1992.md §3.4).
 LIFT_MM = np.array([
     0.000015, 0.000851, 0.002930, 0.006672, 0.012321, 0.019917, 0.029295, 0.040101, 0.051829,
     0.063875, 0.075922, 0.087969, 0.100015, 0.118955, 0.165468, 0.239553, 0.341211, 0.470441,
@@ -72,17 +72,17 @@ def _cycle(hertz_method="yang_1992"):
 def test_zeta_cam_friction_power():
     """Yang (1992) Fig. 4.2 header: frictional power loss 39.68 W per intake cam at 1500 rev/min
     camshaft. Tolerance +-2 %: the seed's exact differentiation and input rounding are unknown;
-    the Yang extraction's independent reproduction spans 39.44-40.06 W over such variants
+    the independent reproduction of docs/references/yang1992.md §4.6 spans 39.44-40.06 W over such variants
     (§4.6). With exact Hertz instead of Yang's k = r^(2/3) fit the same chain gives ~42.0 W, so
     the option matters and is named."""
     cyc = _cycle()
     assert cf.cycle_mean(cyc["power"]) == pytest.approx(39.68, rel=0.02)
-    assert cf.cycle_mean(cyc["power"]) == pytest.approx(39.93, abs=0.01)  # extraction §4.6
+    assert cf.cycle_mean(cyc["power"]) == pytest.approx(39.93, abs=0.01)  # docs/references/yang1992.md §4.6
     assert cf.cycle_mean(_cycle("exact")["power"]) == pytest.approx(42.0, rel=0.01)
 
 
 def test_zeta_cycle_features():
-    """Yang (1992) §4.2.1 as reproduced in the Yang extraction §4.6: boundary (capped) region
+    """Yang (1992) §4.2.1 as reproduced in the docs/references/yang1992.md §4.6: boundary (capped) region
     -39..+39 deg (seed: nose -40..+40); V_e = 0 between 32 and 33 deg on each side of the nose
     ("zero film points"); the total cam torque changes sign between +5 and +6 deg."""
     cyc = _cycle()
@@ -99,7 +99,7 @@ def test_zeta_cycle_features():
 def test_zeta_guide_friction(printed):
     """Yang (1992) §4.2.3 full-film guide friction (eq. 3.29), intake lift at 1500 rev/min,
     eta = 0.009865 Pa s: 0.606 W per follower (d 28.4 mm, guide 22 mm, c 24 um) and 0.253 W
-    per valve (stem 6.043 mm, guide 36 mm, c 20 um), Yang extraction §4.6 (printed precision).
+    per valve (stem 6.043 mm, guide 36 mm, c 20 um), docs/references/yang1992.md §4.6 (printed precision).
     Seed totals for 8 (Yang Fig. 4.7): 4.9 W and 2.0 W; the follower total comes out 4.85 W,
     1 % below the printed 4.9 W (the seed's differentiation of the lift is not known), so the
     totals are checked to 1.5 %."""

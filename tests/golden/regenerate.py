@@ -3,11 +3,13 @@
     PYTHONPATH=. python -m tests.golden.regenerate            # review the differences only
     PYTHONPATH=. python -m tests.golden.regenerate --write    # then write the new files
 
-Each deck ``decks/<name>.toml`` has two files in ``tests/golden/data``: ``<name>.json`` (plan,
-metrics with units and angles, column units and descriptions, warnings: readable and diffable
-with git) and ``<name>.npz`` (the per-angle columns at full precision). These are regression
-files, not validation: they pin what camtrain computed when they were written, so a change of any
-number is seen and must be explained in the commit that regenerates them.
+Each deck ``decks/<name>.toml``, and each variant in :data:`VARIANTS` (a shipped deck with a few
+fields changed: the conventions the literature tests discuss), has two files in
+``tests/golden/data``: ``<name>.json`` (plan, metrics with units and angles, column units and
+descriptions, warnings: readable and diffable with git) and ``<name>.npz`` (the per-angle
+columns at full precision). These are regression files, not validation: they pin what camtrain
+computed when they were written, so a change of any number is seen and must be explained in the
+commit that regenerates them.
 """
 from __future__ import annotations
 
@@ -28,15 +30,39 @@ RTOL = 1e-9
 FLOOR = 1e-12
 
 
+#: name -> (shipped deck, changed fields as {section: {field: value}} in deck units)
+VARIANTS: dict[str, tuple[str, dict]] = {
+    "desmo_rig+mean_entrainment": ("desmo_rig", {"tribology": {"entrainment": "mean"}}),
+    "harrison_flat+mean_entrainment": ("harrison_flat", {"tribology": {"entrainment": "mean"}}),
+    "pinto_finger+zero_clearance": ("pinto_finger", {"clearance": {"valve_clearance": 0.0}}),
+    "pinto_finger_improved+zero_clearance": ("pinto_finger_improved",
+                                             {"clearance": {"valve_clearance": 0.0}}),
+}
+
+
 def deck_paths() -> list[Path]:
-    return sorted(DECKS.glob("*.toml"))
+    """Every shipped deck, then every variant (as ``decks/<variant name>.toml``)."""
+    return sorted(DECKS.glob("*.toml")) + [DECKS / f"{v}.toml" for v in VARIANTS]
+
+
+def variant_model(name: str):
+    """The validated model of a variant: its deck with the changed fields."""
+    import tomllib
+
+    from camtrain.deck.load import validate
+
+    base, changes = VARIANTS[name]
+    raw = tomllib.loads((DECKS / f"{base}.toml").read_text(encoding="utf-8"))
+    for section, fields in changes.items():
+        raw.setdefault(section, {}).update(fields)
+    return validate(raw, name, DECKS)
 
 
 def snapshot(path: Path) -> tuple[dict, dict[str, np.ndarray]]:
     """Run one deck; its readable part (dict) and its per-angle columns (name -> array)."""
     import camtrain.api as ct
 
-    result = ct.run(path)
+    result = ct.run(variant_model(path.stem) if path.stem in VARIANTS else path)
     flat = flat_columns(result)
     meta = {
         "deck": path.name,

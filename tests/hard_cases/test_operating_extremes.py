@@ -65,15 +65,18 @@ def _pinto(mu: float, extra: str = "") -> str:
                            f'entrainment = "sum"\nboundary_friction = {mu}\n')) + extra
 
 
-@pytest.mark.parametrize("mu", [0.3, 1.0])
-def test_pivoted_follower_near_self_locking_converges(mu):
+def test_pivoted_follower_near_self_locking_converges():
     """Raising the boundary friction towards the largest allowed (1.0) slows Ball's friction/load
     iteration (38 iterations at mu = 1 against 4 at 0.08) but it still converges to a finite
-    cycle whose loss grows with mu."""
-    res = run_strict(_pinto(mu))
-    assert 1 < res.metrics["load_iterations"].value < 50
-    finite_columns(res, ("load", "friction_force", "friction_torque", "power_loss"))
-    assert res.metrics["power_loss_mean"].value > 145.8  # the datum at mu = 0.08
+    cycle whose loss grows with mu. (Not converging within the budget raises: that bound is the
+    solver's own, so the test checks that the count and the loss grow with mu.)"""
+    runs = {mu: run_strict(_pinto(mu)) for mu in (0.08, 0.3, 1.0)}
+    iterations = [runs[mu].metrics["load_iterations"].value for mu in (0.08, 0.3, 1.0)]
+    losses = [runs[mu].metrics["power_loss_mean"].value for mu in (0.08, 0.3, 1.0)]
+    assert iterations[0] < iterations[1] < iterations[2]
+    assert losses[0] < losses[1] < losses[2]
+    for res in runs.values():
+        finite_columns(res, ("load", "friction_force", "friction_torque", "power_loss"))
 
 
 def test_friction_iteration_budget_exhausted_is_exit_4():

@@ -101,7 +101,7 @@ def test_pinto_nose_kinematics():
                         ("v_cam", k.v_cam[i] / OMEGA), ("v_follower", k.v_follower[i] / OMEGA)):
         expected, tol = ref[name]
         assert value / MM == pytest.approx(expected, abs=tol), name
-    # zero entrainment near -43 and -11 deg (reference notes §4.6), both on the rising side
+    # zero entrainment near -43 and -11 deg (docs/references/ball1988.md §4.6), both on the rising side
     assert _zeros(k.theta, k.entrainment) == pytest.approx([-43, -11], abs=0.5)
     assert k.rocker_ratio[0] == pytest.approx(1.5696, abs=1e-4)        # base circle
     assert k.rocker_ratio[i] == pytest.approx(1.698, abs=1e-3)         # nose

@@ -99,9 +99,8 @@ def test_power_against_ball(deck, result):
     while driving the closing pair to 14-22 W."""
     m = result.metrics
     assert m["closing_power_loss_mean"].value == pytest.approx(BALL_CLOSING, rel=0.15)
-    assert m["closing_power_loss_mean"].value == pytest.approx(6.447, rel=0.01)  # regression
-    assert m["power_loss_mean"].value == pytest.approx(0.609, rel=0.01)          # regression
     assert m["power_loss_mean"].value < 0.5 * BALL_OPENING     # documented residual
+    # camtrain's own values (sum and mean entrainment) are pinned in the golden files
+    # desmo_rig and desmo_rig+mean_entrainment; the mean convention moves the closing loss away
     mean = run_plan(with_entrainment(deck, "mean")).metrics
-    assert mean["power_loss_mean"].value == pytest.approx(0.971, rel=0.01)
-    assert mean["closing_power_loss_mean"].value == pytest.approx(10.40, rel=0.01)
+    assert mean["closing_power_loss_mean"].value > 1.15 * BALL_CLOSING

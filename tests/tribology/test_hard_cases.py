@@ -65,7 +65,9 @@ def test_friction_arm_iterates_through_effects(harrison_deck, monkeypatch):
     kin = replace(kin, arm_friction=0.2 * kin.arm_normal)
     with np.errstate(all="raise"):
         sol = eff.solve_loads(harrison_deck, kin)
-    assert 2 <= sol.iterations < harrison_deck.solver.friction_max_iterations
+    # Ball §4.2.3.2: "usually only three iterations"; the budget (friction_max_iterations, 50)
+    # would raise, so the bound that can fail is Ball's count, with room for one more pass
+    assert 2 <= sol.iterations <= 4
     assert sol.residual <= harrison_deck.solver.friction_tolerance
     lifted = sol.load > 0
     assert np.all(sol.mu[lifted] <= 0.08 + 1e-12)

@@ -1,7 +1,7 @@
 """Loads: spring, valve force, clearance, friction/load iteration, loss of contact.
 
 Reference values: Ball (1988) eq. B.4 (flat follower load) and the derived Harrison values of the
-reference extraction §4.4 (computed from Ball's printed data). Kinematics are exact on the grid,
+docs/references/ball1988.md §4.4 (computed from Ball's printed data). Kinematics are exact on the grid,
 so load checks against closed forms are held to round-off (1e-9 relative).
 """
 from __future__ import annotations
@@ -75,8 +75,8 @@ def test_harrison_nose_and_peak_loads(harrison_deck):
 def test_bounce_closed_form_matches_load_sign(harrison_kin):
     """Closed-form bounce speed: just below it every loaded angle has W > 0, just above not.
 
-    Ball (1988) §5.2 reads bounce at 'about 60 Hz' camshaft from a speed sweep; the extraction
-    §4.4 derives 60.42 Hz at about +-29 deg. 0.5 % covers the 0.5 deg grid."""
+    Ball (1988) §5.2 reads bounce at 'about 60 Hz' camshaft from a speed sweep;
+    docs/references/ball1988.md §4.4 derives 60.42 Hz at about +-29 deg. 0.5 % covers the 0.5 deg grid."""
     kw = dict(rate=K, preload_compression=DELTA, valve_mass=M)
     b = bounce_speed(harrison_kin, **kw)
     assert b.omega / (2 * np.pi) == pytest.approx(60.42, rel=5e-3)

@@ -4,13 +4,14 @@ Sources: Ball (1988) Fig 5.9 (Rover, 58.78 W), Fig 5.15 (Pinto, 166.14 W), Fig 5
 improved, 160.89 W), all at 2500 rpm; Yang (1992) §4.3 (Zeta intake, 39.68 W per cam, 1500 rpm).
 Ball's decks follow his stated definitions: the "entraining velocity" is the sum V_c + V_f; the
 valve clearance, which he does not state for these trains, is his template's 0.4 mm.
-Tolerance 15 % for Ball: the reference extraction (§4.5) shows his printed numbers depend on
+Tolerance 15 % for Ball: the (docs/references/ball1988.md §4.5) shows his printed numbers depend on
 unstated choices (base-circle contact, follower inertia) by 2-15 %. The Pinto trains are the
 most sensitive to the unstated clearance (App E's ramps lift the valve only about 0.45 mm), so
 for them the test is that Ball's value lies between camtrain's results at 0.4 mm and at zero
-clearance. Zeta 2 %: Yang states all his inputs and camtrain follows his model. Each test also
-pins camtrain's own value (1 %) so that a model change shows up; docs/examples.md tabulates
-every Ball target under both entrainment conventions and both clearances.
+clearance. Zeta 2 %: Yang states all his inputs and camtrain follows his model. camtrain's own
+values are not pinned here: the golden files (tests/golden, with the zero-clearance variants)
+hold them; docs/examples.md tabulates every Ball target under both entrainment conventions and
+both clearances, docs/references/ the published values.
 """
 from __future__ import annotations
 
@@ -22,15 +23,15 @@ import tomli_w
 from camtrain import api
 from tests.tribology.conftest import DECKS
 
-CASES = {   # deck: (published W, camtrain W at the time of writing, tolerance vs published)
-    "rover_2300_rocker": (58.78, 56.03, 0.15),
-    "pinto_finger": (166.14, 145.79, 0.15),
-    "zeta_intake": (39.68, 39.62, 0.02),
+CASES = {   # deck: (published W, tolerance vs published)
+    "rover_2300_rocker": (58.78, 0.15),      # Ball (1988) Fig 5.9
+    "pinto_finger": (166.14, 0.15),          # Ball (1988) Fig 5.15
+    "zeta_intake": (39.68, 0.02),            # Yang (1992) §4.3
 }
-#: deck: (published W, camtrain W with the deck's 0.4 mm, camtrain W with zero clearance)
+#: deck: published W (Ball 1988 Figs 5.15, 5.22)
 CLEARANCE_BRACKETS = {
-    "pinto_finger": (166.14, 145.79, 186.31),
-    "pinto_finger_improved": (160.89, 132.24, 170.82),
+    "pinto_finger": 166.14,
+    "pinto_finger_improved": 160.89,
 }
 
 
@@ -42,10 +43,9 @@ def runs():
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_power_loss_against_source(runs, name):
-    published, ours, tol = CASES[name]
+    published, tol = CASES[name]
     p = runs[name].metrics["power_loss_mean"].value
     assert p == pytest.approx(published, rel=tol)
-    assert p == pytest.approx(ours, rel=0.01)
 
 
 @pytest.mark.parametrize("name", list(CLEARANCE_BRACKETS))
@@ -53,13 +53,11 @@ def test_pinto_power_between_the_clearance_limits(runs, name):
     """Ball's Pinto losses lie between camtrain's at his template clearance (0.4 mm, the deck)
     and at zero clearance. The improved design is -17.8 % at 0.4 mm, outside the 15 % of the
     other decks: its unstated clearance and follower inertia are as uncertain as the datum's."""
-    published, at_deck, at_zero = CLEARANCE_BRACKETS[name]
+    published = CLEARANCE_BRACKETS[name]
     p = runs[name].metrics["power_loss_mean"].value
-    assert p == pytest.approx(at_deck, rel=0.01)
     raw = tomllib.loads((DECKS / f"{name}.toml").read_text(encoding="utf-8"))
     raw["clearance"]["valve_clearance"] = 0.0
     zero = api.run(api.loads(tomli_w.dumps(raw), name)).metrics["power_loss_mean"].value
-    assert zero == pytest.approx(at_zero, rel=0.01)
     assert p < published < zero
 
 

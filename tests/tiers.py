@@ -1,0 +1,76 @@
+"""The validation tier of every test (``pytest -m literature``, ``-m derived``, ...).
+
+Tiers (the developers' guide):
+
+* ``literature``  a published number; the source's table, figure or equation is named in the
+  test (or in its module docstring) and in docs/references/, tolerance from the print precision.
+* ``derived``     hand computations from the same formulas (docs/references/ DERIVED values,
+  closed forms, limits that reduce a model to one camtrain already has).
+* ``golden``      regression files of the shipped decks (tests/golden).
+* ``convergence`` the observed order of a discretised solver, fitted.
+* ``behaviour``   properties, hard cases, input errors, plumbing, outputs, the CLI.
+
+A test module is in the tier ``FILES`` gives it (default: behaviour); ``TESTS`` moves single
+tests of a module to another tier (key: a substring of the test's node id). A test may also carry
+a tier marker itself, which wins.
+"""
+from __future__ import annotations
+
+TIERS = ("literature", "derived", "golden", "convergence", "behaviour")
+
+FILES = {
+    "tests/golden/": "golden",
+    "tests/bearings/test_bearings_published.py": "literature",
+    "tests/bearings/test_finite_published.py": "literature",
+    "tests/engine/test_ruston_yang.py": "literature",
+    "tests/integration_camshaft/test_pinto_camshaft_ball.py": "literature",
+    "tests/integration_camshaft/test_zeta_camshaft_yang.py": "literature",
+    "tests/tribology/test_validation.py": "literature",
+    "tests/tribology/test_pinto_valve_dataset.py": "literature",
+    "tests/test_decks_kinematics.py": "literature",
+    "tests/formulas/test_formulas_anchors.py": "derived",
+    "tests/formulas/test_formulas_cross.py": "derived",
+    "tests/formulas/test_formulas_zeta_cycle.py": "derived",
+    "tests/tribology/test_harrison.py": "derived",
+    "tests/tribology/test_loads.py": "derived",
+    "tests/tribology/test_desmodromic.py": "derived",
+    "tests/tribology/test_greenwood_tripp.py": "derived",
+    "tests/lubrication/test_reynolds_limits.py": "derived",
+    "tests/bearings/test_finite_limits.py": "derived",
+    "tests/lift/test_lift_williams.py": "derived",
+    "tests/mechanisms/test_checks_and_identities.py": "derived",
+    "tests/test_harrison_floor.py": "derived",
+}
+
+TESTS = {
+    "test_harrison.py::test_power_loss_against_ball": "literature",
+    "test_desmodromic.py::test_power_against_ball": "literature",
+    "test_reynolds_limits.py::test_semi_analytic_and_finite_volume_agree_to_second_order":
+        "convergence",
+    "test_reynolds_limits.py::test_node_convergence": "convergence",
+    "test_squeeze_level1.py::test_first_order_in_the_angle_step": "convergence",
+    "test_averaged_reynolds.py::test_march_orders_in_the_step": "convergence",
+    "test_finite_limits.py::test_pure_squeeze_closed_form_and_second_order_convergence":
+        "convergence",
+    "test_orbit_properties.py::test_periodic_and_resolution_converges": "convergence",
+    "test_lift_table.py::test_convergence_order_under_grid_refinement": "convergence",
+    "test_contact_geometry.py::test_zero_entrainment_power_loss_converges_with_angle_points":
+        "convergence",
+    "test_lift_and_bearing_extremes.py::test_bearing_orbit_converges_with_step_tolerance":
+        "convergence",
+}
+
+
+def tier_of(nodeid: str, own: set[str]) -> str:
+    """The tier of a test from its node id (``tests/x.py::test_y[...]``) and its own markers."""
+    mine = own & set(TIERS)
+    if mine:
+        return sorted(mine)[0]
+    for key, tier in TESTS.items():
+        if key in nodeid:
+            return tier
+    path = nodeid.split("::", 1)[0]
+    for prefix, tier in FILES.items():
+        if path.startswith(prefix):
+            return tier
+    return "behaviour"
