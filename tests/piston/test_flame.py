@@ -1,4 +1,5 @@
-"""The FLAME sum (Yang 1992 Part IV, Table 7.1) and the oil-control ring (§5.5)."""
+"""The FLAME sum (Yang 1992 Part IV, Table 7.1; docs/references/yang1992.md §4.5) and the
+oil-control ring (§5.5)."""
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""Inter-ring gas model (Yang 1992 §5.2, eqs. 5.9-5.14)."""
+"""Inter-ring gas model (Yang 1992 §5.2, eqs. 5.9-5.14; docs/references/yang1992.md §4.4)."""
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""The starved ring pack (Yang 1992 §5.4, Table 6.1, Table 6.2)."""
+"""The starved ring pack (Yang 1992 §5.4, Table 6.1, Table 6.2; docs/references/yang1992.md §4.4)."""
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,5 @@
-"""A ring marched over the cycle (Yang 1992 §5.3): invariants, convergence, Zeta results."""
+"""A ring marched over the cycle (Yang 1992 §5.3): invariants, convergence, Zeta results
+(docs/references/yang1992.md §4.4)."""
 from __future__ import annotations
 
 import numpy as np
