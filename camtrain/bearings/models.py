@@ -80,7 +80,7 @@ def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, ome
     The steady curve F(eps), attitude(eps) is solved once per b/d at 19 eccentricities up to
     0.99 (cached) and interpolated in (log F, log(1 - eps)); loads beyond eps 0.99 raise.
     """
-    from .orbit import _finish, diagram_rate, load_diagram
+    from .orbit import assemble_orbit, diagram_rate, load_diagram
     from .power import check_film, check_terms
 
     film, terms = check_film(film), check_terms(terms)
@@ -109,5 +109,5 @@ def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, ome
     ex, ey = e * np.cos(pos), e * np.sin(pos)
     vel = np.column_stack([wbar * ey, -wbar * ex, np.where(wbar >= 0, -0.5, 0.5) * np.pi])
     t = (th - th[0]) / rate
-    return _finish(bearing, th, t, period / rate, fx, fy, ex, ey, vel, wj - wb, film, terms,
+    return assemble_orbit(bearing, th, t, period / rate, fx, fy, ex, ey, vel, wj - wb, film, terms,
                    "steady-finite", 1, 0.0, True)

@@ -151,12 +151,14 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         raise ConvergenceError(
             f"journal orbit not periodic after {cycles} cycles: change {change:.3g} > "
             f"period_tol {period_tol:.3g}; raise max_cycles or period_tol")
-    return _finish(bearing, th, t, T, fx, fy, cur[:, 0], cur[:, 1], vel, wj - wb, film, terms,
+    return assemble_orbit(bearing, th, t, T, fx, fy, cur[:, 0], cur[:, 1], vel, wj - wb, film, terms,
                    f"mobility-{label}", cycles, change, True)
 
 
-def _finish(bearing, th, t, T, fx, fy, ex, ey, vel, wrel, film, terms, method, cycles, change,
-            converged) -> JournalOrbit:
+def assemble_orbit(bearing, th, t, T, fx, fy, ex, ey, vel, wrel, film, terms, method, cycles,
+                   change, converged) -> JournalOrbit:
+    """The JournalOrbit of a solved eccentricity path (shared by the mobility march, the
+    steady-load locus and the finite-bearing models): attitude, film, power, periodicity."""
     e = np.hypot(ex, ey)
     pos = np.arctan2(ey, ex)
     att = np.arctan2(fx * ey - fy * ex, fx * ex + fy * ey)

@@ -16,7 +16,7 @@ from camtrain.errors import field_error
 from camtrain.formulas.bearings import ocvirk_attitude_angle, ocvirk_eccentricity
 
 from .geometry import JournalBearing
-from .orbit import _finish, diagram_rate, load_diagram
+from .orbit import assemble_orbit, diagram_rate, load_diagram
 from .power import check_film, check_terms
 from .result import JournalOrbit
 
@@ -67,5 +67,5 @@ def steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jour
     ex, ey = e * np.cos(pos), e * np.sin(pos)
     vel = np.column_stack([wbar * ey, -wbar * ex, np.where(wbar >= 0, -0.5, 0.5) * np.pi])
     t = (th - th[0]) / angle_rate
-    return _finish(bearing, th, t, period / angle_rate, fx, fy, ex, ey, vel, wj - wb, film,
+    return assemble_orbit(bearing, th, t, period / angle_rate, fx, fy, ex, ey, vel, wj - wb, film,
                    terms, "steady", 1, 0.0, True)
