@@ -37,25 +37,13 @@ the entrainment-direction switch; pure squeeze u_e = 0 is symmetric either way) 
 """
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
 from .flow_factors import contact_factor, mean_gap, pressure_flow_factor, shear_flow_factor
+from .pressure_solution import CAVITATION_MODELS, PressureSolution
 
 __all__ = ["CAVITATION_MODELS", "PressureSolution", "cumulative_trapezoid", "reynolds_pressure",
            "contact_grid"]
-
-CAVITATION_MODELS = ("reynolds", "half_sommerfeld")
-
-
-class PressureSolution(NamedTuple):
-    pressure: np.ndarray      #: p(x) >= 0 [Pa] (negative pressures dropped)
-    load: float               #: integral of p dx [N/m]
-    rupture: float            #: film-rupture position x_c [m] (nan: none in the zone)
-    flooded: bool             #: True if no rupture point lies inside the zone (Reynolds BC)
-    liquid_fraction: np.ndarray  #: 1 in the full film, h_T(x_c)/h_T(x) in the cavitated zone
-
 
 def cumulative_trapezoid(y: np.ndarray, x: np.ndarray) -> np.ndarray:
     """Cumulative trapezoid integral from x[0], starting at 0 (same length as x)."""

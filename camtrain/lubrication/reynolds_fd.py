@@ -24,7 +24,7 @@ import numpy as np
 from scipy.linalg.lapack import dgtsv
 
 from .flow_factors import contact_factor, mean_gap, pressure_flow_factor, shear_flow_factor
-from .reynolds import CAVITATION_MODELS, PressureSolution
+from .pressure_solution import CAVITATION_MODELS, PressureSolution
 
 __all__ = ["fd_reynolds_pressure"]
 
