@@ -102,12 +102,16 @@ class DeckKind:
     name: str
     schema: str
     effects: tuple[EffectSpec, ...]
+    #: "module:function" giving the header rows of report.txt and the sheets,
+    #: ``rows(deck, result) -> [(label with unit, value)]``; "" = the valve-train header
+    header: str = ""
 
 
 #: every deck kind, by the name a deck gives in ``kind = "..."`` (valve_train is the default)
 KINDS: dict[str, DeckKind] = {k.name: k for k in (
     DeckKind("valve_train", "camtrain.deck.schema:Deck", VALVE_TRAIN),
-    DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING),
+    DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING,
+             header="camtrain.report.bearing_plots:bearing_header_rows"),
 )}
 DEFAULT_KIND = "valve_train"
 

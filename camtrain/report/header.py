@@ -1,8 +1,10 @@
 """The header block of every sheet and of report.txt: key inputs and the power loss (as Ball's)."""
 from __future__ import annotations
 
+import importlib
 import math
 
+from camtrain.effects.catalogue import kind_of
 from camtrain.report.display import fmt
 from camtrain.result import Result
 from camtrain.units import from_si
@@ -14,10 +16,11 @@ def speed_rpm(deck) -> float:
 
 def header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
     """(label with unit, value) rows; inputs a deck does not give are left out."""
-    if getattr(deck, "kind", "") == "journal_bearing":
-        from camtrain.report.bearing_plots import bearing_header_rows
-
-        return bearing_header_rows(deck, result)
+    if deck is not None:
+        header = kind_of(deck).header
+        if header:  # a deck kind with a header of its own (e.g. journal_bearing)
+            module, function = header.split(":")
+            return getattr(importlib.import_module(module), function)(deck, result)
     rows: list[tuple[str, str]] = []
     if deck is not None:
         m, cam = deck.mechanism, deck.cam

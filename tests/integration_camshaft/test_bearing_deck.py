@@ -91,3 +91,7 @@ def test_orbit_plot_renders(tmp_path):
     assert files[0].read_bytes()[:4] == b"\x89PNG"
     rows = dict(bearing_header_rows(deck.model, r))
     assert rows["Diameter (mm)"] == "25"
+    # report.txt and the sheets reach the bearing header through the deck kind, not a switch
+    from camtrain.report.header import header_rows
+
+    assert header_rows(deck.model, r) == bearing_header_rows(deck.model, r)
