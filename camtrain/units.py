@@ -33,6 +33,9 @@ UNITS: dict[str, tuple[float, str]] = {
     "K": (1.0, "K"),
     "W": (1.0, "W"),
     "N·m": (1.0, "N*m"),
+    "kg/m³": (1.0, "kg/m^3"),
+    "N·m/rad": (1.0, "N*m/rad"),
+    "N·s/m": (1.0, "N*s/m"),
     "mm/deg": (1e-3 / (math.pi / 180.0), "m/rad"),
     "mm/deg²": (1e-3 / (math.pi / 180.0) ** 2, "m/rad^2"),
 }

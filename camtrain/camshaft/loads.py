@@ -23,7 +23,7 @@ import numpy as np
 
 from camtrain.errors import field_error
 
-__all__ = ["split_beam_loads", "lobe_force", "pulley_load"]
+__all__ = ["split_beam_loads", "lobe_force", "pulley_load", "shaft_forces"]
 
 
 def split_beam_loads(bearing_positions, force_positions, force_x, force_y,
@@ -112,3 +112,22 @@ def pulley_load(drive_torque, pulley_radius, hub_load_angle, preload: float = 0.
         raise field_error("preload", "must be >= 0", preload)
     mag = np.abs(np.asarray(drive_torque, dtype=float)) / r + 2.0 * preload
     return mag * math.cos(hub_load_angle), mag * math.sin(hub_load_angle)
+
+
+def shaft_forces(lobe_positions, lobe_forces, drive_torque, drive=None):
+    """Every force on the camshaft: each lobe's (x, y) and, when ``drive`` = (position, pitch
+    radius, hub-load angle, preload) is given, the drive's hub load (:func:`pulley_load`) from
+    the summed torque. Returns (positions [m], fx, fy), fx and fy shaped (n_forces, n_angles)."""
+    positions = [float(p) for p in lobe_positions]
+    fx = [np.asarray(f[0], dtype=float) for f in lobe_forces]
+    fy = [np.asarray(f[1], dtype=float) for f in lobe_forces]
+    if drive is not None:
+        position, radius, angle, preload = drive
+        hx, hy = pulley_load(drive_torque, radius, angle, preload)
+        positions.append(float(position))
+        fx.append(np.asarray(hx, dtype=float))
+        fy.append(np.asarray(hy, dtype=float))
+    n = np.asarray(drive_torque).size
+    if not positions:
+        return [], np.zeros((0, n)), np.zeros((0, n))
+    return positions, np.array(fx), np.array(fy)

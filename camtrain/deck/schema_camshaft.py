@@ -5,6 +5,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_flexibility import CamshaftFlexibility
 from camtrain.errors import Problem
 from camtrain.units import mm_text
 
@@ -105,6 +106,8 @@ class Camshaft:
         "Bearings in axial order, one [[camshaft.bearings]] each (needed for bearing loads)")
     drive: CamDrive | None = section("Drive pulley, sprocket or gear (hub load on the bearings)")
     damper: CamDamper | None = section("Pendulum dampers for chosen torque orders")
+    flexibility: CamshaftFlexibility | None = section(
+        "The shaft as elastic in bending and torsion (bearing reactions, deflections, twist)")
     rotation: Literal["anticlockwise", "clockwise"] = option(
         "Direction of shaft rotation in the bearing frame (x, y)", default="anticlockwise")
     v_angle: float | None = quantity(

@@ -27,34 +27,31 @@ def missing(deck) -> list[str]:
 
 def reason(deck, planned) -> str:
     cs = deck.camshaft
-    return f"{len(cs.bearings)} bearings given; {cs.method} method"
+    split = ("loads from the elastic camshaft" if "ElasticCamshaft" in planned
+             else "loads split as simply supported bays")
+    return f"{len(cs.bearings)} bearings given; {split}; {cs.method} method"
 
 
 def bearing_loads(deck, shaft, res):
     """Loads on every camshaft bearing's film, (n_bearings, n_angles) each for x and y [N]."""
     import numpy as np
 
-    from camtrain.camshaft import pulley_load, split_beam_loads
+    from camtrain.camshaft import shaft_forces, split_beam_loads
 
     cs = deck.camshaft
-    positions = list(shaft.lobe_positions)
-    fx = [f[0] for f in shaft.lobe_forces]
-    fy = [f[1] for f in shaft.lobe_forces]
+    drive = None
     if cs.drive is not None:
-        hx, hy = pulley_load(shaft.torque, cs.drive.radius, cs.drive.hub_load_angle,
-                             cs.drive.preload)
-        positions.append(cs.drive.position)
-        fx.append(hx)
-        fy.append(hy)
+        drive = (cs.drive.position, cs.drive.radius, cs.drive.hub_load_angle, cs.drive.preload)
     else:
         res.warn("no [camshaft.drive]: the drive hub load is left out, so the bearing "
                           "next to the drive is under-loaded")
+    positions, fx, fy = shaft_forces(shaft.lobe_positions, shaft.lobe_forces, shaft.torque,
+                                     drive)
     n = res["cam_angle"].size
     if not positions:
         zero = np.zeros((len(cs.bearings), n))
         return zero, zero.copy()
-    return split_beam_loads([b.position for b in cs.bearings], positions, np.array(fx),
-                            np.array(fy), cs.overhang)
+    return split_beam_loads([b.position for b in cs.bearings], positions, fx, fy, cs.overhang)
 
 
 def run(deck, inputs, res):
@@ -64,7 +61,7 @@ def run(deck, inputs, res):
 
     from camtrain.bearings import JournalBearing, bearing_petroff_power
     from camtrain.bearings.product import BearingOrbits
-    from camtrain.camshaft.product import CamshaftLoads
+    from camtrain.camshaft.product import CamshaftLoads, ElasticCamshaft
     from camtrain.effects.bearing_output import add_orbit, solve_bearing
     from camtrain.errors import ConvergenceError
 
@@ -73,7 +70,11 @@ def run(deck, inputs, res):
     theta = res["cam_angle"]
     omega = shaft.omega  # signed by the shaft rotation
     viscosity = cs.viscosity if cs.viscosity is not None else deck.lubricant.viscosity
-    bx, by = bearing_loads(deck, shaft, res)
+    elastic = inputs.get(ElasticCamshaft)
+    if elastic is not None:  # the elastic shaft shared the loads ([camshaft.flexibility])
+        bx, by = elastic.bearing_x, elastic.bearing_y
+    else:
+        bx, by = bearing_loads(deck, shaft, res)
     orbits, total = [], 0.0
     for i, b in enumerate(cs.bearings):
         k = i + 1

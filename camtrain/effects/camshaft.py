@@ -131,7 +131,8 @@ def run(deck, inputs, res):
                          shift_curve(signed, lobe.max_lift_angle), lobe.follower_axis_angle)
               for lobe in bank1]
     return CamshaftLoads(torque=total, lobe_positions=tuple(lobe.position for lobe in bank1),
-                         lobe_forces=tuple(forces), omega=turn * omega)
+                         lobe_forces=tuple(forces), omega=turn * omega,
+                         lobe_torques=tuple(curves))
 
 
 def _dampers(deck, res, total, harm, omega) -> None:

@@ -48,6 +48,7 @@ PRODUCTS: dict[str, str] = {
     "CamTorque": "camtrain.contact.products:CamTorque",
     "GuideLosses": "camtrain.contact.guides:GuideLosses",
     "CamshaftLoads": "camtrain.camshaft.product:CamshaftLoads",
+    "ElasticCamshaft": "camtrain.camshaft.product:ElasticCamshaft",
     "BearingOrbits": "camtrain.bearings.product:BearingOrbits",
 }
 
@@ -81,10 +82,14 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "bank, pendulum dampers",
                needs=("TrainKinematics", "ContactLoad"), uses=("ContactFriction", "CamTorque"),
                produces=("CamshaftLoads",)),
+    EffectSpec("camshaft_elastic", "camtrain.effects.camshaft_elastic",
+               "elastic camshaft: bending in two planes and torsion under the lobe and drive "
+               "loads, bearing reactions, deflections and twist per lobe, orders",
+               needs=("CamshaftLoads",), produces=("ElasticCamshaft",)),
     EffectSpec("bearings", "camtrain.effects.bearings",
-               "camshaft bearings: lobe and drive forces split as beams, journal orbits (Booker "
-               "mobility), minimum film and power",
-               needs=("CamshaftLoads",), produces=("BearingOrbits",)),
+               "camshaft bearings: lobe and drive forces split as beams (or by the elastic "
+               "shaft), journal orbits (Booker mobility), minimum film and power",
+               needs=("CamshaftLoads",), uses=("ElasticCamshaft",), produces=("BearingOrbits",)),
 )
 
 JOURNAL_BEARING: tuple[EffectSpec, ...] = (

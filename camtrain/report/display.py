@@ -20,7 +20,7 @@ _BY_UNIT = {
 }
 
 #: names whose length is a film (shown in µm, like Ball's plots) or a contact size
-_MICRO = ("film", "h_min", "h_cen", "hertz_half", "roughness")
+_MICRO = ("film", "h_min", "h_cen", "hertz_half", "roughness", "deflection")
 
 #: readable labels of well-known columns (others show their name)
 LABELS = {
