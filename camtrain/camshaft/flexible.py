@@ -132,11 +132,13 @@ class BeamShaft:
     def C(self):
         return self.C_full[np.ix_(self.free, self.free)]
 
-    def natural_frequencies(self) -> np.ndarray:
-        """Undamped natural frequencies [rad/s] of the bending model, ascending."""
+    def natural_frequencies(self, count: int | None = None) -> np.ndarray:
+        """Undamped natural frequencies [rad/s] of the bending model, ascending (the lowest
+        ``count`` only, when given)."""
         from scipy.linalg import eigh
 
-        lam = eigh(self.K, self.M, eigvals_only=True)
+        subset = None if count is None else [0, min(count, self.K.shape[0]) - 1]
+        lam = eigh(self.K, self.M, eigvals_only=True, subset_by_index=subset)
         return np.sqrt(np.clip(lam, 0.0, None))
 
 
@@ -226,7 +228,7 @@ def beam_shaft(st: Stations, section: ShaftSection, bearing_stiffness, bearing_d
     free = np.setdiff1d(np.arange(d), fixed)
     shaft = BeamShaft(st, K + Kb, M, Cs, v_idx, free, fixed, kb, cb)
     if damping_ratio > 0:
-        w1 = shaft.natural_frequencies()[0]
+        w1 = shaft.natural_frequencies(1)[0]
         Cs = Cs + (2.0 * damping_ratio / w1) * K
         shaft = BeamShaft(st, K + Kb, M, Cs, v_idx, free, fixed, kb, cb)
     return shaft

@@ -144,7 +144,7 @@ def _outputs(res, cs, theta, bx, by, dx, dy, twist, harmonic_orders) -> None:
 
 def _resonance(res, beam, torsion, omega, orders) -> None:
     """First natural frequencies as metrics; a warning when a load order sits near one."""
-    bending = float(beam.natural_frequencies()[0])
+    bending = float(beam.natural_frequencies(1)[0])
     twisting = float(torsion.natural_frequencies()[0])
     res.add_metric("shaft_bending_frequency_1", bending / (2.0 * math.pi), "Hz",
                    "first bending natural frequency of the camshaft")

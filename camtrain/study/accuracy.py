@@ -24,7 +24,8 @@ from camtrain.errors import CamtrainError, InputError, Problem
 
 #: Metrics studied when a run produces them (scalar results a designer acts on).
 KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
-               "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift")
+               "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift",
+               "shaft_deflection_max", "shaft_twist_max")
 
 #: Observed orders outside this range are treated as noise, not as asymptotic convergence.
 PLAUSIBLE_ORDER = (0.5, 8.0)
@@ -56,6 +57,10 @@ def _iterates(raw: dict) -> bool:
     return raw.get("mechanism", {}).get("type") in ("finger", "rocker", "pushrod", "desmodromic")
 
 
+def _elastic_camshaft(raw: dict) -> bool:
+    return "flexibility" in raw.get("camshaft", {})
+
+
 def _smoothing_spline(raw: dict) -> bool:
     table = raw.get("lift", {}).get("table", {})
     return _lift_form(raw) == "table" and table.get("derivative", "smoothing_spline") == \
@@ -72,6 +77,10 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("table_smoothing", "lift.table.smoothing", (4.0, 2.0, 1.0, 0.5, 0.25),
          lambda v: v, _smoothing_spline,
          "smoothing level of the lift-table spline (relative to the data precision)"),
+    Knob("shaft_stations", "camshaft.flexibility.nodes_per_span", (0, 1, 2, 4, 8),
+         lambda v: 1.0 / (v + 1), _elastic_camshaft,
+         "extra stations per span of the elastic camshaft (element length / (n + 1))",
+         integer=True),
 )}
 
 
