@@ -104,6 +104,11 @@ PUBLISHED = {
                         ("frictional power loss per cam", 39.68, "W", "Yang 1992, Fig 4.2",
                          "power_loss_mean"),
                     ]),
+    "zeta_intake_camshaft_elastic": ("The Zeta intake camshaft as an elastic shaft in bending and "
+                                     "torsion, with a belt pulley. No source gives the shaft, its "
+                                     "supports or the belt: every such value is assumed (flagged "
+                                     "in the deck), so there is no published number to compare; "
+                                     "see docs/camshaft_dynamics.md.", []),
     "zeta_intake_camshaft": ("The whole Zeta intake camshaft: eight intake cams and five plain "
                              "bearings, 1500 rpm camshaft. camtrain's drive power is the "
                              "cycle mean of the summed lobe torques, which over a cycle is the "
