@@ -31,9 +31,11 @@ def choose_model(bearing: JournalBearing, model: str = "auto") -> tuple[str, str
         raise field_error("model", "unknown bearing model", model, " or ".join(BEARING_MODELS))
     ld = bearing.land / bearing.diameter
     if model == "short":
-        return "short", (f"short bearing (Ocvirk) as the deck asks; land b/d = {ld:.3g} "
-                         "(the short film is optimistic by 3-200 % above b/d 0.1, see "
-                         "docs/bearings.md)")
+        from .validity import short_model_warning
+
+        warning = short_model_warning(ld, SHORT_LIMIT)
+        return "short", (f"short bearing (Ocvirk) as the deck asks; land b/d = {ld:.3g}"
+                         + (f"; {warning}" if warning else ""))
     if model == "finite":
         return "finite", f"finite-length Reynolds film as the deck asks; land b/d = {ld:.3g}"
     if ld <= SHORT_LIMIT:

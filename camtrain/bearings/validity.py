@@ -5,6 +5,10 @@ models give an eccentricity; the ratio of their minimum films ``(1 - eps_short) 
 eps_finite)`` says how optimistic the short bearing is (> 1: the short bearing promises a
 thicker film than the bearing has). Ocvirk: ``S = (d/b)^2 / (pi shape(eps))`` with Ocvirk's
 load shape function (``camtrain.formulas.bearings.ocvirk_load``).
+
+:func:`short_model_warning` is the one place a plan or a run says how optimistic an explicit
+short model is for a bearing; it reads :data:`FILM_RATIO_TABLE` (the docs/bearings.md table,
+computed by :func:`short_film_ratio`, checked against it by a derived test).
 """
 from __future__ import annotations
 
@@ -14,9 +18,8 @@ import numpy as np
 
 from camtrain.formulas.bearings import ocvirk_load
 
-from .finite import finite_performance
-
-__all__ = ["short_film_ratio", "ocvirk_sommerfeld"]
+__all__ = ["short_film_ratio", "ocvirk_sommerfeld", "FILM_RATIO_TABLE", "short_model_error",
+           "short_model_warning"]
 
 _EPS = (0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.93, 0.95, 0.965, 0.975,
         0.985)
@@ -35,6 +38,8 @@ def short_film_ratio(b_over_d: float, sommerfeld, *, cavitation: str = "reynolds
     The finite S(eps) curve is solved at 17 eccentricities (0.02..0.985) and interpolated in
     (log S, log(1 - eps)), where it is nearly straight; the Ocvirk curve is closed form.
     """
+    from .finite import finite_performance
+
     s_query = np.atleast_1d(np.asarray(sommerfeld, dtype=float))
     eps = np.array(_EPS)
     s_fin, start = [], None
@@ -51,3 +56,52 @@ def short_film_ratio(b_over_d: float, sommerfeld, *, cavitation: str = "reynolds
     out = gap_ocv / gap_fin
     out[(q > np.log(s_fin[0])) | (q < np.log(s_fin[-1]))] = np.nan  # outside the solved range
     return out
+
+
+#: h_min(short) / h_min(finite) (Swift-Stieber, no groove, 120 x 12 mesh) from
+#: :func:`short_film_ratio`: {land b/d: ratios at FILM_RATIO_SOMMERFELD}; None where the finite
+#: eccentricity is above 0.985 (outside the solved range). docs/bearings.md prints the same table.
+FILM_RATIO_SOMMERFELD = (1.0, 0.3, 0.1, 0.03, 0.01)
+FILM_RATIO_TABLE = {
+    0.05: (1.01, 1.02, 1.03, None, None),
+    0.1: (1.02, 1.04, 1.06, 1.12, None),
+    0.2: (1.03, 1.07, 1.12, 1.23, 1.41),
+    0.25: (1.04, 1.08, 1.15, 1.28, 1.51),
+    0.3: (1.04, 1.09, 1.17, 1.34, 1.60),
+    0.4: (1.04, 1.11, 1.22, 1.44, 1.80),
+    0.5: (1.05, 1.12, 1.26, 1.53, 2.00),
+    0.7: (1.04, 1.13, 1.32, 1.72, 2.38),
+    1.0: (1.04, 1.14, 1.39, 1.96, 2.95),
+}
+
+
+def short_model_error(b_over_d: float) -> tuple[float, float, float, float]:
+    """(ratio at S = 1, ratio at S = 0.1, ratio at the lowest S solved, that S) for a land
+    ``b_over_d``,
+    interpolated linearly in b/d in :data:`FILM_RATIO_TABLE` (clamped to its ends)."""
+    keys = sorted(FILM_RATIO_TABLE)
+    x = min(max(float(b_over_d), keys[0]), keys[-1])
+    hi = next(k for k in keys if k >= x)
+    lo = hi if x == hi else keys[keys.index(hi) - 1]
+    t = 0.0 if hi == lo else (x - lo) / (hi - lo)
+
+    def at(col):
+        a, b = FILM_RATIO_TABLE[lo][col], FILM_RATIO_TABLE[hi][col]
+        if a is None or b is None:
+            return None
+        return a + t * (b - a)
+
+    col = next(i for i in (4, 3, 2) if at(i) is not None)
+    return at(0), at(2), at(col), FILM_RATIO_SOMMERFELD[col]
+
+
+def short_model_warning(b_over_d: float, limit: float = 0.05) -> str | None:
+    """The warning for a short (Ocvirk) film chosen at land ``b_over_d``, or None when the land
+    is short enough (b/d <= ``limit``: within 3.5 % of the finite film for S >= 0.1)."""
+    if not b_over_d > limit:
+        return None
+    at_1, at_01, low, s_low = short_model_error(b_over_d)
+    more = "at least " if b_over_d > max(FILM_RATIO_TABLE) else ""
+    return (f"warning: at land b/d {b_over_d:.3g} the short film is optimistic, {more}"
+            f"x{at_1:.2f} the finite-length film at Sommerfeld 1, x{at_01:.2f} at 0.1"
+            + (f", x{low:.2f} at {s_low:g}" if s_low < 0.1 else "") + " (docs/bearings.md)")

@@ -10,6 +10,14 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_bearing_model import (
+    BearingCavitation,
+    BearingModelName,
+    cavitation_field,
+    model_field,
+    n_theta_field,
+    n_z_field,
+)
 from camtrain.deck.schema_camshaft import bearing_geometry_problems
 from camtrain.errors import Problem
 from camtrain.units import from_si
@@ -17,7 +25,7 @@ from camtrain.units import from_si
 
 @dataclass(frozen=True, kw_only=True)
 class BearingGeometry:
-    """The bearing and its oil (short-bearing theory; a full central groove makes two lands)."""
+    """The bearing and its oil (a full central groove makes two lands)."""
 
     diameter: float = quantity("Journal diameter d", "mm", gt=0, example=25.0)
     length: float = quantity("Overall bearing length b, groove included", "mm", gt=0,
@@ -91,10 +99,15 @@ class BearingSolver:
     """Model and resolution knobs (see `camtrain accuracy`)."""
 
     method: Literal["mobility", "steady", "petroff"] = option(
-        "mobility (Booker orbit, marched until periodic), steady (quasi-static Ocvirk) or "
+        "mobility (Booker orbit, marched until periodic), steady (quasi-static locus) or "
         "petroff (concentric power only)", default="mobility")
+    model: BearingModelName = model_field()
+    cavitation: BearingCavitation = cavitation_field()
+    n_theta: int = n_theta_field()
+    n_z: int = n_z_field()
     mobility: Literal["exact", "booker"] = option(
-        "Mobility: exact pi-film inversion or Booker's closed form", default="exact")
+        "Mobility of the short model: exact pi-film inversion or Booker's closed form",
+        default="exact")
     film: Literal["pi", "2pi"] = option(
         "Shear film for power: 2pi = complete film (Martin 1985, Yang eq. 1.22; Ball eq. 6.7) "
         "or pi = loaded pi film only (Booker 1965, Yang eq. 1.21)", default="pi")

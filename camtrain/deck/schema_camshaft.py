@@ -5,6 +5,14 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_bearing_model import (
+    BearingCavitation,
+    BearingModelName,
+    cavitation_field,
+    model_field,
+    n_theta_field,
+    n_z_field,
+)
 from camtrain.deck.schema_flexibility import CamshaftFlexibility
 from camtrain.errors import Problem
 from camtrain.units import mm_text
@@ -45,7 +53,7 @@ def bearing_geometry_problems(bearing, path: str) -> list[Problem]:
 
 @dataclass(frozen=True, kw_only=True)
 class CamBearing:
-    """One plain camshaft bearing (short-bearing theory; a full central groove makes two lands)."""
+    """One plain camshaft bearing (a full central groove makes two lands)."""
 
     position: float = quantity("Axial position of the bearing centre", "mm", example=0.0)
     diameter: float = quantity("Journal diameter d", "mm", gt=0, example=25.97)
@@ -126,10 +134,15 @@ class Camshaft:
         "eq. 6.7, used by Yang for his grooved pressure-fed bearings) or pi = shear over the "
         "loaded pi film only (Booker 1965, Yang eq. 1.21; about half)", default="pi")
     method: Literal["mobility", "steady", "petroff"] = option(
-        "Bearing model: mobility (Booker orbit), steady (quasi-static Ocvirk) or petroff "
+        "Bearing method: mobility (Booker orbit), steady (quasi-static locus) or petroff "
         "(concentric power only)", default="mobility")
+    bearing_model: BearingModelName = model_field()
+    bearing_cavitation: BearingCavitation = cavitation_field()
+    bearing_n_theta: int = n_theta_field()
+    bearing_n_z: int = n_z_field()
     mobility: Literal["exact", "booker"] = option(
-        "Mobility: exact pi-film inversion or Booker's closed form", default="exact")
+        "Mobility of the short model: exact pi-film inversion or Booker's closed form",
+        default="exact")
     bearing_tolerance: float = quantity(
         "Cycle-to-cycle change of the eccentricity ratio that counts as periodic", "-",
         default=1e-5, gt=0, lt=0.1)

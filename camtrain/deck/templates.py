@@ -144,6 +144,9 @@ BEARING_EXAMPLE: dict[str, object] = {
     "bearing.viscosity": 0.01, "speed.journal": 1500.0,
     "load.angles": [0.0, 90.0, 180.0, 270.0], "load.load_x": [0.0, 0.0, 0.0, 0.0],
     "load.load_y": [-500.0, -500.0, -500.0, -500.0],
+    # the check reproduces Ocvirk's closed form, so it names the short film; a new bearing
+    # leaves model at its default (auto: the finite film above land b/d 0.05)
+    "solver.model": "short",
 }
 
 

@@ -7,23 +7,49 @@ import numpy as np
 from camtrain.bearings import JournalBearing, bearing_orbit, steady_orbit
 
 
+def model_reason(brg: JournalBearing, options) -> tuple[str, str]:
+    """(film model used, the plan's sentence) for ``options`` (a FilmModelOptions)."""
+    from camtrain.bearings.models import choose_model
+
+    used, why = choose_model(brg, options.model)
+    if used == "finite":
+        why += f" ({options.cavitation} cavitation, mesh {options.n_theta} x {options.n_z})"
+    return used, why
+
+
 def solve_bearing(brg: JournalBearing, lx, ly, angles, omega_journal, omega_bearing, *,
                   angle_rate, period, method, film, mobility="exact", terms="shear",
-                  tol=1e-7, period_tol=1e-5, max_cycles=20, start="steady"):
-    """JournalOrbit for ``method`` mobility or steady; None for petroff (no orbit)."""
+                  tol=1e-7, period_tol=1e-5, max_cycles=20, start="steady", options=None):
+    """JournalOrbit for ``method`` mobility or steady; None for petroff (no orbit).
+
+    ``options`` (a FilmModelOptions; None = the short model) picks the film through
+    :func:`camtrain.bearings.models.choose_model`: the short pi film or the finite-length
+    Reynolds film (its mobility map, or its steady curve)."""
+    from camtrain.bearings.models import finite_steady_orbit, orbit_mobility
+
+    used = "short" if options is None else model_reason(brg, options)[0]
     if method == "mobility":
+        if used == "finite":
+            mobility = orbit_mobility(brg, used, mobility, options.cavitation,
+                                      options.n_theta, options.n_z)
         return bearing_orbit(brg, lx, ly, angles, omega_journal, omega_bearing,
                              angle_rate=angle_rate, period=period, film=film, terms=terms,
                              mobility=mobility, tol=tol, period_tol=period_tol,
                              max_cycles=max_cycles, start=start)
     if method == "steady":
+        if used == "finite":
+            return finite_steady_orbit(brg, lx, ly, angles, omega_journal, omega_bearing,
+                                       angle_rate=angle_rate, period=period, film=film,
+                                       terms=terms, cavitation=options.cavitation,
+                                       n_theta=options.n_theta, n_z=options.n_z)
         return steady_orbit(brg, lx, ly, angles, omega_journal, omega_bearing,
                             angle_rate=angle_rate, period=period, film=film, terms=terms)
     return None
 
 
-def add_orbit(res, orbit, component: str | None, what: str) -> None:
-    """Columns and metrics of one orbit (``eccentricity`` etc.) of a result component."""
+def add_orbit(res, orbit, component: str | None, what: str, model: str = "short") -> None:
+    """Columns and metrics of one orbit (``eccentricity`` etc.) of a result component; the
+    film ``model`` used is named in the metric descriptions."""
     from functools import partial
 
     col = partial(res.add_column, component=component)
@@ -41,9 +67,11 @@ def add_orbit(res, orbit, component: str | None, what: str) -> None:
     met("max_eccentricity", orbit.eccentricity[i], "-",
                    f"{what}: largest eccentricity ratio", orbit.angle[i])
     met("min_film", orbit.min_film, "m",
-                   f"{what}: smallest film; angle = where on the cycle", orbit.min_film_angle)
+        f"{what}: smallest film ({model} film model); angle = where on the cycle",
+        orbit.min_film_angle)
     met("min_film_position", orbit.min_film_position, "rad",
                    f"{what}: direction of the smallest film in the bearing frame")
     met("power_mean", orbit.mean_power, "W",
-                   f"{what}: cycle-mean friction power ({orbit.method}, {orbit.film} film)")
+                   f"{what}: cycle-mean friction power ({model} film model, {orbit.method}, "
+        f"{orbit.film} film)")
     met("cycles", orbit.cycles, "-", f"{what}: load cycles marched")

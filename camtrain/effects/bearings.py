@@ -3,11 +3,13 @@
 The lobe forces of the camshaft effect and the drive hub load (:func:`camtrain.camshaft.
 pulley_load`, from the summed torque) are shared between the bearings as statically determinate
 beams (Ball 1988 §6.3; Yang 1992 §3.3.1, Fig. 3.6). Each bearing's load diagram over one camshaft
-revolution then gives the journal orbit by Booker's mobility method with the short-bearing pi
-film (Yang eqs 1.12-1.16; Ball eqs 6.1-6.6), marched until periodic; or the steady-load locus
-(Yang eq. 1.13); or Petroff's concentric power (eq. 1.19). Power uses the pi or 2 pi shear film
-(Yang eqs 1.21, 1.22). The orbit solver and its result columns are shared with the stand-alone
-bearing deck (:mod:`camtrain.bearings.solve`).
+revolution then gives the journal orbit by Booker's mobility method (Yang eqs 1.12-1.16; Ball
+eqs 6.1-6.6), marched until periodic; or the steady-load locus (Yang eq. 1.13); or Petroff's
+concentric power (eq. 1.19). The film is the deck's ``camshaft.bearing_model``: the short-bearing
+pi film (Ocvirk, as Ball and Yang) or the finite-length Reynolds film
+(:mod:`camtrain.bearings.models`); ``auto`` picks per bearing by its land b/d. Power uses the pi
+or 2 pi shear film (Yang eqs 1.21, 1.22). The orbit solver and its result columns are shared with
+the stand-alone bearing deck (:mod:`camtrain.effects.bearing_output`).
 """
 from __future__ import annotations
 
@@ -25,11 +27,32 @@ def missing(deck) -> list[str]:
     return out
 
 
+def _journal(deck, i, b):
+    from camtrain.bearings import JournalBearing
+
+    cs = deck.camshaft
+    viscosity = cs.viscosity if cs.viscosity is not None else deck.lubricant.viscosity
+    return JournalBearing(b.diameter, b.length, b.clearance, viscosity, b.groove_width,
+                          name=f"camshaft.bearings[{i}]")
+
+
 def reason(deck, planned) -> str:
     cs = deck.camshaft
     split = ("loads from the elastic camshaft" if "ElasticCamshaft" in planned
              else "loads split as simply supported bays")
-    return f"{len(cs.bearings)} bearings given; {split}; {cs.method} method"
+    head = f"{len(cs.bearings)} bearings given; {split}; {cs.method} method"
+    if cs.method == "petroff":
+        return head + " (concentric power, no film model)"
+    from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.effects.bearing_output import model_reason
+
+    options = film_model_options(cs, "bearing_")
+    groups: dict[str, list[int]] = {}
+    for i, b in enumerate(cs.bearings):
+        groups.setdefault(model_reason(_journal(deck, i, b), options)[1], []).append(i + 1)
+    parts = [f"bearing{'s' if len(ks) > 1 else ''} {', '.join(map(str, ks))}: {why}"
+             for why, ks in groups.items()]
+    return head + "; " + "; ".join(parts)
 
 
 def bearing_loads(deck, shaft, res):
@@ -59,17 +82,18 @@ def run(deck, inputs, res):
 
     import numpy as np
 
-    from camtrain.bearings import JournalBearing, bearing_petroff_power
+    from camtrain.bearings import bearing_petroff_power
     from camtrain.bearings.product import BearingOrbits
     from camtrain.camshaft.product import CamshaftLoads, ElasticCamshaft
-    from camtrain.effects.bearing_output import add_orbit, solve_bearing
+    from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.effects.bearing_output import add_orbit, model_reason, solve_bearing
     from camtrain.errors import ConvergenceError
 
     cs = deck.camshaft
     shaft = inputs[CamshaftLoads]
     theta = res["cam_angle"]
     omega = shaft.omega  # signed by the shaft rotation
-    viscosity = cs.viscosity if cs.viscosity is not None else deck.lubricant.viscosity
+    options = film_model_options(cs, "bearing_")
     elastic = inputs.get(ElasticCamshaft)
     if elastic is not None:  # the elastic shaft shared the loads ([camshaft.flexibility])
         bx, by = elastic.bearing_x, elastic.bearing_y
@@ -80,8 +104,7 @@ def run(deck, inputs, res):
         k = i + 1
         what, comp = f"bearing {k}", f"bearing_{k}"
         met = partial(res.add_metric, component=comp)
-        brg = JournalBearing(b.diameter, b.length, b.clearance, viscosity, b.groove_width,
-                             name=f"camshaft.bearings[{i}]")
+        brg = _journal(deck, i, b)
         res.add_column("load_x", bx[i], "N", f"{what}: load on the film, x",
                        component=comp)
         res.add_column("load_y", by[i], "N", f"{what}: load on the film, y",
@@ -95,7 +118,8 @@ def run(deck, inputs, res):
             orbit = solve_bearing(brg, bx[i], by[i], theta, omega, 0.0, angle_rate=abs(omega),
                                   period=TWO_PI, method=cs.method, film=cs.film,
                                   mobility=cs.mobility, tol=min(1e-7, 1e-2 * cs.bearing_tolerance),
-                                  period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles)
+                                  period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles,
+                                  options=options)
         except ConvergenceError as exc:
             res.warn(f"{what}: {exc}; no orbit reported")
             orbits.append(None)
@@ -105,7 +129,7 @@ def run(deck, inputs, res):
             met("power_mean", petroff, "W", f"{what}: Petroff power (method = petroff)")
             total += petroff
             continue
-        add_orbit(res, orbit, comp, what)
+        add_orbit(res, orbit, comp, what, model_reason(brg, options)[0])
         total += orbit.mean_power
     res.add_metric("bearings_power_total", total, "W",
                    "cycle-mean friction power of all camshaft bearings")

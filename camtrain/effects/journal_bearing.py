@@ -1,7 +1,9 @@
 """Journal-bearing effect: the one effect of a stand-alone ``kind = "journal_bearing"`` deck.
 
 One plain bearing under its periodic load diagram: orbit by the deck's method (Booker mobility,
-steady-load locus or Petroff), columns on the load-diagram grid (:mod:`camtrain.bearings`).
+steady-load locus or Petroff) with the deck's film model (``solver.model``: short, finite or
+auto, :mod:`camtrain.bearings.models`), columns on the load-diagram grid
+(:mod:`camtrain.bearings`).
 """
 from __future__ import annotations
 
@@ -10,8 +12,21 @@ def missing(deck) -> list[str]:
     return []
 
 
+def _journal(deck):
+    from camtrain.bearings import JournalBearing
+
+    g = deck.bearing
+    return JournalBearing(g.diameter, g.length, g.clearance, g.viscosity, g.groove_width)
+
+
 def reason(deck, planned) -> str:
-    return (f"stand-alone bearing deck: {deck.solver.method} method, {deck.solver.film} film")
+    head = f"stand-alone bearing deck: {deck.solver.method} method, {deck.solver.film} film"
+    if deck.solver.method == "petroff":
+        return head + " (concentric power, no film model)"
+    from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.effects.bearing_output import model_reason
+
+    return head + "; " + model_reason(_journal(deck), film_model_options(deck.solver))[1]
 
 
 def run(deck, inputs, result):
@@ -19,12 +34,14 @@ def run(deck, inputs, result):
 
     import numpy as np
 
-    from camtrain.bearings import JournalBearing, bearing_petroff_power
+    from camtrain.bearings import bearing_petroff_power
     from camtrain.bearings.product import BearingOrbits
-    from camtrain.effects.bearing_output import add_orbit, solve_bearing
+    from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.effects.bearing_output import add_orbit, model_reason, solve_bearing
 
-    g, s, ld, sol = deck.bearing, deck.speed, deck.load, deck.solver
-    brg = JournalBearing(g.diameter, g.length, g.clearance, g.viscosity, g.groove_width)
+    s, ld, sol = deck.speed, deck.load, deck.solver
+    brg = _journal(deck)
+    options = film_model_options(sol)
     angles = np.asarray(ld.angles)
     lx, ly = np.asarray(ld.load_x), np.asarray(ld.load_y)
     result.add_axis("angle", angles, "rad", "load-diagram angle of the journal")
@@ -36,11 +53,11 @@ def run(deck, inputs, result):
                           period=ld.period, method=sol.method, film=sol.film,
                           mobility=sol.mobility, terms=sol.terms, tol=sol.step_tolerance,
                           period_tol=sol.period_tolerance, max_cycles=sol.max_cycles,
-                          start=sol.start)
+                          start=sol.start, options=options)
     if orbit is None:
         result.add_metric("power_mean", petroff, "W", "Petroff power (method = petroff)")
         return BearingOrbits((None,))
-    add_orbit(result, orbit, None, "bearing")
+    add_orbit(result, orbit, None, "bearing", model_reason(brg, options)[0])
     result.add_metric("attitude_mean", float(np.mean(orbit.attitude)), "rad",
                       "mean attitude angle over the load diagram")
     result.add_metric("periodicity_error", orbit.periodicity_error, "-",
