@@ -25,7 +25,10 @@ from camtrain.errors import CamtrainError, InputError, Problem
 #: Metrics studied when a run produces them (scalar results a designer acts on).
 KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
                "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift",
-               "shaft_deflection_max", "shaft_twist_max")
+               "shaft_deflection_max", "shaft_twist_max",
+               "min_film", "max_eccentricity", "power_mean", "bearings_power_total")
+#: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
+BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
 
 #: Observed orders outside this range are treated as noise, not as asymptotic convergence.
 PLAUSIBLE_ORDER = (0.5, 8.0)
@@ -46,6 +49,10 @@ class Knob:
     applies: Callable[[dict], bool]
     description: str
     integer: bool = False
+    #: sets the knob's value in a raw deck when one path is not enough (default: set_path)
+    setter: Callable[[dict, object], dict] | None = None
+    #: time a rung's second run (caches warm): for knobs whose first run builds a table
+    warm: bool = False
 
 
 def _lift_form(raw: dict) -> str:
@@ -67,9 +74,55 @@ def _smoothing_spline(raw: dict) -> bool:
         "smoothing_spline"
 
 
+def _valve_train(raw: dict) -> bool:
+    return raw.get("kind", "valve_train") == "valve_train"
+
+
+def _bearing_section(raw: dict) -> tuple[str, str] | None:
+    """(section path, field prefix) of the deck's journal-bearing film options, or None when
+    the deck has no bearing with a film (no bearings, or the Petroff method only)."""
+    if raw.get("kind") == "journal_bearing":
+        where = ("solver", "")
+    elif raw.get("camshaft", {}).get("bearings"):
+        where = ("camshaft", "bearing_")
+    else:
+        return None
+    node = raw.get(where[0], {})
+    return None if node.get("method", "mobility") == "petroff" else where
+
+
+def _set_film(raw: dict, **fields) -> dict:
+    section, prefix = _bearing_section(raw)
+    out = copy.deepcopy(raw)
+    out.setdefault(section, {}).update({prefix + k: v for k, v in fields.items()})
+    return out
+
+
+def _mesh_rung(raw: dict, n_theta) -> dict:
+    """The finite film at n_theta around and n_theta/12 along a half land (the default 72 x 6)."""
+    return _set_film(raw, model="finite", n_theta=int(n_theta), n_z=max(2, round(n_theta / 12)))
+
+
+#: rungs of the model knob: the short film, the finite film at the deck's mesh, and the finite
+#: film at the finest mesh of the bearing_mesh ladder (the reference)
+MODEL_RUNGS = ("short", "finite", "finite:288")
+
+
+def _model_step(value) -> float:
+    """Steps of the model rungs: short 1, finite at the deck's mesh 0.5, finite:N 1/N (unequal
+    ratios, so no order is read across models)."""
+    model, _, n_theta = str(value).partition(":")
+    return 1.0 / int(n_theta) if n_theta else (1.0 if model == "short" else 0.5)
+
+
+def _model_rung(raw: dict, value) -> dict:
+    model, _, n_theta = str(value).partition(":")
+    return _mesh_rung(raw, int(n_theta)) if n_theta else _set_film(raw, model=model)
+
+
 KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
-         lambda v: 1.0 / v, lambda raw: True,
+         lambda v: 1.0 / v, _valve_train,
          "cam angles over one revolution (angle step 360 deg / n)", integer=True),
     Knob("friction_tolerance", "solver.friction_tolerance",
          (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8), lambda v: v, _iterates,
@@ -81,6 +134,16 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda v: 1.0 / (v + 1), _elastic_camshaft,
          "extra stations per span of the elastic camshaft (element length / (n + 1))",
          integer=True),
+    Knob("bearing_mesh", "solver.n_theta | camshaft.bearing_n_theta (n_z = n_theta / 12)",
+         (36, 72, 144, 288), lambda v: 1.0 / v, lambda raw: _bearing_section(raw) is not None,
+         "finite journal-bearing film mesh, model = finite (time: the orbit with the map "
+         "cached; building a map costs ~200 Reynolds solutions once per b/d and mesh)",
+         integer=True, setter=_mesh_rung, warm=True),
+    Knob("bearing_model", "solver.model | camshaft.bearing_model", MODEL_RUNGS,
+         _model_step,
+         lambda raw: _bearing_section(raw) is not None,
+         "journal-bearing film model: short (Ocvirk) and finite at the deck's mesh against "
+         "the finite film at 288 x 24", setter=_model_rung, warm=True),
 )}
 
 
@@ -235,10 +298,15 @@ def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat:
     knob = KNOBS[name]
     values = tuple(ladder or knob.ladder)
     values = tuple(int(v) for v in values) if knob.integer else values
-    rungs = [dict(value=v, **_run_rung(set_path(raw, knob.path, v), base_dir, repeat))
-             for v in values]
+    setter = knob.setter or (lambda r, v: set_path(r, knob.path, v))
+    runs = max(repeat, 2) if knob.warm else repeat
+    rungs = [dict(value=v, **_run_rung(setter(raw, v), base_dir, runs)) for v in values]
     steps = [knob.step(v) for v in values]
     found = [m for m in metrics if any(m in r["metrics"] for r in rungs)]
+    if metrics is KEY_METRICS:
+        names = dict.fromkeys(k for r in rungs for k in r["metrics"])
+        found += [k for k in names if k.startswith("bearing_")
+                  and k.partition("_")[2].partition("_")[2] in BEARING_METRICS]
     per_metric = {}
     for m in found:
         series = [r["metrics"].get(m, {}).get("value") for r in rungs]
@@ -309,6 +377,11 @@ def _fmt(x, spec: str = ".4g") -> str:
     return "" if x is None else format(x, spec)
 
 
+def value_text(v) -> str:
+    """A rung's knob value as printed: numbers with %g, names (a model) as they are."""
+    return format(v, "g") if isinstance(v, int | float) else str(v)
+
+
 def render_table(report: dict) -> str:
     """Plain-text tables for the terminal: per knob, the time of each rung, then per metric the
     value, relative error and observed order at each rung (metrics the knob leaves unchanged are
@@ -322,7 +395,8 @@ def render_table(report: dict) -> str:
             t = rung["wall_time"]
             msg = rung["status"] if rung["status"] == "ok" else \
                 f"{rung['status']}: {rung['message'].splitlines()[0]}"
-            lines.append(f"  {rung['value']:>10g} {_fmt(None if t is None else 1e3 * t, '.1f'):>9}"
+            lines.append(f"  {value_text(rung['value']):>10} "
+                         f"{_fmt(None if t is None else 1e3 * t, '.1f'):>9}"
                          f" {_fmt(k['worst_error'][i], '.2e'):>10}  {msg}")
         unchanged = []
         for metric, m in k["metrics"].items():
@@ -333,14 +407,14 @@ def render_table(report: dict) -> str:
                          f"({m['reference_kind']}), observed order {_fmt(m['order'], '.2f') or '-'}")
             for i, v in enumerate(m["values"]):
                 if v is not None:
-                    lines.append(f"  {k['rungs'][i]['value']:>10g} {_fmt(v, '.7g'):>14} "
+                    lines.append(f"  {value_text(k['rungs'][i]['value']):>10} {_fmt(v, '.7g'):>14} "
                                  f"err {_fmt(m['errors'][i], '.2e'):>9}  "
                                  f"p {_fmt(m['orders'][i], '.2f') or '-':>5}")
         if unchanged:
             lines.append("  unchanged by this knob: " + ", ".join(unchanged))
         c = k["cheapest"]
         lines.append(f"  no rung meets {tol:.3g} for every metric" if c is None else
-                     f"  cheapest meeting {tol:.3g}: {knob} = {c['value']:g} "
+                     f"  cheapest meeting {tol:.3g}: {knob} = {value_text(c['value'])} "
                      f"({1e3 * c['wall_time']:.1f} ms, worst error {c['worst_error']:.2e})")
     return "\n".join(lines)
 

@@ -48,7 +48,8 @@ def pareto_plot(report: dict, path: str | Path) -> Path:
             continue
         ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=knob)
         for t, e, v in pts:
-            ax.annotate(f"{v:g}", (t, e), textcoords="offset points", xytext=(4, 3), fontsize=7)
+            text = format(v, "g") if isinstance(v, int | float) else str(v)
+            ax.annotate(text, (t, e), textcoords="offset points", xytext=(4, 3), fontsize=7)
     front = pareto_front(study_points(report))
     if front:
         ax.step([1e3 * p[0] for p in front], [max(p[1], ERROR_FLOOR) for p in front],
