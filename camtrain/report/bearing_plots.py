@@ -103,6 +103,21 @@ def write_orbit_plots(result: Result, out_dir: Path, *, title: str = "",
     return written
 
 
+def _film_model_text(deck) -> str:
+    """The film model the run uses (short or finite, and how it was chosen)."""
+    from camtrain.bearings import JournalBearing
+    from camtrain.bearings.models import choose_model
+
+    sol, g = deck.solver, deck.bearing
+    if sol.method == "petroff":
+        return "none (Petroff)"
+    used, _ = choose_model(JournalBearing(g.diameter, g.length, g.clearance, g.viscosity,
+                                          g.groove_width), sol.model)
+    text = "short (Ocvirk)" if used == "short" else \
+        f"finite ({sol.cavitation}, {sol.n_theta} x {sol.n_z})"
+    return text + (" by auto" if sol.model == "auto" else "")
+
+
 def bearing_header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
     """Header rows (label with unit, value) of a ``kind = "journal_bearing"`` deck, the
     counterpart of the valve-train header for report.txt and the sheets."""
@@ -114,7 +129,8 @@ def bearing_header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
             ("Viscosity (Pa·s)", f"{g.viscosity:g}"),
             ("Journal / bush speed (rpm)",
              f"{from_si(s.journal, 'rpm'):g} / {from_si(s.bearing, 'rpm'):g}"),
-            ("Method / film", f"{deck.solver.method} / {deck.solver.film}")]
+            ("Method / film", f"{deck.solver.method} / {deck.solver.film}"),
+            ("Film model", _film_model_text(deck))]
     if result is not None:
         for key, label, unit, scale in (("max_eccentricity", "Max eccentricity ratio", "", 1.0),
                                         ("min_film", "Min film (µm)", "", 1e6),

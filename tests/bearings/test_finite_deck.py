@@ -132,6 +132,12 @@ def test_ocvirk_check_deck_with_the_finite_model():
     assert fin.metrics["min_film"].value == pytest.approx(4.78e-6, rel=0.005)
     assert "finite film model" in fin.metrics["min_film"].description
     assert "finite-length Reynolds film as the deck asks" in fin.plan.steps[0].reason
+    from camtrain.report.bearing_plots import bearing_header_rows
+
+    rows = dict(bearing_header_rows(ct.loads(ocvirk_text("finite")).model, fin))
+    assert rows["Film model"] == "finite (reynolds, 72 x 6)"
+    assert dict(bearing_header_rows(ct.load(OCVIRK).model, short))["Film model"] == \
+        "short (Ocvirk)"
     for name in ("eccentricity", "attitude", "min_film", "min_film_position", "power"):
         assert fin[name].shape == short[name].shape
     deck = ct.load(OCVIRK).model
