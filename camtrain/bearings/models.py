@@ -25,15 +25,17 @@ BEARING_MODELS = ("auto", "short", "finite")
 SHORT_LIMIT = 0.05
 
 
-def choose_model(bearing: JournalBearing, model: str = "auto") -> tuple[str, str]:
-    """(model used, reason) for ``bearing``."""
+def choose_model(bearing: JournalBearing, model: str = "auto", *,
+                 sommerfeld: float | None = None) -> tuple[str, str]:
+    """(model used, reason) for ``bearing``; ``sommerfeld`` (of a land at the largest load, when
+    known before the run) sharpens the short model's warning."""
     if model not in BEARING_MODELS:
         raise field_error("model", "unknown bearing model", model, " or ".join(BEARING_MODELS))
     ld = bearing.land / bearing.diameter
     if model == "short":
         from .validity import short_model_warning
 
-        warning = short_model_warning(ld, SHORT_LIMIT)
+        warning = short_model_warning(ld, SHORT_LIMIT, sommerfeld)
         return "short", (f"short bearing (Ocvirk) as the deck asks; land b/d = {ld:.3g}"
                          + (f"; {warning}" if warning else ""))
     if model == "finite":

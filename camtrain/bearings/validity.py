@@ -19,7 +19,7 @@ import numpy as np
 from camtrain.formulas.bearings import ocvirk_load
 
 __all__ = ["short_film_ratio", "ocvirk_sommerfeld", "FILM_RATIO_TABLE", "short_model_error",
-           "short_model_warning"]
+           "short_model_ratio_at", "steady_sommerfeld", "short_model_warning"]
 
 _EPS = (0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.93, 0.95, 0.965, 0.975,
         0.985)
@@ -95,13 +95,49 @@ def short_model_error(b_over_d: float) -> tuple[float, float, float, float]:
     return at(0), at(2), at(col), FILM_RATIO_SOMMERFELD[col]
 
 
-def short_model_warning(b_over_d: float, limit: float = 0.05) -> str | None:
+def short_model_ratio_at(b_over_d: float, sommerfeld: float) -> float | None:
+    """h_min(short) / h_min(finite) at one Sommerfeld number, interpolated in b/d and log S in
+    :data:`FILM_RATIO_TABLE`; None outside the table's S range (0.01-1 where solved)."""
+    keys = sorted(FILM_RATIO_TABLE)
+    x = min(max(float(b_over_d), keys[0]), keys[-1])
+    hi = next(k for k in keys if k >= x)
+    lo = hi if x == hi else keys[keys.index(hi) - 1]
+    t = 0.0 if hi == lo else (x - lo) / (hi - lo)
+    row = [None if a is None or b is None else a + t * (b - a)
+           for a, b in zip(FILM_RATIO_TABLE[lo], FILM_RATIO_TABLE[hi], strict=True)]
+    q = math.log(sommerfeld) if sommerfeld > 0 else -math.inf
+    for (s0, r0), (s1, r1) in zip(zip(FILM_RATIO_SOMMERFELD, row, strict=True),
+                                  zip(FILM_RATIO_SOMMERFELD[1:], row[1:], strict=True),
+                                  strict=False):
+        if r0 is None or r1 is None:
+            return None
+        if math.log(s1) <= q <= math.log(s0):
+            return r0 + (q - math.log(s0)) / (math.log(s1) - math.log(s0)) * (r1 - r0)
+    return None
+
+
+def steady_sommerfeld(diameter: float, land: float, clearance: float, viscosity: float,
+                      speed: float, load: float) -> float:
+    """S = (R/c)^2 eta N L D / W of one land for a steady ``load`` on it [N]; ``speed`` N in
+    rev/s (SI inputs)."""
+    r = 0.5 * diameter
+    return (r / clearance) ** 2 * viscosity * speed * land * diameter / load if load > 0 \
+        else math.inf
+
+
+def short_model_warning(b_over_d: float, limit: float = 0.05,
+                        sommerfeld: float | None = None) -> str | None:
     """The warning for a short (Ocvirk) film chosen at land ``b_over_d``, or None when the land
-    is short enough (b/d <= ``limit``: within 3.5 % of the finite film for S >= 0.1)."""
+    is short enough (b/d <= ``limit``: within 3.5 % of the finite film for S >= 0.1). With
+    ``sommerfeld`` (of the largest load, when the deck knows it) the ratio there is added."""
     if not b_over_d > limit:
         return None
     at_1, at_01, low, s_low = short_model_error(b_over_d)
     more = "at least " if b_over_d > max(FILM_RATIO_TABLE) else ""
-    return (f"warning: at land b/d {b_over_d:.3g} the short film is optimistic, {more}"
+    text = (f"warning: at land b/d {b_over_d:.3g} the short film is optimistic, {more}"
             f"x{at_1:.2f} the finite-length film at Sommerfeld 1, x{at_01:.2f} at 0.1"
-            + (f", x{low:.2f} at {s_low:g}" if s_low < 0.1 else "") + " (docs/bearings.md)")
+            + (f", x{low:.2f} at {s_low:g}" if s_low < 0.1 else ""))
+    here = None if sommerfeld is None else short_model_ratio_at(b_over_d, sommerfeld)
+    if here is not None:
+        text += f"; about {more}x{here:.1f} at the largest load (steady S = {sommerfeld:.2g})"
+    return text + " (docs/bearings.md)"

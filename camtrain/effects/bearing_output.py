@@ -7,11 +7,12 @@ import numpy as np
 from camtrain.bearings import JournalBearing, bearing_orbit, steady_orbit
 
 
-def model_reason(brg: JournalBearing, options) -> tuple[str, str]:
-    """(film model used, the plan's sentence) for ``options`` (a FilmModelOptions)."""
+def model_reason(brg: JournalBearing, options, sommerfeld=None) -> tuple[str, str]:
+    """(film model used, the plan's sentence) for ``options`` (a FilmModelOptions);
+    ``sommerfeld`` of a land at the largest load when the deck gives the loads."""
     from camtrain.bearings.models import choose_model
 
-    used, why = choose_model(brg, options.model)
+    used, why = choose_model(brg, options.model, sommerfeld=sommerfeld)
     if used == "finite":
         why += f" ({options.cavitation} cavitation, mesh {options.n_theta} x {options.n_z})"
     return used, why

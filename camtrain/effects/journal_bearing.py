@@ -26,7 +26,24 @@ def reason(deck, planned) -> str:
     from camtrain.deck.schema_bearing_model import film_model_options
     from camtrain.effects.bearing_output import model_reason
 
-    return head + "; " + model_reason(_journal(deck), film_model_options(deck.solver))[1]
+    brg = _journal(deck)
+    return head + "; " + model_reason(brg, film_model_options(deck.solver),
+                                      _largest_load_sommerfeld(deck, brg))[1]
+
+
+def _largest_load_sommerfeld(deck, brg) -> float:
+    """Steady Sommerfeld number of one land at the largest load of the diagram (the load is
+    shared by the lands; N from the mean of journal and bush speeds, so a fixed bush gives the
+    journal speed)."""
+    import math
+
+    from camtrain.bearings.validity import steady_sommerfeld
+
+    ld, s = deck.load, deck.speed
+    load = max(math.hypot(x, y) for x, y in zip(ld.load_x, ld.load_y, strict=True))
+    lands = 2 if brg.grooved else 1
+    return steady_sommerfeld(brg.diameter, brg.land, brg.clearance, brg.viscosity,
+                             abs(s.journal + s.bearing) / (2.0 * math.pi), load / lands)
 
 
 def run(deck, inputs, result):

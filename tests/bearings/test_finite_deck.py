@@ -89,6 +89,7 @@ def test_plan_names_the_model_and_why():
     assert "short bearing (Ocvirk) as the deck asks; land b/d = 0.72" in shipped
     # the explicit short model at b/d 0.72 is optimistic: the warning states by how much
     assert "warning" in shipped and "x1.32 at 0.1" in shipped and "x2.42 at 0.01" in shipped
+    assert "about x1.5 at the largest load (steady S = 0.056)" in shipped
     auto = reason(ocvirk_text(None), "journal_bearing")
     assert "auto: land b/d = 0.72 > 0.05" in auto and "mesh 72 x 6" in auto
     assert "warning" not in auto
@@ -138,6 +139,11 @@ def test_ocvirk_check_deck_with_the_finite_model():
     assert rows["Film model"] == "finite (reynolds, 72 x 6)"
     assert dict(bearing_header_rows(ct.load(OCVIRK).model, short))["Film model"] == \
         "short (Ocvirk)"
+    # the plan's estimate (validity table interpolated at the deck's S 0.056) against the runs
+    from camtrain.bearings.validity import short_model_ratio_at
+
+    ratio = short.metrics["min_film"].value / fin.metrics["min_film"].value
+    assert short_model_ratio_at(0.72, 0.056) == pytest.approx(ratio, rel=0.03)
     for name in ("eccentricity", "attitude", "min_film", "min_film_position", "power"):
         assert fin[name].shape == short[name].shape
     deck = ct.load(OCVIRK).model
