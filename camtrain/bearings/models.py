@@ -102,8 +102,12 @@ def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, ome
     w_abs = np.where(wbar == 0.0, 1.0, np.abs(wbar))
     target = share * np.hypot(fx, fy) * c ** 2 / (12.0 * bearing.viscosity * w_abs * r ** 4)
     if np.any(target > force_t[-1]):
-        raise field_error("load", "too large for the steady finite curve (eps > 0.99)",
-                          float(np.max(np.hypot(fx, fy))), hint="check the load units")
+        from camtrain.errors import ConvergenceError
+
+        raise ConvergenceError(
+            f"steady finite locus: a load of {float(np.max(np.hypot(fx, fy))):.6g} N needs "
+            f"eps > {eps_t[-1]:g}, beyond the finite curve (film below "
+            f"{100 * (1 - eps_t[-1]):g} % of the clearance); check the load units")
     lf = np.log(np.maximum(target, 1e-300))
     gap = np.exp(np.interp(lf, np.log(force_t[1:]), np.log(1.0 - eps_t[1:]),
                            left=math.log(1.0 - eps_t[1])))

@@ -165,6 +165,17 @@ def test_steady_method_with_the_finite_model_agrees_with_its_orbit():
     assert steady.metrics["min_film"].value < 7.0e-6
 
 
+def test_steady_finite_beyond_its_curve_is_a_convergence_finding():
+    """A load the finite film cannot carry above eps 0.99 stops like the orbit that leaves the
+    map: a ConvergenceError (a camshaft bearing warns and reports no orbit), not bad input."""
+    from camtrain.bearings.models import finite_steady_orbit
+    from camtrain.errors import ConvergenceError
+
+    brg = JournalBearing(25e-3, 18e-3, 25e-6, 0.01)
+    with pytest.raises(ConvergenceError, match="eps > 0.99"):
+        finite_steady_orbit(brg, np.zeros(2), np.full(2, -1e7), np.array([0.0, 3.0]), 157.0)
+
+
 def test_zeta_camshaft_with_the_finite_model():
     """Zeta intake camshaft, bearing_model = "finite": every bearing's film below the short
     one (Yang's model), orbits periodic (the run warns on none), eps higher."""
