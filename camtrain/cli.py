@@ -15,7 +15,7 @@ from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 
 MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic",
-                     "journal_bearing")
+                     "journal_bearing", "engine")
 
 
 def _console(stderr: bool = False):
@@ -107,6 +107,8 @@ def check(deck: str, quiet: bool) -> None:
         console = _console()
         print_echo(console, loaded)
         print_plan(console, plan)
+        for message in getattr(loaded.model, "advisories", list)():
+            console.print(f"[yellow]warning:[/] {message}")
         console.print(f"[green]{loaded.path}: valid[/]")
 
 

@@ -136,6 +136,37 @@ PUBLISHED = {
     "zeta_exhaust": ("Ford 1.8 l Zeta exhaust cam, tapered, on a domed follower, 1500 rpm "
                      "camshaft. Yang prints results for the intake cam only, so there is no "
                      "published number to compare with.", []),
+    "ruston_6veb": ("Ruston 6VEB-X Mk III turbocharged diesel, six in line, 600 rpm: crank-train "
+                    "loads and the big-end and main bearings (Yang 1992 App. A, complete). The "
+                    "deck runs the physics as printed; Yang's printed film needs his program's "
+                    "half mobility (solver.mobility_factor = \"yang1992_program\", "
+                    "docs/engine.md).", [
+                        ("peak big-end load", 207.0e3, "N", "Yang 1992 Fig. 2.2 (207 kN at "
+                         "10 deg, reference notes)", "big_end_max_load"),
+                        ("big-end minimum film", 4.91, "µm", "Yang 1992 §2.3 (at 277 deg)",
+                         "big_end_1_min_film_dynamic",
+                         "the deck runs the mobility as printed; Yang's program halved it: "
+                         "with solver.mobility_factor = \"yang1992_program\" camtrain gives "
+                         "5.08 µm at 277.0 deg (tested, docs/engine.md)"),
+                        ("big-end Petroff power", 270.2, "W", "Yang 1992 App. A with eq. 1.19",
+                         "big_end_1_power_petroff"),
+                    ]),
+    "zeta_crank_bearings": ("Ford 1.8 l Zeta crankshaft bearings at 3000 rpm (Yang 1992 App. B, "
+                            "Table 2.1/2.2 speed). Yang's crank-train data are lost: bore and "
+                            "stroke are outside values, rod length and masses assumed (flagged "
+                            "in the deck), so only the Petroff cells are a reproduction.", [
+                                ("big-end Petroff power", 21.1, "W", "Yang 1992 Table 2.1",
+                                 "big_end_1_power_petroff"),
+                                ("main Petroff power, partial groove (mean of 40.7 and 31.9)",
+                                 36.3, "W", "Yang 1992 Tables 2.1, 2.2", "main_1_power_petroff"),
+                                ("big-end dynamic power", 44.5, "W", "Yang 1992 Table 2.1",
+                                 "big_end_1_power_dynamic",
+                                 "not a reproduction: rod length and masses are assumed"),
+                                ("main 3 dynamic power, partial groove (mean of 76.8 and 97.3)",
+                                 87.05, "W", "Yang 1992 Tables 2.1, 2.2",
+                                 "main_3_power_dynamic",
+                                 "not a reproduction: rod length and masses are assumed"),
+                            ]),
     "bearing_ocvirk_check": ("A stand-alone short journal bearing under a constant 500 N load: "
                              "a check against Ocvirk's closed-form short-bearing solution "
                              "(not a published result of the sources).", [
@@ -148,7 +179,7 @@ PUBLISHED = {
 }
 
 #: factor from a metric's SI unit to the unit of the published value
-_FACTOR = {"µm": 1e6, "W": 1.0, "rpm": 1.0, "-": 1.0}
+_FACTOR = {"µm": 1e6, "W": 1.0, "rpm": 1.0, "-": 1.0, "N": 1.0}
 
 #: camtrain metrics shown for every deck (name, label, unit shown, factor from SI)
 SHOWN = [("max_lift", "maximum lift", "mm", 1e3),
@@ -208,6 +239,9 @@ def _images(stem: str, result, loaded) -> list[tuple[str, str]]:
         picks.append(("panels/profile.png", f"{stem}_profile.png", "profile"))
         picks += [(f"orbit_bearing_{k}.png", f"{stem}_orbit_bearing_{k}.png",
                    f"orbit, bearing {k}") for k in range(1, 10)]
+        picks += [(f"orbit_{b}.png", f"{stem}_orbit_{b}.png", f"orbit, {b.replace('_', ' ')}")
+                  for b in ("big_end_1", "main_3")]
+        picks.append(("sheet_engine_loads.png", f"{stem}_engine_loads.png", "load diagrams"))
         for src, dst, what in picks:
             if (Path(tmp) / src).exists():
                 _compact_png(Path(tmp) / src, IMG / dst)

@@ -168,6 +168,46 @@ def render_bearing_template() -> str:
     return "\n".join(lines).rstrip() + "\n"
 
 
+#: The engine template: Yang's (1992) Ruston 6VEB-X Mk III, complete in his Appendix A
+#: (decks/ruston_6veb.toml is the same engine with every source note).
+_RUSTON_BAR = [47.37, 64.12, 48.61, 34.82, 25.51, 18.62, 14.48, 11.52, 9.03, 7.59, 6.59, 5.90,
+               5.41, 5.00, 4.72, 4.10, 3.14, 2.45, 1.76, 1.41, 1.35] + [1.21] * 38 + [
+               1.41, 1.41, 1.76, 2.10, 2.45, 3.14, 4.10, 6.10, 8.65, 12.45, 18.62, 26.55, 34.82]
+ENGINE_EXAMPLE: dict[str, object] = {
+    "kind": "engine", "title": "Ruston 6VEB-X Mk III crank train (Yang 1992 App. A)",
+    "speed.engine": 600.0, "engine.strokes": 4, "engine.bore": 260.35,
+    "engine.crank_radius": 184.15, "engine.rod_length": 782.32, "engine.piston_mass": 82.07,
+    "engine.rod_mass": 81.62, "engine.bay_lengths": [444.5] * 6, "engine.flywheel_mass": 0.0,
+    "cylinders": [{"bay": i + 1, "position": 222.25, "firing_angle": float(a)}
+                  for i, a in enumerate((0, 120, 600, 240, 480, 360))],
+    "crank_components": [{"bay": i + 1, "position": 222.25, "angle": float(a),
+                          "moment": 139.19, "moment_unit": "N·m"}
+                         for i, a in enumerate((0, 240, 120, 120, 240, 0))],
+    "pressure": [{"speeds": [600.0], "reference": "gauge", "unit": "bar", "angle_step": 10.0,
+                  "values": _RUSTON_BAR}],
+    **{f"bearings.{b}.{k}": v for b in ("big_end", "main") for k, v in (
+        ("diameter", 203.2), ("length", 57.15), ("clearance", 0.08255), ("viscosity", [0.015]))},
+}
+
+
+def render_engine_template() -> str:
+    """A complete, commented ``kind = "engine"`` deck that `camtrain check` accepts."""
+    from camtrain.deck.schema_engine import EngineDeck
+
+    lines = [
+        f"# camtrain deck: {ENGINE_EXAMPLE['title']}",
+        "# Every field has a prompt: what it is [unit in this file] (required / default / "
+        "optional).",
+        "# Crank angles are from the firing TDC of cylinder 1 in the sense of rotation; bays "
+        "and mains are",
+        "# numbered from the front. Units are the ones written here; SI inside.",
+        "# Check it with `camtrain check FILE`, run it with `camtrain run FILE --out DIR`.",
+        "",
+    ]
+    _render_section(EngineDeck, "", ENGINE_EXAMPLE, "engine", lines, active=True)
+    return "\n".join(lines).rstrip() + "\n"
+
+
 def render_template(mechanism: str) -> str:
     """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is.
 
@@ -175,6 +215,8 @@ def render_template(mechanism: str) -> str:
     """
     if mechanism == "journal_bearing":
         return render_bearing_template()
+    if mechanism == "engine":
+        return render_engine_template()
     if mechanism not in EXAMPLES:
         raise KeyError(mechanism)
     ex = EXAMPLES[mechanism]

@@ -50,6 +50,8 @@ PRODUCTS: dict[str, str] = {
     "CamshaftLoads": "camtrain.camshaft.product:CamshaftLoads",
     "ElasticCamshaft": "camtrain.camshaft.product:ElasticCamshaft",
     "BearingOrbits": "camtrain.bearings.product:BearingOrbits",
+    "CrankLoads": "camtrain.engine.loads:CrankLoads",
+    "EngineBearings": "camtrain.engine.crank_bearings:EngineBearings",
 }
 
 VALVE_TRAIN: tuple[EffectSpec, ...] = (
@@ -98,6 +100,17 @@ JOURNAL_BEARING: tuple[EffectSpec, ...] = (
                produces=("BearingOrbits",)),
 )
 
+ENGINE: tuple[EffectSpec, ...] = (
+    EffectSpec("crank_loads", "camtrain.effects.crank_loads",
+               "crank-train loads: gas and inertia forces, side thrust, big-end loads in rod "
+               "axes, main-bearing loads by the determinate bay split",
+               produces=("CrankLoads",)),
+    EffectSpec("crank_bearings", "camtrain.effects.crank_bearings",
+               "big-end and main bearings: orbits to a periodic cycle, steady and Petroff "
+               "columns, minimum film and power per bearing and in total",
+               needs=("CrankLoads",), produces=("EngineBearings",)),
+)
+
 
 @dataclass(frozen=True)
 class DeckKind:
@@ -117,6 +130,8 @@ KINDS: dict[str, DeckKind] = {k.name: k for k in (
     DeckKind("valve_train", "camtrain.deck.schema:Deck", VALVE_TRAIN),
     DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING,
              header="camtrain.report.bearing_plots:bearing_header_rows"),
+    DeckKind("engine", "camtrain.deck.schema_engine:EngineDeck", ENGINE,
+             header="camtrain.report.engine_report:engine_header_rows"),
 )}
 DEFAULT_KIND = "valve_train"
 

@@ -14,14 +14,24 @@ Pure physics on SI arrays (no deck, report or CLI imports):
 from .crank_bearings import (
                              GROOVINGS,
                              METHODS,
+                             MODELS,
                              YANG1992_MOBILITY_SCALE,
                              BearingResult,
                              BearingSpec,
                              EngineBearings,
                              SolverOptions,
+                             solve_crank_bearings,
                              solve_engine_bearings,
 )
-from .loads import CylinderLoads, MainLoads, crank_grid, cylinder_loads, main_loads
+from .loads import (
+                             CrankLoads,
+                             CylinderLoads,
+                             MainLoads,
+                             crank_grid,
+                             crank_train_loads,
+                             cylinder_loads,
+                             main_loads,
+)
 from .model import (
                              STANDARD_GRAVITY,
                              CrankComponent,
@@ -35,5 +45,6 @@ from .pressure import INTERPOLATIONS, PressureTable
 __all__ = ["CrankTrain", "Cylinder", "CrankComponent", "Engine", "PressureTable",
            "CylinderLoads", "MainLoads", "crank_grid", "cylinder_loads", "main_loads",
            "BearingSpec", "SolverOptions", "BearingResult", "EngineBearings",
-           "solve_engine_bearings", "GROOVINGS", "METHODS", "INTERPOLATIONS",
+           "solve_engine_bearings", "solve_crank_bearings", "CrankLoads", "crank_train_loads",
+           "GROOVINGS", "METHODS", "MODELS", "INTERPOLATIONS",
            "YANG1992_MOBILITY_SCALE", "STANDARD_GRAVITY", "unbalance_from_weight_moment"]

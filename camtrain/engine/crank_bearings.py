@@ -25,15 +25,17 @@ import numpy as np
 from camtrain.bearings import JournalBearing, JournalOrbit, bearing_orbit, bearing_petroff_power, steady_orbit
 from camtrain.errors import field_error
 
-from .loads import MainLoads, crank_grid, cylinder_loads, main_loads
+from .loads import CrankLoads, MainLoads, crank_train_loads
 from .model import Engine
 
 __all__ = ["BearingSpec", "SolverOptions", "BearingVariant", "BearingResult",
-           "EngineBearings", "solve_engine_bearings", "GROOVINGS", "METHODS",
-           "YANG1992_MOBILITY_SCALE"]
+           "EngineBearings", "solve_engine_bearings", "solve_crank_bearings", "GROOVINGS",
+           "METHODS", "MODELS", "YANG1992_MOBILITY_SCALE"]
 
 GROOVINGS = ("none", "central", "partial")
 METHODS = ("dynamic", "steady", "petroff")
+#: Film model of every crank bearing: Ocvirk's short bearing (Yang) or the finite Reynolds film.
+MODELS = ("short", "finite")
 #: Mobility factor of Yang's (1992) program (compatibility option; the physics is 1.0).
 YANG1992_MOBILITY_SCALE = 0.5
 
@@ -78,7 +80,9 @@ class SolverOptions:
     crank_step [rad]; pressure_interpolation "periodic_cubic" | "linear"; rod_speed
     "small_angle" (Yang eq. 2.1) | "exact"; mobility "exact" | "booker"; mobility_scale (1.0
     physics, 0.5 Yang's program); film "2pi" (Yang's tables) | "pi"; terms "shear" | "all";
-    tol per step on eps; period_tol cycle-to-cycle change; start "centre" (Yang) | "steady".
+    tol per step on eps; period_tol cycle-to-cycle change; start "centre" (Yang) | "steady";
+    model "short" (Ocvirk, Yang's tables) | "finite" (Reynolds over the whole bearing,
+    :mod:`camtrain.bearings.models`).
     """
 
     crank_step: float = math.radians(0.5)
@@ -94,8 +98,12 @@ class SolverOptions:
     start: str = "centre"
     methods: tuple = METHODS
     reuse_shifted: bool = True
+    model: str = "short"
 
     def __post_init__(self):
+        if self.model not in MODELS:
+            raise field_error("solver.bearing_model", "unknown bearing model", self.model,
+                              " or ".join(MODELS))
         for m in self.methods:
             if m not in METHODS:
                 raise field_error("engine.solver.methods", "unknown method", m,
@@ -203,12 +211,20 @@ def _solve(brg: JournalBearing, lx, ly, wj, angle, omega, period, opt: SolverOpt
     dyn = stdy = pet = None
     common = dict(angle_rate=omega, period=period, film=opt.film, terms=opt.terms)
     if "dynamic" in opt.methods:
-        dyn = bearing_orbit(brg, lx, ly, angle, wj, 0.0, mobility=opt.mobility,
+        from camtrain.bearings.models import orbit_mobility
+
+        dyn = bearing_orbit(brg, lx, ly, angle, wj, 0.0,
+                            mobility=orbit_mobility(brg, opt.model, opt.mobility),
                             mobility_scale=opt.mobility_scale, tol=opt.tol,
                             period_tol=opt.period_tol, max_cycles=opt.max_cycles,
                             start=opt.start, **common)
     if "steady" in opt.methods:
-        stdy = steady_orbit(brg, lx, ly, angle, wj, 0.0, **common)
+        if opt.model == "finite":
+            from camtrain.bearings.models import finite_steady_orbit
+
+            stdy = finite_steady_orbit(brg, lx, ly, angle, wj, 0.0, **common)
+        else:
+            stdy = steady_orbit(brg, lx, ly, angle, wj, 0.0, **common)
     if "petroff" in opt.methods:
         pet = float(bearing_petroff_power(brg, omega))
     return BearingVariant(brg, dyn, stdy, pet)
@@ -263,19 +279,25 @@ def solve_engine_bearings(engine: Engine, omega: float, big_end: BearingSpec, ma
         options: :class:`SolverOptions`.
     """
     opt = options or SolverOptions()
-    if not (omega > 0 and math.isfinite(omega)):
-        raise field_error("engine.speeds", "engine speed must be > 0", omega)
+    loads = crank_train_loads(engine, omega, opt.crank_step,
+                              interpolation=opt.pressure_interpolation, rod_speed=opt.rod_speed)
+    return solve_crank_bearings(loads, big_end, mains, opt)
+
+
+def solve_crank_bearings(loads: CrankLoads, big_end: BearingSpec, mains,
+                         options: SolverOptions | None = None) -> EngineBearings:
+    """Orbits and power of every big-end and main under the load diagrams ``loads``
+    (:func:`~camtrain.engine.loads.crank_train_loads`); ``mains`` as in
+    :func:`solve_engine_bearings`."""
+    opt = options or SolverOptions()
+    engine, omega, angle = loads.engine, loads.omega, loads.angle
     if isinstance(mains, BearingSpec):
         mains = [replace(mains, name=f"{mains.name} {i + 1}") for i in range(engine.n_mains)]
     if len(mains) != engine.n_mains:
         raise field_error("bearings.mains", "one main bearing per bay end", len(mains),
                           f"{engine.n_mains} (bays + 1)")
     period = engine.crank.cycle
-    angle = crank_grid(period, opt.crank_step)
-    cyl = [cylinder_loads(engine.crank, c.pressure, c.firing_angle, angle, omega,
-                          interpolation=opt.pressure_interpolation, rod_speed=opt.rod_speed)
-           for c in engine.cylinders]
-    ml = main_loads(engine, cyl, omega)
+    cyl, ml = list(loads.cylinders), loads.mains
     done: dict = {}
     big = [_bearing(replace(big_end, name=f"{big_end.name} {i + 1}"), "big_end", i, c.load_x,
                     c.load_y, c.omega_journal, angle, omega, period, opt, done)

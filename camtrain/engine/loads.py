@@ -21,7 +21,8 @@ from . import crank as ck
 from .model import STANDARD_GRAVITY, CrankTrain, Engine
 from .pressure import PressureTable
 
-__all__ = ["CylinderLoads", "MainLoads", "crank_grid", "cylinder_loads", "main_loads"]
+__all__ = ["CylinderLoads", "MainLoads", "CrankLoads", "crank_grid", "cylinder_loads", "main_loads",
+           "crank_train_loads"]
 
 
 def crank_grid(cycle: float, step: float) -> np.ndarray:
@@ -149,3 +150,34 @@ def main_loads(engine: Engine, cylinders: list, omega: float) -> MainLoads:
     return MainLoads(angle=angle, load_x=lx, load_y=ly, bay_x=applied[:, 0],
                      bay_y=applied[:, 1], bay_moment_x=moment[:, 0], bay_moment_y=moment[:, 1],
                      front=front, rear=rear)
+
+
+@dataclass(frozen=True)
+class CrankLoads:
+    """The crank-train load diagrams of one engine at one speed (the ``CrankLoads`` product).
+
+    ``engine`` the crank train (SI), ``omega`` the engine speed [rad/s], ``angle`` the crank
+    angle grid [rad] over one cycle (4 pi for a 4-stroke), ``cylinders`` one
+    :class:`CylinderLoads` per cylinder (big-end loads in rod axes [N]), ``mains`` the
+    :class:`MainLoads` (block axes [N]).
+    """
+
+    engine: Engine
+    omega: float
+    angle: np.ndarray
+    cylinders: tuple
+    mains: MainLoads
+
+
+def crank_train_loads(engine: Engine, omega: float, crank_step: float, *,
+                      interpolation: str = "periodic_cubic",
+                      rod_speed: str = "small_angle") -> CrankLoads:
+    """Every big-end and main-bearing load diagram at engine speed ``omega`` [rad/s] on a grid
+    of ``crank_step`` [rad] (Yang 1992 §1.2.1-1.2.2)."""
+    if not (omega > 0 and math.isfinite(omega)):
+        raise field_error("speed.engine", "engine speed must be > 0", omega)
+    angle = crank_grid(engine.crank.cycle, crank_step)
+    cyl = tuple(cylinder_loads(engine.crank, c.pressure, c.firing_angle, angle, omega,
+                               interpolation=interpolation, rod_speed=rod_speed)
+                for c in engine.cylinders)
+    return CrankLoads(engine, float(omega), angle, cyl, main_loads(engine, list(cyl), omega))

@@ -37,14 +37,17 @@ def orbit_series(result: Result) -> list[OrbitSeries]:
     out = []
     for name in [None, *result.components]:
         part = result.component(name)
-        if "eccentricity" not in part.columns or "min_film_position" not in part.columns:
-            continue
-        col = part.columns["eccentricity"]
-        if not col.axis or col.axis not in result.columns:
-            continue
-        label = "bearing" if name is None else name.replace("_", " ")
-        out.append(OrbitSeries(label, result[col.axis], part["eccentricity"],
-                               part["min_film_position"]))
+        # a partially grooved crank bearing has both extremes (suffixes), each its own orbit
+        for sfx in ("", "_ungrooved", "_grooved"):
+            ecc, pos = f"eccentricity{sfx}", f"min_film_position{sfx}"
+            if ecc not in part.columns or pos not in part.columns:
+                continue
+            col = part.columns[ecc]
+            if not col.axis or col.axis not in result.columns:
+                continue
+            label = ("bearing" if name is None else name.replace("_", " ")) + sfx.replace("_",
+                                                                                          " ")
+            out.append(OrbitSeries(label, result[col.axis], part[ecc], part[pos]))
     return out
 
 

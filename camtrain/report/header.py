@@ -60,4 +60,5 @@ def header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
 def title_line(deck) -> str:
     if deck is None:
         return "camtrain run"
-    return f"{deck.title} — {speed_rpm(deck):g} rpm camshaft"
+    # a deck kind whose speed is not a camshaft speed names it (the engine deck: "rpm engine")
+    return f"{deck.title} — {speed_rpm(deck):g} {getattr(deck, 'speed_label', 'rpm camshaft')}"

@@ -180,6 +180,10 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
         title = getattr(deck, "title", "") if deck is not None else ""
         for ext in formats:
             orbits += write_orbit_plots(result, out_dir, title=title, fmt=ext)
+    if "crank_angle" in result.columns:
+        from camtrain.report.engine_plots import load_sheet
+
+        orbits += load_sheet(result, out_dir, title=getattr(deck, "title", ""), formats=formats)
     if "cam_angle" not in result.columns:
         return orbits
     import matplotlib

@@ -12,6 +12,7 @@ import numpy as np
 from camtrain import __version__
 from camtrain.report.display import LABELS, deg, display_unit, fmt, shown
 from camtrain.report.echo import echo_rows
+from camtrain.report.engine_report import bearing_table_lines
 from camtrain.report.findings import find
 from camtrain.report.header import header_rows, title_line
 from camtrain.result import Result
@@ -70,6 +71,7 @@ def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
     if not result.metrics:
         lines.append("  (no scalar results)")
     lines.append("")
+    lines += bearing_table_lines(result, WIDTH)
     if checks:
         lines += [_rule("DESIGN LIMITS", "-")]
         lines += [f"  {'ok  ' if c.ok else 'FAIL'}  {c.text()}" for c in checks] + [""]

@@ -75,11 +75,23 @@ def _split(path: str, option: str) -> list[tuple[str, int | None]]:
     return tokens
 
 
-def _field_at(path: str, option: str):
+def _schema_of(raw: dict) -> type:
+    """The schema class of a raw deck's kind (valve_train when it names none or an unknown)."""
+    import importlib
+
+    from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
+
+    kind = KINDS.get(raw.get("kind", DEFAULT_KIND), KINDS[DEFAULT_KIND])
+    module, cls = kind.schema.split(":")
+    return getattr(importlib.import_module(module), cls)
+
+
+def _field_at(path: str, option: str, schema: type | None = None):
     """Walk the deck schema along ``path``; return (Shape, FieldInfo, default in SI) of the leaf."""
     from camtrain.deck.fields import deck_key, schema_paths, section_fields
     from camtrain.deck.schema import Deck
 
+    Deck = schema or Deck  # noqa: N806 - the schema class the path is read against
     cls, done = Deck, []
     tokens = _split(path, option)
     for i, (key, index) in enumerate(tokens):
@@ -152,7 +164,7 @@ def resolve_path(raw: dict, name: str, option: str = "--param") -> Parameter:
     path = ALIASES.get(name, name)
     if name == "speed" and _get(raw, "speed.engine") is not None:
         path = "speed.engine"
-    shape, info, default = _field_at(path, option)
+    shape, info, default = _field_at(path, option, _schema_of(raw))
     datum = _get(raw, path)
     if isinstance(datum, bool) or not isinstance(datum, int | float):
         datum = None

@@ -1,0 +1,48 @@
+"""Crank-bearings effect: orbits, films and power of every big-end and main bearing.
+
+Each load diagram of the ``CrankLoads`` product goes through the journal-bearing machinery
+(:mod:`camtrain.engine.crank_bearings`): Booker's mobility orbit marched from the bush centre
+to a periodic cycle over the engine cycle (Yang 1992 §1.3, eqs 1.12-1.16), the steady-load locus
+(eq. 1.13) and Petroff's concentric power (eq. 1.19) beside it, power by the 2 pi or pi shear
+film (eqs 1.21-1.22), per bearing and in total. Grooving: ungrooved, central groove (two lands)
+or FLAME's partial groove (the mean of the two). Yang's program's half mobility is the
+compatibility option ``solver.mobility_factor = "yang1992_program"``.
+"""
+from __future__ import annotations
+
+
+def missing(deck) -> list[str]:
+    return []
+
+
+def reason(deck, planned) -> str:
+    s = deck.solver
+    factor = ("Yang's program's half mobility" if s.mobility_factor == "yang1992_program"
+              else "mobility as printed")
+    return (f"{'/'.join(s.methods)}; {s.bearing_model} bearing, {s.mobility} mobility, "
+            f"{factor}; {s.film} film; big-end {deck.bearings.big_end.grooving}, mains "
+            f"{deck.bearings.main.grooving} grooving")
+
+
+def run(deck, inputs, result):
+    from camtrain.build import engine as build
+    from camtrain.effects.crank_bearing_output import add_bearing
+    from camtrain.engine import CrankLoads, solve_crank_bearings
+    from camtrain.errors import ConvergenceError
+
+    loads = inputs[CrankLoads]
+    try:
+        res = solve_crank_bearings(loads, build.bearing(deck, "big_end"),
+                                   build.bearing(deck, "main"), build.solver_options(deck))
+    except ConvergenceError as exc:
+        raise ConvergenceError(f"crank bearings: {exc} (raise solver.max_cycles or "
+                               "solver.period_tolerance)") from None
+    for b in res.bearings:
+        add_bearing(result, b)
+    for method, what in (("dynamic", "mobility orbits"), ("steady", "steady-load locus"),
+                         ("petroff", "Petroff, concentric")):
+        total = res.total(method)
+        if total is not None:
+            result.add_metric(f"total_power_{method}", total, "W",
+                              f"engine total, every big-end and main ({what})")
+    return res
