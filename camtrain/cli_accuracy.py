@@ -16,8 +16,9 @@ from camtrain.errors import CamtrainError
 @click.argument("deck", type=str)
 @click.option("--knob", "knobs", multiple=True, metavar="NAME",
               help="Resolution knob to study (repeatable): angle_points, friction_tolerance, "
-                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model. Default: every "
-                   "knob that applies to the deck.")
+                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model; engine decks: "
+                   "crank_step, period_tolerance, step_tolerance, pressure_interpolation, "
+                   "mobility. Default: every knob that applies to the deck.")
 @click.option("--tolerance", default="0.1%", show_default=True,
               help="Relative tolerance for the cheapest setting, e.g. 0.1% or 1e-3.")
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,

@@ -26,7 +26,11 @@ from camtrain.errors import CamtrainError, InputError, Problem
 KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
                "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift",
                "shaft_deflection_max", "shaft_twist_max",
-               "min_film", "max_eccentricity", "power_mean", "bearings_power_total")
+               "min_film", "max_eccentricity", "power_mean", "bearings_power_total",
+               # engine decks: crank-train loads and crank bearings
+               "big_end_max_load", "big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
+               "total_power_dynamic", "total_power_steady")
+
 #: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
 BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
 
@@ -53,6 +57,25 @@ class Knob:
     setter: Callable[[dict, object], dict] | None = None
     #: time a rung's second run (caches warm): for knobs whose first run builds a table
     warm: bool = False
+
+
+def _valve_train(raw: dict) -> bool:
+    return raw.get("kind", "valve_train") == "valve_train"
+
+
+def _engine(raw: dict) -> bool:
+    return raw.get("kind") == "engine"
+
+
+def _engine_orbits(raw: dict) -> bool:
+    methods = raw.get("solver", {}).get("methods", ("dynamic",))
+    return _engine(raw) and "dynamic" in methods
+
+
+def _choice_step(choices: tuple[str, ...]) -> Callable[[str], float]:
+    """A model choice has no step size: the rungs are ranked in ladder order (the last, the
+    default, is the reference), so errors are differences from the default model."""
+    return lambda v: float(len(choices) - choices.index(v))
 
 
 def _lift_form(raw: dict) -> str:
@@ -144,6 +167,19 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda raw: _bearing_section(raw) is not None,
          "journal-bearing film model: short (Ocvirk) and finite at the deck's mesh against "
          "the finite film at 288 x 24", setter=_model_rung, warm=True),
+    Knob("crank_step", "solver.crank_step", (4.0, 2.0, 1.0, 0.5, 0.25), lambda v: v, _engine,
+         "crank-angle step of the load diagrams and orbits [deg]"),
+    Knob("period_tolerance", "solver.period_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, _engine_orbits,
+         "cycle-to-cycle change of eps that counts as a periodic crank-bearing orbit"),
+    Knob("step_tolerance", "solver.step_tolerance", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9),
+         lambda v: v, _engine_orbits, "error per time step of the crank-bearing orbit march"),
+    Knob("pressure_interpolation", "solver.pressure_interpolation",
+         ("linear", "periodic_cubic"), _choice_step(("linear", "periodic_cubic")), _engine,
+         "cylinder pressure between table angles (model choice; reference: periodic_cubic)"),
+    Knob("mobility", "solver.mobility", ("booker", "exact"),
+         _choice_step(("booker", "exact")), _engine_orbits,
+         "short-bearing mobility (model choice; reference: the exact pi-film inversion)"),
 )}
 
 

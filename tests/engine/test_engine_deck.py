@@ -191,3 +191,21 @@ def test_sweep_over_a_nested_engine_field(tmp_path):
     assert res.exit_code == 0, res.output
     rows = (tmp_path / "sweep.csv").read_text().splitlines()
     assert len(rows) == 3 and "big_end_1_min_film_dynamic" in rows[0]
+
+
+def test_accuracy_knobs_of_an_engine_deck():
+    """`camtrain accuracy` offers the engine's knobs (and not the valve train's); a model
+    choice is a two-rung ladder whose reference is the default."""
+    from camtrain.study.accuracy import relevant_knobs, render_table, study_knob
+
+    raw = _raw()
+    assert relevant_knobs(raw) == ["crank_step", "period_tolerance", "step_tolerance",
+                                   "pressure_interpolation", "mobility"]
+    raw["solver"].update(crank_step=2.0, methods=["steady", "petroff"])
+    assert "mobility" not in relevant_knobs(raw)
+    k = study_knob(raw, "pressure_interpolation", 1e-3)
+    assert [r["status"] for r in k["rungs"]] == ["ok", "ok"]
+    total = k["metrics"]["total_power_steady"]
+    assert total["errors"][1] == 0.0 and 0.0 < total["errors"][0] < 0.01
+    text = render_table({"title": "t", "tolerance": 1e-3, "knobs": {"pressure_interpolation": k}})
+    assert "periodic_cubic" in text and "linear" in text
