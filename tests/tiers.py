@@ -24,6 +24,7 @@ FILES = {
     "tests/bearings/test_finite_published.py": "literature",
     "tests/engine/test_ruston_yang.py": "literature",
     "tests/engine/test_ruston_deck.py": "literature",
+    "tests/engine/test_zeta_deck.py": "literature",
     "tests/integration_camshaft/test_pinto_camshaft_ball.py": "literature",
     "tests/integration_camshaft/test_zeta_camshaft_yang.py": "literature",
     "tests/tribology/test_validation.py": "literature",
