@@ -59,3 +59,50 @@ def test_bench_orbit_floor(benchmark):
         return s ** 2.5 / math.pi, -4.0 * mu * s ** 1.5 / math.pi ** 2
 
     benchmark(floor)
+
+
+def _floor():
+    """The orbit floor above as a function: one vectorised pass over the mobility count of
+    one big-end orbit (3 cycles x 1440 intervals x ~7 stages)."""
+    n = 3 * TH.size * 7
+    xi = np.linspace(-0.9, 0.9, n)
+    mu = np.linspace(0.5, -0.5, n)
+    s = 1.0 - xi
+    return s ** 2.5 / math.pi, -4.0 * mu * s ** 1.5 / math.pi ** 2
+
+
+def test_bench_ruston_big_end_orbit_ratio(benchmark, record_ratio):
+    """One bearing orbit to periodicity (exact mobility, 0.5 deg), paired with its floor."""
+    from conftest import paired
+
+    timing = paired(lambda: _orbit("exact"), _floor, rounds=3)
+    record_ratio(benchmark, "Ruston big-end orbit to periodicity", timing, "well under 1 s")
+    benchmark.pedantic(_orbit, args=("exact",), rounds=1, iterations=1)
+
+
+def test_bench_ruston_deck(benchmark, record_ratio):
+    """The whole Ruston engine at one speed through the deck and the effects (crank_loads,
+    crank_bearings: 6 big-ends, 7 mains, dynamic + steady + Petroff), as `camtrain run` does
+    it without writing."""
+    from conftest import ROOT, paired
+
+    import camtrain.api as api
+
+    model = api.load(ROOT / "decks" / "ruston_6veb.toml").model
+    timing = paired(lambda: api.run(model), _floor, rounds=2)
+    record_ratio(benchmark, "Ruston engine deck at 600 rpm (13 bearings)", timing, "a few s")
+    benchmark.pedantic(api.run, args=(model,), rounds=1, iterations=1)
+
+
+def test_bench_zeta_deck(benchmark, record_ratio):
+    """The Zeta crank-bearing deck at 3000 rpm: partially grooved mains, so every main is
+    solved twice (ungrooved and grooved)."""
+    from conftest import ROOT, paired
+
+    import camtrain.api as api
+
+    model = api.load(ROOT / "decks" / "zeta_crank_bearings.toml").model
+    timing = paired(lambda: api.run(model), _floor, rounds=2)
+    record_ratio(benchmark, "Zeta crank-bearing deck at 3000 rpm (4 + 2 x 5 orbits)", timing,
+                 "a few s")
+    benchmark.pedantic(api.run, args=(model,), rounds=1, iterations=1)
