@@ -75,7 +75,9 @@ def template(mechanism: str) -> None:
 @click.option("--out", "out", type=click.Path(dir_okay=False, writable=True), default=None,
               help="Write to this file instead of standard output.")
 @click.option("--markdown", is_flag=True, help="Write the deck reference page instead.")
-def schema(out: str | None, markdown: bool) -> None:
+@click.option("--kind", "kind", type=click.Choice(["valve_train", "journal_bearing", "engine"]),
+              default="valve_train", show_default=True, help="Deck kind of the JSON Schema.")
+def schema(out: str | None, markdown: bool, kind: str) -> None:
     """Write the JSON Schema of a deck (for editors that validate while typing)."""
     import json
 
@@ -86,7 +88,7 @@ def schema(out: str | None, markdown: bool) -> None:
     else:
         from camtrain.deck.jsonschema import deck_json_schema
 
-        text = json.dumps(deck_json_schema(), indent=2, ensure_ascii=False) + "\n"
+        text = json.dumps(deck_json_schema(kind), indent=2, ensure_ascii=False) + "\n"
     if out:
         Path(out).write_text(text, encoding="utf-8")
     else:

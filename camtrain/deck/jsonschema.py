@@ -5,7 +5,6 @@ import dataclasses
 
 from camtrain import __version__
 from camtrain.deck.fields import FieldInfo, Shape, deck_key, section_fields
-from camtrain.deck.schema import Deck
 
 
 def _number(info: FieldInfo, integer: bool = False) -> dict:
@@ -63,9 +62,16 @@ def section_schema(cls: type) -> dict:
     return out
 
 
-def deck_json_schema() -> dict:
-    """The JSON Schema (draft 2020-12) of a camtrain valve-train deck."""
-    schema = section_schema(Deck)
+def deck_json_schema(kind: str = "valve_train") -> dict:
+    """The JSON Schema (draft 2020-12) of a camtrain deck of ``kind`` (a key of the catalogue's
+    KINDS; default the valve-train deck)."""
+    import importlib
+
+    from camtrain.effects.catalogue import KINDS
+
+    module, cls = KINDS[kind].schema.split(":")
+    schema = section_schema(getattr(importlib.import_module(module), cls))
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
-    schema["title"] = f"camtrain deck (camtrain {__version__})"
+    title = "deck" if kind == "valve_train" else f"{kind} deck"
+    schema["title"] = f"camtrain {title} (camtrain {__version__})"
     return schema

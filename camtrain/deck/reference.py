@@ -43,6 +43,12 @@ def markdown() -> str:
               "load diagram (`camtrain template journal_bearing`).", ""]
     _section(BearingDeck, "", "The journal-bearing deck (top level)", lines,
              label="journal bearing ")
+    from camtrain.deck.schema_engine import EngineDeck
+
+    lines += ["# Engine decks", "",
+              "A deck with `kind = \"engine\"` describes an in-line crank train and its "
+              "crankshaft bearings (`camtrain template engine`, docs/engine.md).", ""]
+    _section(EngineDeck, "", "The engine deck (top level)", lines, label="engine ")
     return "\n".join(lines).rstrip() + "\n"
 
 

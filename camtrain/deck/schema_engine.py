@@ -118,9 +118,9 @@ class PressureTableSection:
         example="gauge")
     unit: Literal["bar", "MPa", "kPa", "Pa", "psi"] = option("Unit of values and crankcase",
                                                              example="bar")
-    crankcase: float = quantity(
-        "Crankcase pressure in `unit`, subtracted from an absolute table (default 1 atm)",
-        default=-1.0)
+    crankcase: float | None = quantity(
+        "Crankcase pressure in `unit`, subtracted from an absolute table (unset: 1 atm)",
+        default=None, ge=0)
     angle_step: float = quantity("Crank-angle step of the values, from `start_angle`", "deg",
                                  gt=0, le=360, example=10.0)
     start_angle: float = quantity("Crank angle of the first value from firing TDC", "deg",
@@ -147,7 +147,9 @@ class PressureTableSection:
 
     @property
     def crankcase_pa(self) -> float:
-        return 101325.0 if self.crankcase < 0 else self.crankcase * PRESSURE_UNITS[self.unit]
+        if self.crankcase is None:
+            return 101325.0
+        return self.crankcase * PRESSURE_UNITS[self.unit]
 
     def applies_to(self, omega: float) -> bool:
         """Whether the run speed ``omega`` [rad/s] uses this table."""

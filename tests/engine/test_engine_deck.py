@@ -209,3 +209,17 @@ def test_accuracy_knobs_of_an_engine_deck():
     assert total["errors"][1] == 0.0 and 0.0 < total["errors"][0] < 0.01
     text = render_table({"title": "t", "tolerance": 1e-3, "knobs": {"pressure_interpolation": k}})
     assert "periodic_cubic" in text and "linear" in text
+
+
+def test_json_schema_of_the_engine_kind():
+    import json
+
+    res = invoke("schema", "--kind", "engine")
+    assert res.exit_code == 0
+    schema = json.loads(res.output)
+    props = schema["properties"]
+    assert props["kind"]["enum"] == ["engine"]
+    assert set(props["pressure"]["items"]["properties"]["reference"]["enum"]) == {"gauge",
+                                                                                 "absolute"}
+    assert "moment_unit" in props["crank_components"]["items"]["required"]
+    assert "big_end" in props["bearings"]["properties"]
