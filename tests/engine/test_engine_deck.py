@@ -223,3 +223,29 @@ def test_json_schema_of_the_engine_kind():
                                                                                  "absolute"}
     assert "moment_unit" in props["crank_components"]["items"]["required"]
     assert "big_end" in props["bearings"]["properties"]
+
+
+@pytest.mark.derived
+def test_pure_gas_load_lies_along_the_rod_through_the_deck():
+    """Massless piston and rod, no crank components: every big-end load lies along the rod
+    (x_r = 0) and at firing TDC equals the gas force (pi/4) D^2 p; the mains then carry exactly
+    the pin forces (Yang §1.2.1-1.2.2)."""
+    import math
+
+    import numpy as np
+
+    raw = _raw()
+    raw["engine"].update(piston_mass=0.0, rod_mass=0.0)
+    raw["crank_components"] = []
+    raw["solver"] = {"crank_step": 2.0, "methods": ["petroff"]}
+    r = ct.run(validate(raw))
+    for k in range(1, 7):
+        assert np.max(np.abs(r[f"big_end_{k}_load_x"])) == 0.0
+    p0 = 47.37e5
+    assert r["big_end_1_load_y"][0] == pytest.approx(0.25 * math.pi * 0.26035 ** 2 * p0,
+                                                    rel=1e-12)
+    total = sum(r[f"main_{k}_load_y"] for k in range(1, 8))
+    pins = -sum(r[f"big_end_{k}_load_y"] * np.cos(np.arcsin(
+        0.18415 / 0.78232 * np.sin(r["crank_angle"] - math.radians(a))))
+        for k, a in zip(range(1, 7), (0, 120, 600, 240, 480, 360), strict=True))
+    np.testing.assert_allclose(total, pins, atol=1e-9 * np.max(np.abs(pins)))
