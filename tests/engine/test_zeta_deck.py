@@ -126,3 +126,37 @@ def test_steady_and_dynamic_cells(table, method):
     bad = [(name, got, want) for name, got, want in _all_cells(r, printed(table), method)
            if got != pytest.approx(want, rel=0.02)]
     assert not bad, bad
+
+
+def test_big_end_dynamic_film_above_steady_at_3000_below_at_6000():
+    """Yang §2.4: the big-end h_min is dynamic > steady at 2000-4000 rpm and dynamic < steady
+    at 5000 rpm and above (Tables 2.1/2.3: 1.507 > 0.940 um, 0.938 < 1.410 um)."""
+    low, high = run("2.1").metrics, run("2.3").metrics
+    assert (low["big_end_1_min_film_dynamic"].value
+            > low["big_end_1_min_film_steady"].value)
+    assert (high["big_end_1_min_film_dynamic"].value
+            < high["big_end_1_min_film_steady"].value)
+
+
+def test_petroff_factor_rises_with_speed():
+    """Yang §2.4: dynamic / Petroff rises with speed, ungrooved 1.74 -> 2.0 and centrally
+    grooved 2.3 -> 2.8 (his tables: 1.785 -> 1.848 and 2.42 -> 2.58); asserted as the rise from
+    3000 to 6000 rpm and the grooved factor above the ungrooved one."""
+    def factor(t):
+        m = run(t).metrics
+        return m["total_power_dynamic"].value / m["total_power_petroff"].value
+
+    assert factor("2.3") > factor("2.1") and factor("2.4") > factor("2.2")
+    assert factor("2.2") > factor("2.1") and factor("2.4") > factor("2.3")
+
+
+def test_dynamic_and_steady_totals_close_at_3000_apart_at_6000():
+    """Yang §2.4: the dynamic and steady totals are nearly equal at 2000 and 3000 rpm
+    (Table 2.1: 0.5140 / 0.5068, 1.4 %) and slightly different at high speed (Table 2.3:
+    1.4681 / 1.5258, 3.8 %): within 2 % at 3000 rpm, further apart at 6000."""
+    def gap(t):
+        m = run(t).metrics
+        return abs(m["total_power_dynamic"].value / m["total_power_steady"].value - 1.0)
+
+    assert gap("2.1") < 0.02 and gap("2.2") < 0.02
+    assert gap("2.3") > gap("2.1") and gap("2.4") > gap("2.2")
