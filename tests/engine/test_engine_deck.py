@@ -249,3 +249,23 @@ def test_pure_gas_load_lies_along_the_rod_through_the_deck():
         0.18415 / 0.78232 * np.sin(r["crank_angle"] - math.radians(a))))
         for k, a in zip(range(1, 7), (0, 120, 600, 240, 480, 360), strict=True))
     np.testing.assert_allclose(total, pins, atol=1e-9 * np.max(np.abs(pins)))
+
+
+def test_two_stroke_single_cylinder_engine():
+    """A 2-stroke single: the cycle is 360 deg, one bay, two mains; the orbits close over 360."""
+    import math
+
+    raw = _raw()
+    raw["engine"].update(strokes=2, bay_lengths=[444.5])
+    raw["cylinders"] = raw["cylinders"][:1]
+    raw["crank_components"] = raw["crank_components"][:1]
+    raw["pressure"][0]["values"] = raw["pressure"][0]["values"][:36]
+    raw["solver"] = {"crank_step": 2.0}
+    r = ct.run(validate(raw))
+    assert r["crank_angle"].size == 180
+    assert math.degrees(r["crank_angle"][-1]) == pytest.approx(358.0)
+    assert set(r.components) == {"big_end_1", "main_1", "main_2"}
+    assert r.metrics["big_end_1_cycles"].value <= 4
+    raw["pressure"][0]["values"] = _raw()["pressure"][0]["values"]
+    with pytest.raises(InputError, match="pressure"):
+        validate(raw)
