@@ -240,7 +240,7 @@ def _images(stem: str, result, loaded) -> list[tuple[str, str]]:
         picks += [(f"orbit_bearing_{k}.png", f"{stem}_orbit_bearing_{k}.png",
                    f"orbit, bearing {k}") for k in range(1, 10)]
         picks += [(f"orbit_{b}.png", f"{stem}_orbit_{b}.png", f"orbit, {b.replace('_', ' ')}")
-                  for b in ("big_end_1", "main_3")]
+                  for b in ("big_end_1", "main_3", "main_3_grooved")]
         picks.append(("sheet_engine_loads.png", f"{stem}_engine_loads.png", "load diagrams"))
         for src, dst, what in picks:
             if (Path(tmp) / src).exists():
@@ -301,7 +301,8 @@ def deck_section(path: Path) -> list[str]:
                 NOT_YET if not math.isfinite(value) else f"{_num(value)} {unit}")
             lines.append(f"| {label} | {text} |")
         lines.append("")
-    if result is not None and "cam_angle" in result.columns:
+    if result is not None and ("cam_angle" in result.columns
+                               or "crank_angle" in result.columns):
         for image, what in _images(stem, result, loaded):
             lines += [f"![{stem}: {what}](img/{image})", ""]
     return lines
