@@ -65,10 +65,6 @@ class CrankTrainSection:
         out = []
         if self.strokes not in (2, 4):
             out.append(Problem(f"{path}.strokes", "must be 2 or 4", self.strokes, "2 or 4"))
-        if self.rod_length <= self.crank_radius:
-            out.append(Problem(f"{path}.rod_length", "must be longer than the crank radius",
-                               f"{from_si(self.rod_length, 'mm'):g} mm",
-                               f"> {from_si(self.crank_radius, 'mm'):g} mm"))
         return out
 
 

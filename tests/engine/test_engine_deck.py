@@ -78,7 +78,6 @@ def test_check_prints_the_advice(tmp_path):
 
 @pytest.mark.parametrize("change, name", [
     ({"speed": {"engine": 700.0}}, "pressure"),
-    ({"engine": {"rod_length": 100.0}}, "engine.rod_length"),
     ({"engine": {"strokes": 3}}, "engine.strokes"),
     ({"bearings": {"big_end": {"grooving": "central"}}}, "bearings.big_end.groove_width"),
     ({"solver": {"crank_step": 0.7}}, "solver.crank_step"),
@@ -132,6 +131,16 @@ def test_cli_exit_2_without_traceback(tmp_path):
         res = invoke(command, str(path))
         assert res.exit_code == 2 and "pressure" in res.output
         assert "Traceback" not in res.output
+
+
+def test_a_rod_shorter_than_the_crank_is_physically_impossible(tmp_path):
+    path = tmp_path / "short.toml"
+    path.write_text(RUSTON.read_text(encoding="utf-8").replace("rod_length = 782.32",
+                                                               "rod_length = 150.0"),
+                    encoding="utf-8")
+    res = invoke("run", str(path), "--no-plots", "--out", str(tmp_path / "out"))
+    assert res.exit_code == 3 and "engine.rod_length" in res.output
+    assert "Traceback" not in res.output
 
 
 def test_absolute_table_is_the_gauge_table_plus_the_crankcase():
