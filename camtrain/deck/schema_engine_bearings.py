@@ -10,6 +10,14 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_bearing_model import (
+    BearingCavitation,
+    BearingModelName,
+    cavitation_field,
+    model_field,
+    n_theta_field,
+    n_z_field,
+)
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
@@ -102,9 +110,10 @@ class EngineSolver:
     methods: tuple[str, ...] = option(
         "Which columns to compute: dynamic (mobility orbit), steady (quasi-static locus), "
         "petroff (concentric)", default=("dynamic", "steady", "petroff"))
-    bearing_model: Literal["short", "finite"] = option(
-        "Film model: short (Ocvirk, as Yang) or finite (Reynolds over the whole bearing; "
-        "slower, more accurate above b/d 0.05)", default="short")
+    bearing_model: BearingModelName = model_field()
+    bearing_cavitation: BearingCavitation = cavitation_field()
+    bearing_n_theta: int = n_theta_field()
+    bearing_n_z: int = n_z_field()
     mobility: Literal["exact", "booker"] = option(
         "Short-bearing mobility: exact pi-film inversion or Booker's closed form (Yang eqs "
         "1.15/1.16)", default="exact")

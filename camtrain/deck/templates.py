@@ -187,6 +187,7 @@ ENGINE_EXAMPLE: dict[str, object] = {
                   "values": _RUSTON_BAR}],
     **{f"bearings.{b}.{k}": v for b in ("big_end", "main") for k, v in (
         ("diameter", 203.2), ("length", 57.15), ("clearance", 0.08255), ("viscosity", [0.015]))},
+    "solver.bearing_model": "short",   # as Yang: reproduces his printed numbers
 }
 
 

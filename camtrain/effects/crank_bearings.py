@@ -19,9 +19,22 @@ def reason(deck, planned) -> str:
     s = deck.solver
     factor = ("Yang's program's half mobility" if s.mobility_factor == "yang1992_program"
               else "mobility as printed")
-    return (f"{'/'.join(s.methods)}; {s.bearing_model} bearing, {s.mobility} mobility, "
-            f"{factor}; {s.film} film; big-end {deck.bearings.big_end.grooving}, mains "
-            f"{deck.bearings.main.grooving} grooving")
+    head = (f"{'/'.join(s.methods)}; {s.mobility} mobility, {factor}; {s.film} film; big-end "
+            f"{deck.bearings.big_end.grooving}, mains {deck.bearings.main.grooving} grooving")
+    if s.methods == ("petroff",):
+        return head + " (concentric power, no film model)"
+    from camtrain.bearings import JournalBearing
+    from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.effects.bearing_output import model_reason
+
+    options = film_model_options(s, "bearing_")
+    parts = []
+    for name in ("big_end", "main"):
+        b = getattr(deck.bearings, name)
+        brg = JournalBearing(b.diameter, b.length, b.clearance, b.viscosity[0],
+                             b.groove_width if b.grooving != "none" else 0.0)
+        parts.append(f"{name.replace('_', '-')}: {model_reason(brg, options)[1]}")
+    return head + "; " + "; ".join(parts)
 
 
 def run(deck, inputs, result):

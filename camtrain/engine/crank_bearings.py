@@ -34,8 +34,9 @@ __all__ = ["BearingSpec", "SolverOptions", "BearingVariant", "BearingResult",
 
 GROOVINGS = ("none", "central", "partial")
 METHODS = ("dynamic", "steady", "petroff")
-#: Film model of every crank bearing: Ocvirk's short bearing (Yang) or the finite Reynolds film.
-MODELS = ("short", "finite")
+#: Film model of every crank bearing: Ocvirk's short bearing (Yang), the finite Reynolds film,
+#: or auto (finite unless the land is short; :func:`camtrain.bearings.models.choose_model`).
+MODELS = ("auto", "short", "finite")
 #: Mobility factor of Yang's (1992) program (compatibility option; the physics is 1.0).
 YANG1992_MOBILITY_SCALE = 0.5
 
@@ -82,7 +83,7 @@ class SolverOptions:
     physics, 0.5 Yang's program); film "2pi" (Yang's tables) | "pi"; terms "shear" | "all";
     tol per step on eps; period_tol cycle-to-cycle change; start "centre" (Yang) | "steady";
     model "short" (Ocvirk, Yang's tables) | "finite" (Reynolds over the whole bearing,
-    :mod:`camtrain.bearings.models`).
+    :mod:`camtrain.bearings.models`) | "auto"; cavitation, n_theta, n_z of the finite film.
     """
 
     crank_step: float = math.radians(0.5)
@@ -99,6 +100,9 @@ class SolverOptions:
     methods: tuple = METHODS
     reuse_shifted: bool = True
     model: str = "short"
+    cavitation: str = "reynolds"
+    n_theta: int = 72
+    n_z: int = 6
 
     def __post_init__(self):
         if self.model not in MODELS:
@@ -210,21 +214,20 @@ def _shift_orbit(orbit: JournalOrbit, k: int) -> JournalOrbit:
 def _solve(brg: JournalBearing, lx, ly, wj, angle, omega, period, opt: SolverOptions):
     dyn = stdy = pet = None
     common = dict(angle_rate=omega, period=period, film=opt.film, terms=opt.terms)
-    if "dynamic" in opt.methods:
-        from camtrain.bearings.models import orbit_mobility
+    from camtrain.bearings.models import choose_model, finite_steady_orbit, orbit_mobility
 
-        dyn = bearing_orbit(brg, lx, ly, angle, wj, 0.0,
-                            mobility=orbit_mobility(brg, opt.model, opt.mobility),
+    used = choose_model(brg, opt.model)[0]
+    mesh = dict(cavitation=opt.cavitation, n_theta=opt.n_theta, n_z=opt.n_z)
+    if "dynamic" in opt.methods:
+        mobility = (orbit_mobility(brg, used, opt.mobility, opt.cavitation, opt.n_theta,
+                                   opt.n_z) if used == "finite" else opt.mobility)
+        dyn = bearing_orbit(brg, lx, ly, angle, wj, 0.0, mobility=mobility,
                             mobility_scale=opt.mobility_scale, tol=opt.tol,
                             period_tol=opt.period_tol, max_cycles=opt.max_cycles,
                             start=opt.start, **common)
     if "steady" in opt.methods:
-        if opt.model == "finite":
-            from camtrain.bearings.models import finite_steady_orbit
-
-            stdy = finite_steady_orbit(brg, lx, ly, angle, wj, 0.0, **common)
-        else:
-            stdy = steady_orbit(brg, lx, ly, angle, wj, 0.0, **common)
+        stdy = (finite_steady_orbit(brg, lx, ly, angle, wj, 0.0, **common, **mesh)
+                if used == "finite" else steady_orbit(brg, lx, ly, angle, wj, 0.0, **common))
     if "petroff" in opt.methods:
         pet = float(bearing_petroff_power(brg, omega))
     return BearingVariant(brg, dyn, stdy, pet)

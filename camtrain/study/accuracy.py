@@ -108,6 +108,10 @@ def _bearing_section(raw: dict) -> tuple[str, str] | None:
         where = ("solver", "")
     elif raw.get("camshaft", {}).get("bearings"):
         where = ("camshaft", "bearing_")
+    elif raw.get("kind") == "engine":
+        where = ("solver", "bearing_")
+        if list(raw.get("solver", {}).get("methods", ("dynamic",))) == ["petroff"]:
+            return None
     else:
         return None
     node = raw.get(where[0], {})
@@ -162,7 +166,8 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          "finite journal-bearing film mesh, model = finite (time: the orbit with the map "
          "cached; building a map costs ~200 Reynolds solutions once per b/d and mesh)",
          integer=True, setter=_mesh_rung, warm=True),
-    Knob("bearing_model", "solver.model | camshaft.bearing_model", MODEL_RUNGS,
+    Knob("bearing_model", "solver.model | camshaft.bearing_model | engine solver.bearing_model",
+         MODEL_RUNGS,
          _model_step,
          lambda raw: _bearing_section(raw) is not None,
          "journal-bearing film model: short (Ocvirk) and finite at the deck's mesh against "

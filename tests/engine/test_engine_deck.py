@@ -208,9 +208,11 @@ def test_accuracy_knobs_of_an_engine_deck():
     from camtrain.study.accuracy import relevant_knobs, render_table, study_knob
 
     raw = _raw()
-    assert relevant_knobs(raw) == ["crank_step", "period_tolerance", "step_tolerance",
+    assert relevant_knobs(raw) == ["bearing_mesh", "bearing_model", "crank_step",
+                                   "period_tolerance", "step_tolerance",
                                    "pressure_interpolation", "mobility"]
     raw["solver"].update(crank_step=2.0, methods=["steady", "petroff"])
+    assert raw["solver"]["bearing_model"] == "short"
     assert "mobility" not in relevant_knobs(raw)
     k = study_knob(raw, "pressure_interpolation", 1e-3)
     assert [r["status"] for r in k["rungs"]] == ["ok", "ok"]
@@ -269,7 +271,7 @@ def test_two_stroke_single_cylinder_engine():
     raw["cylinders"] = raw["cylinders"][:1]
     raw["crank_components"] = raw["crank_components"][:1]
     raw["pressure"][0]["values"] = raw["pressure"][0]["values"][:36]
-    raw["solver"] = {"crank_step": 2.0}
+    raw["solver"] = {"crank_step": 2.0, "bearing_model": "short"}
     r = ct.run(validate(raw))
     assert r["crank_angle"].size == 180
     assert math.degrees(r["crank_angle"][-1]) == pytest.approx(358.0)
@@ -278,3 +280,16 @@ def test_two_stroke_single_cylinder_engine():
     raw["pressure"][0]["values"] = _raw()["pressure"][0]["values"]
     with pytest.raises(InputError, match="pressure"):
         validate(raw)
+
+
+def test_film_model_is_the_shared_bearing_definition():
+    """The engine's bearings take their film model from the one definition of every bearing:
+    auto by default (finite for the Ruston's land b/d 0.28), short in the shipped decks (as
+    Yang); the plan says which model each bearing gets."""
+    raw = _raw()
+    del raw["solver"]["bearing_model"]
+    plan = resolve(validate(raw))
+    why = next(s.reason for s in plan.steps if s.effect == "crank_bearings")
+    assert why.count("auto: land b/d = 0.281 > 0.05") == 2 and why.count("mesh 72 x 6") == 2
+    why = next(s.reason for s in resolve(deck()).steps if s.effect == "crank_bearings")
+    assert "short bearing (Ocvirk)" in why
