@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import time
+from functools import cache
 from typing import TypeVar
 
 from camtrain.effects.catalogue import PRODUCTS, EffectSpec
@@ -38,6 +39,7 @@ class Inputs:
         return self._products.get(self._declared(cls, self._spec.needs + self._spec.uses))
 
 
+@cache
 def product_class(name: str) -> type:
     module, cls = PRODUCTS[name].split(":")
     return getattr(importlib.import_module(module), cls)

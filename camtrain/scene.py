@@ -11,6 +11,8 @@ resolved before any computation (no physics or numpy is imported) and printed by
 from __future__ import annotations
 
 import importlib
+import sys
+import weakref
 from dataclasses import dataclass, field
 
 from camtrain.effects.catalogue import EffectSpec, kind_of
@@ -51,18 +53,38 @@ class Plan:
 
 def effect_module(spec: EffectSpec):
     """The module of an effect (its top level imports no physics)."""
-    return importlib.import_module(spec.module)
+    module = sys.modules.get(spec.module)
+    return module if module is not None else importlib.import_module(spec.module)
+
+
+#: plans of the decks of this process, by id of the (immutable) deck model: (weak reference to
+#: the deck, the effects the plan was resolved over, the plan); an entry leaves with its deck
+_PLANS: dict[int, tuple[weakref.ref, tuple[EffectSpec, ...], Plan]] = {}
 
 
 def resolve(deck, effects: tuple[EffectSpec, ...] | None = None) -> Plan:
     """Resolve the plan for a deck before any computation.
 
-    ``effects`` replaces the deck kind's registered effects (tests and extensions)."""
+    ``effects`` replaces the deck kind's registered effects (tests and extensions). The plan
+    depends only on the immutable deck model and the catalogue, so the plan of a deck's
+    registered effects is resolved once per process (repeated runs of one deck reuse it)."""
     kind = kind_of(deck)
+    cached = _PLANS.get(id(deck)) if effects is None else None
+    if cached is not None and cached[0]() is deck and cached[1] is kind.effects:
+        return cached[2]
     specs = order(effects if effects is not None else kind.effects)
     if deck.effects == "auto":
-        return Plan("auto", _resolve_auto(deck, specs), kind.name)
-    return Plan("explicit", _resolve_explicit(deck, specs, deck.effects), kind.name)
+        plan = Plan("auto", _resolve_auto(deck, specs), kind.name)
+    else:
+        plan = Plan("explicit", _resolve_explicit(deck, specs, deck.effects), kind.name)
+    if effects is None:
+        key = id(deck)
+        try:
+            ref = weakref.ref(deck, lambda _, key=key: _PLANS.pop(key, None))
+        except TypeError:   # a deck object that cannot be weakly referenced: not cached
+            return plan
+        _PLANS[key] = (ref, kind.effects, plan)
+    return plan
 
 
 def order(specs: tuple[EffectSpec, ...]) -> list[EffectSpec]:

@@ -12,10 +12,31 @@ import numpy as np
 
 from camtrain.contact.products import HertzField
 from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure
+from camtrain.formulas.hertz import ellipticity_exact
+from camtrain.identity_cache import by_identity
 
 
 def is_line(kin) -> bool:
     return bool(np.all(np.isinf(kin.radius_y)))
+
+
+@by_identity
+def major_ellipticity(kin) -> np.ndarray:
+    """Exact Hertz ellipticity k = a_major/a_minor >= 1 at every angle with a Hertzian point
+    geometry (NaN elsewhere). It depends on the radii only, not on the load, so it is solved once
+    per Kinematics (the load iteration and the Hertz effect share it)."""
+    R, Ry = kin.radius_x, kin.radius_y
+    good = (R > 0.0) & np.isfinite(R) & (Ry > 0.0) & np.isfinite(Ry)
+    k = np.full(R.shape, np.nan)
+    if np.any(good):
+        # the bisection is per element: solve each distinct radius pair once (a base circle or
+        # a constant-radius flank repeats one pair over many angles)
+        pairs, where = np.unique(np.stack((np.minimum(R[good], Ry[good]),
+                                           np.maximum(R[good], Ry[good]))), axis=1,
+                                 return_inverse=True)
+        k[good] = np.asarray(ellipticity_exact(pairs[0], pairs[1]))[where.reshape(-1)]
+    k.flags.writeable = False
+    return k
 
 
 def hertz_field(contact, kin, load) -> HertzField:
@@ -36,7 +57,8 @@ def hertz_field(contact, kin, load) -> HertzField:
             pmax[use], bx[use] = h.max_pressure, h.half_width
             by[use] = 0.5 * width
         else:
-            h = hertz_point(load[use], R[use], Ry[use], E_r)
+            h = hertz_point(load[use], R[use], Ry[use], E_r,
+                            ellipticity=major_ellipticity(kin)[use])
             bx[use], by[use], pmax[use] = h.a_x, h.a_y, h.max_pressure
             if contact.tribology.hertz == "ball_1988":
                 pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], E_r,

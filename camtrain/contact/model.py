@@ -20,6 +20,7 @@ import numpy as np
 
 from camtrain.components import CLOSING, MAIN
 from camtrain.contact.products import FilmField, FrictionField, HertzField
+from camtrain.identity_cache import by_identity
 
 FilmLaw = Callable[..., FilmField]
 FrictionLaw = Callable[..., np.ndarray]
@@ -53,11 +54,11 @@ class CamContact:
 
     @classmethod
     def from_deck(cls, deck, component: str = MAIN) -> CamContact:
-        """The contact of one pair of the deck's train (the closing pair has its own width)."""
-        d = pair_deck(deck, component)
-        return cls(reduced_modulus=modulus(d), width=d.cam.width, lubricant=d.lubricant,
-                   tribology=d.tribology, film_law="steady",
-                   friction_law=d.tribology.friction_model)
+        """The contact of one pair of the deck's train (the closing pair has its own width);
+        built once per deck model and pair (the model is immutable)."""
+        if cls is not CamContact:
+            return _contact_of(cls, deck, component)
+        return _cached_contact(deck, component)
 
     def hertz(self, kin, load) -> HertzField:
         from camtrain.contact.hertz import hertz_field
@@ -82,6 +83,17 @@ class CamContact:
         """Hertz field, film and friction under a per-angle load (negative loads count as 0)."""
         load = np.maximum(np.asarray(load, dtype=float), 0.0)
         return self.friction(kin, load, self.hertz(kin, load), self.film(kin, load))
+
+
+def _contact_of(cls, deck, component: str) -> CamContact:
+    d = pair_deck(deck, component)
+    return cls(reduced_modulus=modulus(d), width=d.cam.width, lubricant=d.lubricant,
+               tribology=d.tribology, film_law="steady", friction_law=d.tribology.friction_model)
+
+
+@by_identity
+def _cached_contact(deck, component: str) -> CamContact:
+    return _contact_of(CamContact, deck, component)
 
 
 def modulus(deck) -> float:

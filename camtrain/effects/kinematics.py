@@ -45,6 +45,12 @@ def _cached_noise(lift_model):
 
 
 @lru_cache(maxsize=32)
+def _cached_max_lift(lift_model) -> float:
+    """Peak lift of the law (a law without a closed form evaluates 4001 points for it)."""
+    return _cached_law(lift_model).max_lift
+
+
+@lru_cache(maxsize=32)
 def _cached_jumps(lift_model):
     return tuple(_cached_law(lift_model).joint_jumps())
 
@@ -65,7 +71,7 @@ def lift_columns(deck, result, points: int | None = None):
     result.add_column("velocity", curve.d1, "m/rad", "dl/dtheta")
     result.add_column("acceleration", curve.d2, "m/rad^2", "d2l/dtheta2")
     result.add_column("jerk", curve.d3, "m/rad^3", "d3l/dtheta3")
-    result.add_metric("max_lift", law.max_lift, "m", "maximum lift", 0.0)
+    result.add_metric("max_lift", _cached_max_lift(deck.lift), "m", "maximum lift", 0.0)
     result.add_metric("opening_angle", law.opening_angle, "rad",
                       "cam angle where the event (ramp included) starts")
     result.add_metric("closing_angle", law.closing_angle, "rad",

@@ -159,7 +159,7 @@ def _approx_integrals(r, method):
 HERTZ_POINT_METHODS = ("exact", "hamrock_brewe_1983", "hamrock_dowson_1981", "yang_1992")
 
 
-def hertz_point(W, Rx, Ry, E_r, method: str = "exact") -> HertzPoint:
+def hertz_point(W, Rx, Ry, E_r, method: str = "exact", ellipticity=None) -> HertzPoint:
     r"""Elliptical (point) Hertz contact: semi-axes, maximum pressure, ellipticity, approach.
 
     .. math::
@@ -190,6 +190,9 @@ def hertz_point(W, Rx, Ry, E_r, method: str = "exact") -> HertzPoint:
             film formulas' convention). A zero principal curvature is a line contact: use
             :func:`hertz_line`.
         E_r: reduced modulus E' [Pa].
+        ellipticity: for ``"exact"``, k = a_major/a_minor >= 1 already solved for these radii
+            (``ellipticity_exact(min(Rx, Ry), max(Rx, Ry))``): it depends on the geometry only,
+            so a load iteration over a fixed geometry solves it once. None: solved here.
 
     Returns:
         :class:`HertzPoint`.
@@ -203,7 +206,8 @@ def hertz_point(W, Rx, Ry, E_r, method: str = "exact") -> HertzPoint:
     small, big = np.minimum(Rx, Ry), np.maximum(Rx, Ry)
     R = Rx * Ry / (Rx + Ry)
     if method == "exact":
-        k = arr(ellipticity_exact(small, big))  # R_y argument largest, so k >= 1
+        # R_y argument largest, so k >= 1
+        k = arr(ellipticity_exact(small, big) if ellipticity is None else ellipticity)
         p = 1.0 / k**2
         from scipy.special import ellipe, ellipkm1
 

@@ -41,6 +41,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -57,6 +58,12 @@ _ROTATION_NAMES = {
 }
 
 _ODD = {"odd": True}
+
+
+def _frozen(values: np.ndarray) -> np.ndarray:
+    """A derived array made read-only: it is kept and shared like the fields it comes from."""
+    values.flags.writeable = False
+    return values
 
 
 def check_speed(omega: float) -> None:
@@ -123,11 +130,10 @@ class Kinematics:
 
     def __post_init__(self) -> None:
         shape = np.shape(self.theta)
-        for f in fields(self):
-            value = getattr(self, f.name)
+        for name, value in vars(self).items():   # the fields (nothing else is set yet)
             if isinstance(value, np.ndarray):
                 if value.shape != shape:
-                    raise ValueError(f"Kinematics.{f.name} has shape {value.shape}, "
+                    raise ValueError(f"Kinematics.{name} has shape {value.shape}, "
                                      f"theta has {shape}")
                 value.flags.writeable = False
         for name, value in self.inertia.items():
@@ -135,21 +141,22 @@ class Kinematics:
                 raise ValueError(f"Kinematics.inertia[{name!r}] has the wrong shape")
             value.flags.writeable = False
 
-    # Derived quantities are properties so they can never disagree with the surface speeds.
-    @property
+    # Derived quantities are computed from the (read-only) surface speeds on first use, so they
+    # can never disagree with them; each is computed once per Kinematics and read-only.
+    @cached_property
     def entrainment(self) -> np.ndarray:
         """Mean entrainment velocity u_e = (V_c + V_f)/2 [m/s] (Ball's nomenclature, Yang 3.4)."""
-        return 0.5 * (self.v_cam + self.v_follower)
+        return _frozen(0.5 * (self.v_cam + self.v_follower))
 
-    @property
+    @cached_property
     def entrainment_sum(self) -> np.ndarray:
         """V_c + V_f [m/s], the "entraining velocity" of Ball ch. 3/5 and Williams eq. 1.12."""
-        return self.v_cam + self.v_follower
+        return _frozen(self.v_cam + self.v_follower)
 
-    @property
+    @cached_property
     def sliding(self) -> np.ndarray:
         """Sliding velocity V_s = V_c - V_f [m/s]."""
-        return self.v_cam - self.v_follower
+        return _frozen(self.v_cam - self.v_follower)
 
     @property
     def profile_x(self) -> np.ndarray:
@@ -159,15 +166,15 @@ class Kinematics:
     def profile_y(self) -> np.ndarray:
         return self.contact_y
 
-    @property
+    @cached_property
     def profile_r(self) -> np.ndarray:
         """Polar radius of the cam profile point touched at each angle [m]."""
-        return np.hypot(self.contact_x, self.contact_y)
+        return _frozen(np.hypot(self.contact_x, self.contact_y))
 
-    @property
+    @cached_property
     def profile_angle(self) -> np.ndarray:
         """Polar angle of the profile point in the cam frame, from +x, counterclockwise [rad]."""
-        return np.arctan2(self.contact_y, self.contact_x)
+        return _frozen(np.arctan2(self.contact_y, self.contact_x))
 
     def time_reversed(self, theta: np.ndarray, rotation: str) -> Kinematics:
         """Arrays reversed in angle, odd fields negated, ``theta`` replaced (rotation rule)."""
@@ -199,7 +206,8 @@ def analyse(lift: LiftCurve, rotation: str | int, kernel: Kernel) -> Kinematics:
     """
     direction = normalise_rotation(rotation)
     if direction == CLOCKWISE:
-        return replace(kernel(lift, lift.theta), rotation=CLOCKWISE)
+        result = kernel(lift, lift.theta)
+        return result if result.rotation == CLOCKWISE else replace(result, rotation=CLOCKWISE)
     result = kernel(reverse_lift(lift), lift.theta[::-1])
     return result.time_reversed(lift.theta, ANTICLOCKWISE)
 
