@@ -150,16 +150,24 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
     from camtrain.report.junit import junit_xml
 
     plots = "none" if no_plots else plots
-    console = _console()
+    show = not (quiet or as_json)
+    # a quiet or --json run prints no tables: it does not import the terminal library
+    console = _console() if show else None
     targets = _output_dirs(decks, out)
     reports, summaries, codes = [], [], []
-    from camtrain.report.console import progress_bar
+    if show:
+        from camtrain.report.console import progress_bar
 
-    with progress_bar(_console(stderr=True), enabled=not (quiet or as_json)) as bar:
+        bars = progress_bar(_console(stderr=True), enabled=True)
+    else:
+        from contextlib import nullcontext
+
+        bars = nullcontext()
+    with bars as bar:
         overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
         for deck, out_dir in zip(decks, targets, strict=True):
-            report, summary = _run_one(deck, out_dir, plots, bar, console,
-                                       show=not (quiet or as_json), check=check)
+            report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
+                                       check=check)
             reports.append(report)
             summaries.append(summary)
             codes.append(report.exit_code if (check or report.exit_code != 1) else 0)
@@ -201,7 +209,6 @@ def _output_dirs(decks: tuple[str, ...], out: str | None) -> list[Path]:
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool):
     """Load, run, check and write one deck; errors become a report, never an exception."""
     from camtrain import api
-    from camtrain.report.console import print_checks, print_plan, print_run
     from camtrain.report.junit import DeckReport
     from camtrain.report.limits import violated
     from camtrain.report.outputs import check_limits, write_run
@@ -243,12 +250,16 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     report.checks = checks
     report.exit_code = 1 if violated(checks) else 0
     if show:
+        from camtrain.report.console import print_plan, print_run
+
         console.rule(f"[bold]{loaded.model.title}[/]  ({deck})")
         print_plan(console, result.plan, result.timings)
         print_run(console, result, written, checks, out_dir)
     elif check and violated(checks):
+        from camtrain.report.console import print_checks
+
         click.echo(f"{deck}:")
-        print_checks(console, violated(checks))
+        print_checks(console or _console(), violated(checks))
     return report, summary_dict(result, loaded, wall, checks)
 
 

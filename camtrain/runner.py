@@ -50,12 +50,12 @@ def run_plan(deck, plan: Plan | None = None) -> Result:
     plan = plan or resolve(deck)
     result = Result(plan=plan)
     products: dict[str, object] = {}
-    for spec in plan.effects:
-        start = time.perf_counter()
-        with trusted_inputs():  # the deck was validated at its boundary: no per-formula checks
+    with trusted_inputs():  # the deck was validated at its boundary: no per-formula checks
+        for spec in plan.effects:
+            start = time.perf_counter()
             out = effect_module(spec).run(deck, Inputs(spec, products), result)
-        result.timings[spec.name] = time.perf_counter() - start
-        products.update(_checked(spec, out))
+            result.timings[spec.name] = time.perf_counter() - start
+            products.update(_checked(spec, out))
     return result
 
 

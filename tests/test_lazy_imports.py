@@ -26,3 +26,18 @@ def test_harrison_run_imports_no_heavy_package():
 
 def test_table_deck_imports_the_splines_it_needs():
     assert "scipy.interpolate" in _loaded("zeta_intake.toml")
+
+
+def test_quiet_run_command_imports_no_terminal_plotting_or_compiler(tmp_path):
+    """`camtrain run --no-plots --quiet`: nothing is printed or drawn and nothing marches, so
+    the whole command loads neither rich, matplotlib, numba nor scipy's heavy subpackages."""
+    code = ("import sys, runpy; sys.argv = ['camtrain', 'run', sys.argv[1], '--no-plots', "
+            "'--quiet', '--out', sys.argv[2]]\n"
+            "try:\n    runpy.run_module('camtrain.cli', run_name='__main__')\n"
+            "except SystemExit as exc:\n    assert not exc.code, exc.code\n"
+            f"print(' '.join(m for m in {HEAVY + ('rich',)!r} if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code, str(ROOT / "decks" / "harrison_flat.toml"),
+                          str(tmp_path / "out")], cwd=ROOT, capture_output=True, text=True,
+                         check=True).stdout
+    assert set(out.split()) == set()
+    assert (tmp_path / "out" / "summary.json").is_file()
