@@ -23,21 +23,30 @@ PEAK = ("import resource, subprocess, sys; subprocess.run(sys.argv[1:], check=Tr
         "capture_output=True); print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
 
 
-def _sweep_cmd(out, jobs: int) -> list[str]:
+def _sweep_cmd(out, jobs: int, points: int | None = None) -> list[str]:
+    grid = ["--set", f"solver.angle_points={points}"] if points else []
     return [sys.executable, "-m", "camtrain.cli", "sweep", DECK, "-p", "base_radius", "--range",
-            f"14:22:{CASES}", "--no-plots", "--quiet", "--jobs", str(jobs), "--out", str(out)]
+            f"14:22:{CASES}", *grid, "--no-plots", "--quiet", "--jobs", str(jobs), "--out",
+            str(out)]
+
+
+def _floor(points: int) -> str:
+    return FLOOR.replace("harrison_floor(720,", f"harrison_floor({points},")
 
 
 def _run(cmd):
     return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT, env=ENV)
 
 
+@pytest.mark.parametrize("points", [1440, 720])
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_bench_sweep_1000(benchmark, tmp_path, jobs):
-    sweep = _run(_sweep_cmd(tmp_path / "out", jobs))
-    timing = paired(sweep, _run([sys.executable, "-c", FLOOR]), rounds=2, warmup=0)
-    record(benchmark, f"sweep, {CASES} cases, --jobs {jobs}, whole process", timing)
-    note(f"sweep, {CASES} cases, --jobs {jobs}: cases/s",
+def test_bench_sweep_1000(benchmark, tmp_path, jobs, points):
+    """At the deck's grid (1440 angles, the default) and at the 720 of the target's setting."""
+    sweep = _run(_sweep_cmd(tmp_path / "out", jobs, None if points == 1440 else points))
+    timing = paired(sweep, _run([sys.executable, "-c", _floor(points)]), rounds=2, warmup=0)
+    what = f"sweep, {CASES} cases, {points} angles, --jobs {jobs}"
+    record(benchmark, f"{what}, whole process", timing)
+    note(f"{what}: cases/s",
          f"{CASES / timing['subject_median']:.0f}/s (floor {CASES / timing['floor_median']:.0f}/s)",
          ">= 1000/s")
     benchmark.extra_info["cases_per_second"] = CASES / timing["subject_median"]

@@ -5,6 +5,7 @@ benchmark ratios (docs/performance.md) would compare with less work than the cha
 from __future__ import annotations
 
 import importlib.util
+import re
 from pathlib import Path
 
 import numpy as np
@@ -24,11 +25,12 @@ def _floor():
     return module.harrison_floor
 
 
-@pytest.mark.parametrize("points", [720, 3600])
+@pytest.mark.parametrize("points", [720, 1440, 3600])
 def test_floor_matches_camtrain_columns(points):
-    text = (ROOT / "decks" / "harrison_flat.toml").read_text()
-    result = api.run(load_deck_text(text.replace("angle_points = 720",
-                                                 f"angle_points = {points}")).model)
+    text = re.sub(r"(?m)^angle_points = \d+", f"angle_points = {points}",
+                  (ROOT / "decks" / "harrison_flat.toml").read_text())
+    result = api.run(load_deck_text(text).model)
+    assert result["cam_angle"].size == points
     floor = _floor()(points)
     assert len(floor) >= 17
     for name, values in floor.items():

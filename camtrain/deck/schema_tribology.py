@@ -168,7 +168,7 @@ class Lubricant:
 class Solver:
     """Resolution knobs (each trades accuracy for time; see `camtrain accuracy`)."""
 
-    angle_points: int = quantity("Number of cam angles over one revolution", "-", default=720,
+    angle_points: int = quantity("Number of cam angles over one revolution", "-", default=1440,
                                  ge=16, le=1_000_000)
     friction_tolerance: float = quantity(
         "Relative tolerance of the friction/load iteration of pivoted followers", "-",

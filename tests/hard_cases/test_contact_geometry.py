@@ -42,7 +42,7 @@ def test_harrison_zero_entrainment_at_the_nose(points):
     rb = _exact_zero_entrainment_radius()
     for radius, film_bound in ((33.247, 1e-9), (rb, 1e-12)):
         res = run_strict(variant(HARRISON, ("base_radius = 18.0", f"base_radius = {radius!r}"),
-                                 ("angle_points = 720", f"angle_points = {points}")))
+                                 ("angle_points = 1440", f"angle_points = {points}")))
         i = _nose_index(res)
         finite_columns(res, CHAIN)
         assert abs(res["entrainment"][i]) <= 1e-5 * res["v_cam"][i]
@@ -56,7 +56,7 @@ def test_zero_entrainment_power_loss_converges_with_angle_points():
     """The nose is a grid point at every even resolution; power loss settles under refinement."""
     rb = _exact_zero_entrainment_radius()
     text = variant(HARRISON, ("base_radius = 18.0", f"base_radius = {rb!r}"))
-    p = [run_strict(variant(text, ("angle_points = 720", f"angle_points = {n}")))
+    p = [run_strict(variant(text, ("angle_points = 1440", f"angle_points = {n}")))
          .metrics["power_loss_mean"].value for n in (720, 1440, 2880, 5760)]
     d = np.abs(np.diff(p))
     assert np.all(np.isfinite(p)) and d[-1] < d[0] and d[-1] < 2e-3 * p[-1]
@@ -114,11 +114,12 @@ def test_conformal_contact_r_c_to_minus_r_f(harrison_curve):
 
 
 def test_sharp_nose_r_c_to_zero():
-    """A flat follower needs r_B > -(l + l'') = 13.5896 mm for a convex cam. Approaching it the
-    nose radius -> 0: Hertz stress rises without bound but stays finite; just below it is a
-    clear geometry error (exit 3) that names the radius needed."""
+    """A flat follower needs r_B > max -(l + l'') = 13.5903 mm for a convex cam (13.5896 mm on
+    a 720-angle grid, which misses the worst angle; 13.5902 mm on the default 1440). Approaching
+    it the nose radius -> 0: Hertz stress rises without bound but stays finite; just below it is
+    a clear geometry error (exit 3) that names the radius needed."""
     pmax = []
-    for rb in ("13.7", "13.6", "13.59"):
+    for rb in ("13.7", "13.6", "13.591"):
         res = run_strict(variant(HARRISON, ("base_radius = 18.0", f"base_radius = {rb}")))
         finite_columns(res, CHAIN)
         assert res.metrics["cam_radius_min"].value > 0

@@ -25,7 +25,7 @@ POLYDYNE = variant(_polynomial([2, 8, 14, 20, 26]), ("base_radius = 18.0", "base
 def _noisy_table(noise_mm: float, seed: int = 1) -> str:
     """A polydyne lift (no ramps) sampled every degree to 4 decimals, with Gaussian noise on the
     lifted points, as a lift table."""
-    base = run_strict(variant(POLYDYNE, ("angle_points = 720", "angle_points = 360")))
+    base = run_strict(variant(POLYDYNE, ("angle_points = 1440", "angle_points = 360")))
     theta = np.degrees(base["cam_angle"])
     keep = np.abs(theta) <= 90
     lift = 1e3 * base["lift"][keep]

@@ -19,7 +19,7 @@ def decks(tmp_path):
     """Harrison decks (coarse grid for speed) with passing and failing limits, and a bad deck."""
     text = (DECKS / "harrison_flat.toml").read_text()
     # the shipped deck's own example limits are replaced by each test's
-    base = text.split("\n[limits]")[0].replace("angle_points = 720", "angle_points = 240")
+    base = text.split("\n[limits]")[0].replace("angle_points = 1440", "angle_points = 240")
     d = tmp_path / "decks"
     d.mkdir()
     (d / "good.toml").write_text(base + PASSING)

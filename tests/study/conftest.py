@@ -13,5 +13,5 @@ def fast_flat(tmp_path) -> Path:
     """decks/harrison_flat.toml at 180 angles per revolution: same physics, a quarter the work."""
     text = (DECKS / "harrison_flat.toml").read_text(encoding="utf-8")
     path = tmp_path / "flat.toml"
-    path.write_text(text.replace("angle_points = 720", "angle_points = 180"), encoding="utf-8")
+    path.write_text(text.replace("angle_points = 1440", "angle_points = 180"), encoding="utf-8")
     return path
