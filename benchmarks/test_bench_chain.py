@@ -36,7 +36,7 @@ def test_bench_chain(benchmark, points, target):
     model = harrison_model(points)
     timing = paired(lambda: api.run(model), lambda: harrison_floor(points), rounds=300,
                     warmup=5)
-    record(benchmark, f"chain, {points} angles, in-process", timing, target)
+    record(benchmark, f"chain, {points} angles, in-process", timing, target, cpu=True)
     benchmark(api.run, model)
 
 
@@ -51,7 +51,8 @@ def test_bench_run_process(benchmark, tmp_path):
     run = _process("-m", "camtrain.cli", "run", deck, "--no-plots", "--quiet", "--out",
                    str(tmp_path / "out"))
     timing = paired(run, _process("-c", "import numpy, scipy"), rounds=7)
-    record(benchmark, "`run --no-plots` process / `import numpy, scipy`", timing, "<= 2.5x")
+    record(benchmark, "`run --no-plots` process / `import numpy, scipy`", timing, "<= 2.5x",
+           cpu=True)
     benchmark.pedantic(run, rounds=3, iterations=1)
 
 
@@ -61,7 +62,7 @@ def test_bench_run_with_sheets(benchmark, tmp_path):
     base = ["-m", "camtrain.cli", "run", deck, "--quiet", "--out", str(tmp_path / "out")]
     sheets, bare = _process(*base), _process(*base, "--no-plots")
     timing = paired(sheets, bare, rounds=3)
-    record(benchmark, "default `run` with sheets / `run --no-plots`", timing, "<= 2x")
+    record(benchmark, "default `run` with sheets / `run --no-plots`", timing, "<= 2x", cpu=True)
     benchmark.pedantic(sheets, rounds=1, iterations=1)
 
 
@@ -69,5 +70,5 @@ def test_bench_help_process(benchmark):
     """`camtrain --help` against the bare interpreter (the CLI imports no numpy for --help)."""
     helper = _process("-m", "camtrain.cli", "--help")
     timing = paired(helper, _process("-c", "pass"), rounds=7)
-    record(benchmark, "`camtrain --help` / bare interpreter", timing)
+    record(benchmark, "`camtrain --help` / bare interpreter", timing, cpu=True)
     benchmark.pedantic(helper, rounds=3, iterations=1)

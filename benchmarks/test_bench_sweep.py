@@ -45,9 +45,10 @@ def test_bench_sweep_1000(benchmark, tmp_path, jobs, points):
     sweep = _run(_sweep_cmd(tmp_path / "out", jobs, None if points == 1440 else points))
     timing = paired(sweep, _run([sys.executable, "-c", _floor(points)]), rounds=2, warmup=0)
     what = f"sweep, {CASES} cases, {points} angles, --jobs {jobs}"
-    record(benchmark, f"{what}, whole process", timing)
+    record(benchmark, f"{what}, whole process", timing, cpu=True)
     note(f"{what}: cases/s",
-         f"{CASES / timing['subject_median']:.0f}/s (floor {CASES / timing['floor_median']:.0f}/s)",
+         f"{CASES / timing['subject_median']:.0f}/s, fastest round "
+         f"{CASES / timing['subject_min']:.0f}/s (floor {CASES / timing['floor_median']:.0f}/s)",
          ">= 1000/s")
     benchmark.extra_info["cases_per_second"] = CASES / timing["subject_median"]
     benchmark.pedantic(sweep, rounds=1, iterations=1)
