@@ -72,9 +72,9 @@ def resolve(deck, effects: tuple[EffectSpec, ...] | None = None) -> Plan:
     cached = _PLANS.get(id(deck)) if effects is None else None
     if cached is not None and cached[0]() is deck and cached[1] is kind.effects:
         return cached[2]
-    specs = order(effects if effects is not None else kind.effects)
+    specs, rivals = _ordered(effects if effects is not None else kind.effects)
     if deck.effects == "auto":
-        plan = Plan("auto", _resolve_auto(deck, specs), kind.name)
+        plan = Plan("auto", _resolve_auto(deck, specs, rivals), kind.name)
     else:
         plan = Plan("explicit", _resolve_explicit(deck, specs, deck.effects), kind.name)
     if effects is None:
@@ -85,6 +85,26 @@ def resolve(deck, effects: tuple[EffectSpec, ...] | None = None) -> Plan:
             return plan
         _PLANS[key] = (ref, kind.effects, plan)
     return plan
+
+
+#: run order and rivals of the effect lists plans were resolved over, by the list's identity
+_ORDERS: dict[int, tuple[object, tuple[EffectSpec, ...], dict[str, tuple[str, ...]]]] = {}
+
+
+def _ordered(specs) -> tuple[tuple[EffectSpec, ...], dict[str, tuple[str, ...]]]:
+    """:func:`order` and each effect's rivals (the others offering one of its products), once
+    per effect list (a sweep resolves a plan for every case's model)."""
+    hit = _ORDERS.get(id(specs))
+    if hit is not None and hit[0] is specs:
+        return hit[1], hit[2]
+    ordered = tuple(order(specs))
+    rivals = {spec.name: tuple(s.name for s in ordered if s is not spec
+                               and set(s.produces) & set(spec.produces)) for spec in ordered}
+    if isinstance(specs, tuple):   # immutable: the entry cannot go stale (it keeps specs alive)
+        if len(_ORDERS) >= 16:
+            _ORDERS.clear()
+        _ORDERS[id(specs)] = (specs, ordered, rivals)
+    return ordered, rivals
 
 
 def order(specs: tuple[EffectSpec, ...]) -> list[EffectSpec]:
@@ -110,7 +130,7 @@ def order(specs: tuple[EffectSpec, ...]) -> list[EffectSpec]:
     return [specs[i] for i in done]
 
 
-def _resolve_auto(deck, specs: list[EffectSpec]) -> tuple[Step, ...]:
+def _resolve_auto(deck, specs, rivals_of: dict[str, tuple[str, ...]]) -> tuple[Step, ...]:
     planned: dict[str, str] = {}  # product -> effect that provides it
     steps = []
     for spec in specs:
@@ -131,7 +151,7 @@ def _resolve_auto(deck, specs: list[EffectSpec]) -> tuple[Step, ...]:
             steps.append(Step(spec.name, False, "no data: " + "; ".join(missing), spec))
             continue
         reason = module.reason(deck, frozenset(planned))
-        rivals = [s.name for s in specs if s is not spec and set(s.produces) & set(spec.produces)]
+        rivals = rivals_of[spec.name]
         if rivals:
             reason += f" (chosen over {', '.join(rivals)} for {', '.join(spec.produces)})"
         for p in spec.produces:
