@@ -28,6 +28,13 @@ NOT_YET = "not yet computed"
 #: convexity limit, %). A row whose residual exceeds RESIDUAL_LIMIT must carry an explanation:
 #: the cause, or "unexplained" and what was tried (the script stops otherwise).
 PUBLISHED = {
+    "gocmen_table31": ("Göçmen (2013) Table 3.1 direct-acting cam and flat tappet at 1000 rpm, "
+                       "with the level-2 transient film (averaged Reynolds with squeeze and "
+                       "asperities; docs/transient_film.md). His lift is printed only as a "
+                       "figure: this deck uses the Zeta intake lift instead (flagged), so only "
+                       "his base-circle values compare: entrainment 0.9425 m/s and film "
+                       "0.0938 µm, both reproduced (tests/lubrication/"
+                       "test_transient_film_decks.py).", []),
     "harrison_flat": ("Ball's datum case: cam and flat-faced follower, Paul Harrison's data, "
                       "2500 rpm camshaft.", [
                           ("frictional power loss", 48.50, "W", "Ball 1988, Fig 5.1 header",

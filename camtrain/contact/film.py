@@ -16,14 +16,18 @@ from camtrain.contact.products import FilmField
 from camtrain.formulas import film_thickness
 
 _CENTRAL = {"dowson_higginson_1977": "dowson_toyoda_1979",
+            "dowson_higginson_1966": "dowson_toyoda_1979",
             "hamrock_dowson_1977_min": "hamrock_dowson_1977_cen",
             "chittenden_1985_min": "chittenden_1985_cen"}
 
 
 def entrainment(tribology, kin) -> np.ndarray:
     """|u| [m/s] by the deck's convention (``tribology.entrainment``: mean or sum of the surface
-    speeds)."""
+    speeds, or half the mean: Göçmen's literal |U/2| of his eq. 2.1 with U the mean of eq. 2.24,
+    the reading that reproduces his base-circle film)."""
     u = kin.entrainment_sum if tribology.entrainment == "sum" else kin.entrainment
+    if tribology.entrainment == "half_mean":
+        u = 0.5 * u
     return np.abs(u)
 
 

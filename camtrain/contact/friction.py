@@ -74,3 +74,10 @@ def greenwood_tripp_law(contact, kin, load, hz: HertzField, h, use) -> np.ndarra
     else:
         f_n = yang_1992_shear_force(a_x=bx, a_y=hz.half_length[use], **common)
     return np.asarray(t.boundary, dtype=float) + np.asarray(f_n, dtype=float) * share
+
+
+def film_solution_friction(contact, kin, load, hz: HertzField, h, use) -> np.ndarray:
+    """The ``averaged_reynolds`` friction: viscous plus asperity shear of the film solution. The
+    contact model takes it from the film field; reached here only without that film."""
+    raise ValueError("the averaged_reynolds friction comes from the averaged_reynolds film "
+                     "(tribology.film_model = averaged_reynolds)")

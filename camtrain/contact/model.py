@@ -51,6 +51,7 @@ class CamContact:
     tribology: object
     film_law: str = "steady"
     friction_law: str = "cap"
+    solver: object = None   #: the deck's resolution knobs (transient film laws read theirs)
 
     @classmethod
     def from_deck(cls, deck, component: str = MAIN) -> CamContact:
@@ -75,7 +76,9 @@ class CamContact:
         h = film.for_shear
         use = (load > 0.0) & np.isfinite(h) & np.isfinite(hertz.pmax)
         force = np.zeros_like(load)
-        if np.any(use):
+        if np.any(use) and film.friction is not None:   # the film law solved the contact
+            force[use] = film.friction[use]
+        elif np.any(use):
             force[use] = FRICTION_LAWS[self.friction_law](self, kin, load, hertz, h, use)
         return FrictionField(force=force, hertz=hertz, film=film, used=use)
 
@@ -87,8 +90,13 @@ class CamContact:
 
 def _contact_of(cls, deck, component: str) -> CamContact:
     d = pair_deck(deck, component)
+    film_law = d.tribology.film_model
+    # the averaged Reynolds film solves the contact: its friction comes from that solution
+    friction_law = ("averaged_reynolds" if film_law == "averaged_reynolds"
+                    else d.tribology.friction_model)
     return cls(reduced_modulus=modulus(d), width=d.cam.width, lubricant=d.lubricant,
-               tribology=d.tribology, film_law="steady", friction_law=d.tribology.friction_model)
+               tribology=d.tribology, film_law=film_law, friction_law=friction_law,
+               solver=d.solver)
 
 
 @by_identity
@@ -129,9 +137,12 @@ def contact_friction(deck, kin, load) -> FrictionField:
 
 
 def _register_laws() -> None:
-    from camtrain.contact import film, friction
+    from camtrain.contact import film, friction, transient
 
     register_film_law("steady", film.steady_film)
+    register_film_law("squeeze", transient.squeeze_film)
+    register_film_law("averaged_reynolds", transient.averaged_reynolds_film)
+    register_friction_law("averaged_reynolds", friction.film_solution_friction)
     for name in ("cap", "lambda", "lambda_cap"):
         register_friction_law(name, friction.ball_yang_friction)
     register_friction_law("greenwood_tripp", friction.greenwood_tripp_law)

@@ -29,12 +29,22 @@ class HertzField:
 @dataclass(frozen=True)
 class FilmField:
     """Per-angle film of one pair: minimum and central thickness [m] (central None for the
-    load-free Blok film) and the formulas that gave them."""
+    load-free Blok film) and the formulas that gave them.
+
+    A transient film law (docs/transient_film.md) also gives the steady film of the same angles
+    (``steady`` [m]), the regime label per angle (``regime``: hydrodynamic, mixed, boundary,
+    separated; None where the law does not label), the friction force [N] of its own solution
+    (``friction``, None: the deck's friction law applies) and its solution (``solution``: the
+    law's own record, e.g. pressures and loads per angle)."""
 
     min: np.ndarray
     central: np.ndarray | None
     method: str
     central_method: str | None
+    steady: np.ndarray | None = None
+    regime: np.ndarray | None = None
+    friction: np.ndarray | None = None
+    solution: object = None
 
     @property
     def for_shear(self) -> np.ndarray:

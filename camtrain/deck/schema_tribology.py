@@ -175,17 +175,44 @@ class Solver:
         default=1e-6, gt=0, lt=0.1)
     friction_max_iterations: int = quantity("Maximum friction/load iterations", "-", default=50,
                                             ge=1, le=10_000)
+    # transient film (tribology.film_model = squeeze / averaged_reynolds); docs/transient_film.md
+    film_nodes: int = quantity("Nodes across the contact zone of the averaged Reynolds film", "-",
+                               default=401, ge=11, le=100_001,
+                               applies="film_model = averaged_reynolds")
+    film_zone_width: float = quantity(
+        "Half width of the averaged Reynolds solution zone in Hertz half widths (at the local "
+        "load, at least 10 % of the mean load)", "-", default=4.0, gt=0, le=1000,
+        applies="film_model = averaged_reynolds")
+    film_angle_step: float | None = quantity(
+        "Cam-angle step of the transient film march; omit to march on the run's angle grid "
+        "(inputs interpolated periodically when given)", "deg", default=None, gt=0, le=10,
+        applies="film_model = squeeze, averaged_reynolds")
+    film_tolerance: float = quantity(
+        "Load-balance tolerance |W - W_P - W_A| / W of the averaged Reynolds film", "-",
+        default=1e-6, gt=0, lt=0.1, applies="film_model = averaged_reynolds")
+    film_march: Literal["implicit_euler", "bdf2"] = option(
+        "Time scheme of the transient film march: implicit_euler (first order) or bdf2 (second "
+        "order; averaged_reynolds only)", default="implicit_euler",
+        applies="film_model = squeeze, averaged_reynolds")
+    film_cycles_max: int = quantity("Most cam revolutions marched to reach the periodic film",
+                                    "-", default=6, ge=1, le=100,
+                                    applies="film_model = squeeze, averaged_reynolds")
+    film_period_tolerance: float = quantity(
+        "Cycle-to-cycle change of the film that ends the periodic march", "-", default=1e-6,
+        gt=0, lt=0.1, applies="film_model = squeeze, averaged_reynolds")
 
 
 @dataclass(frozen=True, kw_only=True)
 class Tribology:
     """Tribology model options (Ball 1988 ch. 4; the choices behind his printed results)."""
 
-    entrainment: Literal["mean", "sum"] = option(
-        "Entrainment speed in the film formulas: mean (V_c + V_f)/2, or sum V_c + V_f as Ball's "
-        "'entraining velocity'", default="mean")
-    film_formula: Literal["auto", "dowson_higginson_1977", "dowson_dunn_taylor_1983",
-                          "hamrock_dowson_1977_min", "chittenden_1985_min"] = option(
+    entrainment: Literal["mean", "sum", "half_mean"] = option(
+        "Entrainment speed in the film formulas: mean (V_c + V_f)/2, sum V_c + V_f as Ball's "
+        "'entraining velocity', or half_mean (V_c + V_f)/4, Göçmen's literal |U/2| (reproduces "
+        "his base-circle film)", default="mean")
+    film_formula: Literal["auto", "dowson_higginson_1977", "dowson_higginson_1966",
+                          "dowson_dunn_taylor_1983", "hamrock_dowson_1977_min",
+                          "chittenden_1985_min"] = option(
         "Minimum-film formula: auto (Dowson-Higginson for line, Hamrock-Dowson for point "
         "contact with loads; Blok rigid-piezoviscous without loads) or a named formula",
         default="auto")
@@ -203,6 +230,31 @@ class Tribology:
         "viscosity at Hertz pressures)", default="barus")
     hertz: Literal["exact", "ball_1988"] = option(
         "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
+    film_model: Literal["steady", "squeeze", "averaged_reynolds"] = option(
+        "Film of the cam contact: steady (closed-form EHL per angle), squeeze (Teodorescu et al. "
+        "2005 film with the squeeze term, marched in cam angle), averaged_reynolds (Göçmen 2013 "
+        "averaged Reynolds with squeeze, flow factors and Greenwood-Tripp asperities, marched in "
+        "cam angle; friction from the same solution); see docs/transient_film.md",
+        default="steady")
+    squeeze_load_exponent: Literal["consistent", "printed"] = option(
+        "Sign of the W* exponent of Teodorescu's film formula: consistent (-0.059, as every EHL "
+        "regression) or printed (+0.059 as printed in the paper)", default="consistent",
+        applies="film_model = squeeze")
+    cavitation: Literal["reynolds", "half_sommerfeld"] = option(
+        "Cavitation condition of the averaged Reynolds film: reynolds (pressure and its gradient "
+        "vanish at the rupture) or half_sommerfeld (negative pressures dropped)", default="reynolds",
+        applies="film_model = averaged_reynolds")
+    squeeze_terms: Literal["full", "min_only"] = option(
+        "Squeeze term of the averaged Reynolds film: full (exact local dh/dt, with the change of "
+        "the cam radius) or min_only (dh_min/dt alone, as Göçmen)", default="full",
+        applies="film_model = averaged_reynolds")
+    flow_factors: bool = option(
+        "Patir-Cheng / Wu-Zheng flow factors in the averaged Reynolds film (false: all 1)",
+        default=True, applies="film_model = averaged_reynolds")
+    film_floor: Literal["dowson_higginson", "none"] = option(
+        "Film reported by averaged_reynolds: the larger of it and the steady EHL film "
+        "(dowson_higginson, Göçmen eq. 2.1; the marched state is not reset) or its own (none)",
+        default="dowson_higginson", applies="film_model = averaged_reynolds")
     # Greenwood-Tripp / Teodorescu et al. (2005) parameters. The paper prints none of them;
     # the defaults are typical values for run-in steel surfaces (see docs/tribology.md).
     asperity_density_product: float = quantity(

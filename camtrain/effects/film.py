@@ -9,14 +9,44 @@ from __future__ import annotations
 
 
 def missing(deck) -> list[str]:
-    return [] if deck.lubricant is not None else ["lubricant (viscosity, pressure_viscosity)"]
+    if deck.lubricant is None:
+        return ["lubricant (viscosity, pressure_viscosity)"]
+    model = deck.tribology.film_model
+    if model != "steady" and deck.spring is not None and deck.cam.width is None:
+        return [f"cam.width (the {model} film is a line-contact film per unit width)"]
+    return []
+
+
+#: why each transient film model runs (the plan prints it)
+_TRANSIENT = {
+    "squeeze": "level-1 transient film (tribology.film_model = squeeze): Teodorescu et al. "
+               "(2005) eq. 5 with its squeeze term, marched implicitly in cam angle, so the film "
+               "at zero entrainment is what the squeeze leaves",
+    "averaged_reynolds": "level-2 transient film (tribology.film_model = averaged_reynolds): "
+                         "Göçmen (2013) averaged Reynolds contact with squeeze, flow factors and "
+                         "Greenwood-Tripp asperities, load balanced at every angle and marched "
+                         "implicitly; friction from the same solution",
+}
 
 
 def reason(deck, planned) -> str:
+    model = deck.tribology.film_model
     if "ContactLoad" in planned:
-        return "lubricant given and contact loads planned: EHL film with the contact load"
-    return ("lubricant given, no contact loads: Blok rigid-piezoviscous film, "
+        if model == "steady":
+            return "lubricant given and contact loads planned: EHL film with the contact load"
+        s = deck.solver
+        knobs = (f"{s.film_march}, angle step "
+                 + (f"{s.film_angle_step * 57.29577951308232:g} deg" if s.film_angle_step
+                    else "of the run grid"))
+        if model == "averaged_reynolds":
+            knobs = (f"{s.film_nodes} nodes over +-{s.film_zone_width:g} Hertz half widths, "
+                     f"{deck.tribology.cavitation} cavitation, " + knobs)
+        return f"lubricant given and contact loads planned: {_TRANSIENT[model]} ({knobs})"
+    text = ("lubricant given, no contact loads: Blok rigid-piezoviscous film, "
             "which needs no load (Ball eq. 4.3)")
+    if model != "steady":
+        text += f"; the {model} film needs contact loads, so the steady film stands"
+    return text
 
 
 def run(deck, inputs, res):
@@ -70,4 +100,100 @@ def run_pair(contact, kin, load, res, component: str | None = None):
                    kin.theta[k])
     if load is None:
         res.warn("film without contact loads: Blok rigid-piezoviscous film (Ball eq. 4.3)")
+    if film.steady is not None:
+        transient_outputs(film, kin, res, component)
     return film
+
+
+def transient_outputs(film, kin, res, component: str | None = None) -> None:
+    """Columns, metrics, events and warnings of a transient film law (docs/transient_film.md)."""
+    from functools import partial
+
+    import numpy as np
+
+    from camtrain.contact.transient import REGIME_CODES, periodic
+
+    tag = f" ({component} pair)" if component else ""
+    col = partial(res.add_column, component=component)
+    met = partial(res.add_metric, component=component)
+    theta = np.asarray(kin.theta, dtype=float)
+    col("film_steady", film.steady, "m",
+        "steady EHL film of the same angles, without squeeze (NaN: out of contact)" + tag)
+    loaded = np.isfinite(film.min)
+    if np.any(loaded):
+        i = int(np.nanargmax(np.where(loaded, film.min, np.nan)))
+        met("film_max", film.min[i], "m", "largest film over the loaded cycle (on a flank)" + tag,
+            theta[i])
+    zeros = _zero_entrainment_angles(theta, kin.entrainment)
+    for j, angle in enumerate(zeros):
+        h = float(np.interp(angle, theta, np.where(loaded, film.min, np.nan),
+                            period=2.0 * np.pi))
+        met(f"film_at_zero_entrainment_{j + 1}", h, "m",
+            "transient film where the entrainment passes through zero (the steady film is 0 "
+            "there)" + tag, angle)
+    sol = film.solution
+    if film.regime is None:       # level 1: its squeeze ratio
+        march = sol
+        met("film_cycles", march.cycles, "-", "cam revolutions marched to the periodic film"
+            + tag)
+        return
+    tf, grid = sol.film, sol.grid
+
+    def on_run(v):
+        return np.where(loaded, periodic(v, grid, theta), np.nan)
+
+    col("film_transient", sol.own, "m",
+        "averaged Reynolds minimum film before the steady-film floor (NaN: out of contact)" + tag)
+    col("film_regime", [REGIME_CODES[r] for r in film.regime], "-",
+        "lubrication regime: 0 hydrodynamic, 1 mixed, 2 boundary (asperity share <= 1 %, "
+        "between, >= 90 %), 3 separated" + tag)
+    load = tf.fluid_load + tf.asperity_load
+    share = np.where(load > 0.0, tf.asperity_load / np.where(load > 0.0, load, 1.0), 0.0)
+    col("asperity_load_share", on_run(share), "-",
+        "share of the contact load carried by asperities (Greenwood-Tripp)" + tag)
+    col("film_pressure_max", on_run(tf.pressure_max), "Pa",
+        "peak fluid pressure of the averaged Reynolds film" + tag)
+    col("asperity_pressure_max", on_run(tf.asperity_pressure_max), "Pa",
+        "peak Greenwood-Tripp asperity pressure" + tag)
+    col("squeeze_velocity", on_run(tf.film_rate), "m/s",
+        "dh_min/dt of the marched film (< 0: approach)" + tag)
+    met("film_balance_error_max", float(np.nanmax(np.where(np.isnan(tf.balance_error), 0.0,
+                                                            tf.balance_error))), "-",
+        "largest load-balance error |W - W_P - W_A|/W of the film march" + tag)
+    met("film_cycles", tf.cycles, "-", "cam revolutions marched to the periodic film" + tag)
+    prev = film.regime[-1]
+    for i, label in enumerate(film.regime):
+        if label != prev:
+            res.add_event("regime", float(theta[i]), f"film regime {prev} -> {label}",
+                          component=component)
+        prev = label
+    missed = np.nan_to_num(tf.balance_error) > sol.tolerance
+    if np.any(missed):
+        res.warn(f"averaged Reynolds film{tag}: the load balance misses its tolerance at "
+                 f"{int(np.count_nonzero(missed))} march angles (largest error "
+                 f"{np.nanmax(tf.balance_error):.3g}; the root sits on the jump between the "
+                 "single-zone and multi-zone pressure solvers: more solver.film_nodes shrink it)")
+    if np.any(tf.unbalanced):
+        res.warn(f"averaged Reynolds film{tag}: the load exceeds what the film carries above its "
+                 f"floor at {int(np.count_nonzero(tf.unbalanced))} march angles (labelled "
+                 "boundary)")
+    clamped = int(np.count_nonzero(tf.clamped_nodes))
+    if clamped:
+        res.warn(f"averaged Reynolds film{tag}: flow factors clamped to their fit range "
+                 f"(h/sigma < 0.5) at {clamped} march angles")
+
+
+def _zero_entrainment_angles(theta, u) -> list[float]:
+    """Angles where the periodic entrainment changes sign (linear interpolation)."""
+    import numpy as np
+
+    u = np.asarray(u, dtype=float)
+    nxt = np.roll(u, -1)
+    t_next = np.roll(theta, -1).copy()
+    t_next[-1] += 2.0 * np.pi
+    out = []
+    for i in np.flatnonzero((u == 0.0) | (np.sign(u) * np.sign(nxt) < 0)):
+        a = theta[i] if u[i] == 0.0 else theta[i] + u[i] / (u[i] - nxt[i]) * (t_next[i]
+                                                                               - theta[i])
+        out.append(float(a))
+    return out

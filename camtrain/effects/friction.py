@@ -52,4 +52,4 @@ def run(deck, inputs, res):
                        "share of loaded angles at the boundary friction limit" + tag)
         if not np.all(np.isfinite(force)):
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")
-    return ContactFriction(tuple(fields), model=deck.tribology.friction_model)
+    return ContactFriction(tuple(fields), model=CamContact.from_deck(deck).friction_law)

@@ -196,15 +196,19 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
         add("min_base_radius_convex", float(np.max(-(k.valve_lift + k.valve_d2))), "m",
             "smallest base radius for which the cam stays convex under a flat follower")
     zeros = zero_crossings(theta, k.entrainment)
+    model = deck.tribology.film_model
+    carried = ("" if model == "steady" or deck.lubricant is None else
+               f"; the squeeze film carries the load through it (tribology.film_model = {model})")
     for j, angle in enumerate(zeros):
         add(f"zero_entrainment_{j + 1}", angle, "rad",
             f"cam angle where the entrainment velocity passes through zero{label}", angle)
         result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
-                         "zero: the steady EHL film vanishes", component=component)
+                         "zero: the steady EHL film vanishes" + carried, component=component)
     if zeros and deck.speed.omega > 0:
         where = ", ".join(f"{np.degrees(a):.2f}" for a in zeros)
         result.warn(f"entrainment velocity passes through zero{label} at {where} deg: the "
-                    "steady EHL film vanishes there (squeeze films are not modelled)")
+                    "steady EHL film vanishes there"
+                    + (carried or " (squeeze films are not modelled)"))
 
 
 def zero_crossings(theta, values) -> list[float]:

@@ -206,6 +206,8 @@ class TransientFilm(NamedTuple):
     cycles: int
     period_error: float
     evaluations: int
+    pressure_max: np.ndarray | None = None           #: peak fluid pressure [Pa] per angle
+    asperity_pressure_max: np.ndarray | None = None  #: peak asperity pressure [Pa] per angle
 
     @property
     def friction(self) -> np.ndarray:
@@ -226,7 +228,8 @@ def _periodic_derivative(values, theta):
 
 def transient_film(theta, omega: float, rho, u_e, load, half_width, props: FilmProperties,
                    resolution: FilmResolution = FilmResolution(), u_s=None,
-                   squeeze: bool = True, h_start: float | None = None) -> TransientFilm:
+                   squeeze: bool = True, h_start: float | None = None,
+                   strict: bool = True) -> TransientFilm:
     r"""March the level-2 minimum film around a periodic cam cycle.
 
     Args:
@@ -238,6 +241,9 @@ def transient_film(theta, omega: float, rho, u_e, load, half_width, props: FilmP
         u_s: sliding speed [m/s] (shear-flow term and friction; default 0).
         squeeze: False forces dh/dt = 0 (the per-angle steady solution).
         h_start: film before the first angle (default: a steady solve at theta[0]).
+        strict: raise where the balance misses the tolerance (False: report it in
+            ``balance_error`` and go on; the root can sit on the small jump in load between the
+            single-zone and the multi-zone pressure solvers, which shrinks as the nodes grow).
 
     Returns:
         :class:`TransientFilm`. The balance at every loaded angle is met to the resolution's
@@ -271,7 +277,7 @@ def transient_film(theta, omega: float, rho, u_e, load, half_width, props: FilmP
                        period_tol=resolution.period_tol, xtol=xtol, y_min=floor)
     err = np.abs(m.residual)
     bad = active & m.met & ~(err <= resolution.tolerance)
-    if np.any(bad):
+    if strict and np.any(bad):
         i = int(np.flatnonzero(bad)[0])
         raise ValueError(f"load balance not met at cam angle {math.degrees(theta[i]):.2f} deg "
                          f"(error {err[i]:.3g} > tolerance {resolution.tolerance:g})")
@@ -285,7 +291,8 @@ def transient_film(theta, omega: float, rho, u_e, load, half_width, props: FilmP
                          col["asperity_friction"],
                          regime_labels(col["fluid_load"], col["asperity_load"], W, m.met),
                          col["clamped_nodes"], ~m.met & active, m.cycles, m.period_error,
-                         m.evaluations)
+                         m.evaluations, np.array([float(p.pressure.max()) for p in parts]),
+                         np.array([float(p.asperity_pressure.max()) for p in parts]))
 
 
 def _steady_guess(props, rho, u_e, W, active) -> float:

@@ -286,6 +286,59 @@ def power(ax, r, ctx):
     return True
 
 
+# --------------------------------------------------------------------------- transient film
+
+def transient_film(ax, r, ctx):
+    """Transient film against the steady film over the cycle (docs/transient_film.md)."""
+    if not has(r, "film_min", "film_steady"):
+        return False
+    labels = {"film_min": "transient film", "film_steady": "steady EHL film",
+              "film_transient": "averaged Reynolds (before the floor)"}
+    names = [n for n in ("film_min", "film_steady", "film_transient") if n in r.columns]
+    data = []
+    for name, color, style in zip(names, (COLORS["main"], COLORS["second"], COLORS["third"]),
+                                  ("-", "--", ":"), strict=False):
+        y, unit = shown(r, name)
+        ax.plot(ctx.theta, _finite(y), color=color, ls=style, label=labels[name])
+        data.append(_finite(y))
+    _mark_zero_entrainment(ax, ctx)
+    ax.set_ylabel(f"film thickness [{unit}]")
+    _fit_y(ax, data, bottom=0.0)
+    angle_axis(ax)
+    finish_axes(ax, legend=True)
+    return True
+
+
+def film_pressures(ax, r, ctx):
+    """Peak fluid and asperity pressure of the averaged Reynolds film over the cycle, with the
+    asperity share of the load on a second axis."""
+    if not has(r, "film_pressure_max", "asperity_pressure_max"):
+        return False
+    data = []
+    for name, color, label in (("film_pressure_max", COLORS["main"], "peak fluid pressure"),
+                               ("asperity_pressure_max", COLORS["second"],
+                                "peak asperity pressure")):
+        y, unit = shown(r, name)
+        ax.plot(ctx.theta, _finite(y), color=color, label=label)
+        data.append(_finite(y))
+    ax.set_ylabel(f"pressure [{unit}]")
+    _fit_y(ax, data, bottom=0.0)
+    handles = None
+    if "asperity_load_share" in r.columns:
+        tw = ax.twinx()
+        tw.plot(ctx.theta, _finite(r["asperity_load_share"]), color=COLORS["grey"], lw=0.8,
+                ls="--", label="asperity share of load (right)")
+        tw.set_ylabel("W_A / W [-]")
+        tw.set_ylim(0.0, 1.0)
+        tw.grid(False)
+        h1, l1 = ax.get_legend_handles_labels()
+        h2, l2 = tw.get_legend_handles_labels()
+        handles = (h1 + h2, l1 + l2)
+    angle_axis(ax)
+    finish_axes(ax, legend=True, handles=handles)
+    return True
+
+
 #: name -> (title, function); the order is the order on the sheets
 PANELS = {
     "lift": ("Lift", lift),
@@ -304,4 +357,6 @@ PANELS = {
     "friction_force": ("Friction force", friction_force),
     "torque": ("Camshaft torque", torque),
     "power": ("Frictional power loss", power),
+    "transient_film": ("Transient film against the steady film", transient_film),
+    "film_pressures": ("Film and asperity pressures", film_pressures),
 }

@@ -27,6 +27,7 @@ SHEETS = {
                                                        "film_position", "load", "hertz"]),
     "friction": ("Friction, torque and power", ["friction_coefficient", "friction_force",
                                                 "torque", "power"]),
+    "transient_film": ("Transient film over the cycle", ["transient_film", "film_pressures"]),
     "profile": ("Cam profile and film around it", ["profile"]),
 }
 

@@ -29,7 +29,9 @@ KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max
                "min_film", "max_eccentricity", "power_mean", "bearings_power_total",
                # engine decks: crank-train loads and crank bearings
                "big_end_max_load", "big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
-               "total_power_dynamic", "total_power_steady")
+               "total_power_dynamic", "total_power_steady",
+               # transient cam film
+               "film_at_zero_entrainment_1", "film_max")
 
 #: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
 BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
@@ -147,6 +149,18 @@ def _model_rung(raw: dict, value) -> dict:
     return _mesh_rung(raw, int(n_theta)) if n_theta else _set_film(raw, model=model)
 
 
+def _film_model(raw: dict) -> str:
+    return str(raw.get("tribology", {}).get("film_model", "steady"))
+
+
+def _transient_film(raw: dict) -> bool:
+    return _film_model(raw) in ("squeeze", "averaged_reynolds")
+
+
+def _averaged_reynolds(raw: dict) -> bool:
+    return _film_model(raw) == "averaged_reynolds"
+
+
 KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
          lambda v: 1.0 / v, _valve_train,
@@ -185,6 +199,17 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("mobility", "solver.mobility", ("booker", "exact"),
          _choice_step(("booker", "exact")), _engine_orbits,
          "short-bearing mobility (model choice; reference: the exact pi-film inversion)"),
+    # transient film (docs/transient_film.md)
+    Knob("film_angle_step", "solver.film_angle_step", (2.0, 1.0, 0.5, 0.25, 0.125),
+         lambda v: v, _transient_film, "cam-angle step of the transient film march [deg]"),
+    Knob("film_nodes", "solver.film_nodes", (51, 101, 201, 401, 801, 1601),
+         lambda v: 1.0 / (v - 1), _averaged_reynolds,
+         "nodes across the contact zone of the averaged Reynolds film", integer=True),
+    Knob("film_zone_width", "solver.film_zone_width", (2.0, 4.0, 8.0, 16.0),
+         lambda v: 1.0 / v, _averaged_reynolds,
+         "half width of the averaged Reynolds zone in Hertz half widths"),
+    Knob("film_tolerance", "solver.film_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8),
+         lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
 )}
 
 
