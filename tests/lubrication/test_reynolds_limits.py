@@ -1,8 +1,9 @@
 """Exact rigid limits of the 1-D Reynolds solvers (derived and external standard results).
 
 Rigid cylinder of radius R on a plane, isoviscous, smooth (flow factors 1), lengths in units of
-sqrt(2 R h0). Tolerances: 0.5 % for the closed-form limits (the issue's target; the solvers
-reach < 0.1 % on these grids, the rest is the finite zone), 1 % on the rupture point.
+sqrt(2 R h0); the values: docs/references/rigid_line_contact.md. Tolerances: 0.5 % for the
+closed-form limits (the issue's target; the solvers reach < 0.1 % on these grids, the rest is the
+finite zone), 1 % on the rupture point.
 """
 from __future__ import annotations
 
