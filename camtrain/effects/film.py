@@ -120,14 +120,16 @@ def transient_outputs(film, kin, res, component: str | None = None) -> None:
     col("film_steady", film.steady, "m",
         "steady EHL film of the same angles, without squeeze (NaN: out of contact)" + tag)
     loaded = np.isfinite(film.min)
+    # at the zero itself the steady film is 0: the film there is the law's own (before a floor
+    # that only the neighbouring angles' steady films would set)
+    own = getattr(film.solution, "own", film.min)
     if np.any(loaded):
         i = int(np.nanargmax(np.where(loaded, film.min, np.nan)))
         met("film_max", film.min[i], "m", "largest film over the loaded cycle (on a flank)" + tag,
             theta[i])
     zeros = _zero_entrainment_angles(theta, kin.entrainment)
     for j, angle in enumerate(zeros):
-        h = float(np.interp(angle, theta, np.where(loaded, film.min, np.nan),
-                            period=2.0 * np.pi))
+        h = float(np.interp(angle, theta, np.where(loaded, own, np.nan), period=2.0 * np.pi))
         met(f"film_at_zero_entrainment_{j + 1}", h, "m",
             "transient film where the entrainment passes through zero (the steady film is 0 "
             "there)" + tag, angle)

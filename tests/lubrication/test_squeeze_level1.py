@@ -57,7 +57,9 @@ def test_march_satisfies_eq5_with_its_squeeze_ratio():
 
 
 def test_film_is_trapped_at_zero_entrainment():
-    """R3: the steady film vanishes at the reversals, the marched film stays positive there,
+    """Teodorescu et al. (2005) Fig. 14, R3 of docs/references/teodorescu2005.md §4 (film minima
+    at the inlet reversals, finite by squeeze-film entrapment, 0 without squeeze): the steady
+    film vanishes at the reversals, the marched film stays positive there,
     and its minima sit at the reversals: here 0-3 deg after them (the film keeps relaxing while
     |u| is still small), asserted as 0-5 deg in the direction of rotation."""
     theta, u, w, R, F = cycle(1440)
