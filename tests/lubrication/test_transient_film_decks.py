@@ -250,3 +250,29 @@ def test_march_on_its_own_angle_step():
     fine = run(extra=FAST + "film_angle_step = 1.0\n")
     assert np.nanmax(np.abs(fine["film_min"] / base["film_min"] - 1.0)) < 0.1
     assert math.isfinite(fine.metrics["film_cycles"].value)
+
+
+@pytest.mark.derived
+def test_gocmen_base_circle_at_400_rpm():
+    """Göçmen §4 D3: at camshaft 400 rpm the eq. 2.1 base-circle film is 0.0494 um (h ~ omega^0.7;
+    printed digits)."""
+    r = run(camshaft=400.0, extra=FAST)
+    np.testing.assert_allclose(r["film_min"][base_circle(r)] * 1e6, 0.0494, atol=5e-5)
+
+
+@pytest.mark.parametrize("model", ["squeeze", "averaged_reynolds"])
+def test_any_contact_load_with_separation(model):
+    """The film laws use only the load array: a load from another model (here the rigid load
+    with a loss of contact over the nose and a 20 % ripple, as a dynamics run could give) runs;
+    out of contact the film is NaN (level 2: labelled separated), in contact positive."""
+    contact, kin, load = pair(model=model, extra=FAST)
+    theta = kin.theta
+    dynamic = load * (1.0 + 0.2 * np.sin(12.0 * theta)) - 1500.0 * np.exp(-(theta / 0.1) ** 2)
+    film = contact.film(kin, np.maximum(dynamic, 0.0))
+    off = dynamic <= 0.0
+    assert off.any() and (~off).any()
+    assert np.all(np.isnan(film.min[off]))
+    assert np.all(film.min[~off] > 0.0)
+    if model == "averaged_reynolds":
+        assert set(film.regime[off]) == {"separated"}
+        assert np.all(film.friction[off] == 0.0)
