@@ -35,7 +35,8 @@ def reason(deck, planned) -> str:
         if model == "steady":
             return "lubricant given and contact loads planned: EHL film with the contact load"
         s = deck.solver
-        knobs = (f"{s.film_march}, angle step "
+        march = s.film_march if model == "averaged_reynolds" else "implicit_euler"
+        knobs = (f"{march}, angle step "
                  + (f"{s.film_angle_step * 57.29577951308232:g} deg" if s.film_angle_step
                     else "of the run grid"))
         if model == "averaged_reynolds":
