@@ -59,3 +59,37 @@ def flame_total(bearings: float, valve_train: float, piston: float, *, displacem
     total = components + extra
     return FlameTotal(bearings, valve_train, piston, extra, total,
                       fmep(total, displacement, engine_speed, strokes))
+
+
+def treatment_totals(bearings, method: str = "dynamic") -> dict:
+    """Engine bearing totals [W] per grooving treatment ({'ungrooved': W, 'grooved': W} as
+    solved) of an :class:`~camtrain.engine.crank_bearings.EngineBearings`; a bearing solved in
+    one treatment only counts in both."""
+    out: dict = {}
+    for b in bearings.bearings:
+        tags = set(b.variants)
+        for tag in ("ungrooved", "grooved"):
+            v = b.variants[tag] if tag in tags else next(iter(b.variants.values()))
+            x = getattr(v, method)
+            if x is None:
+                return {}
+            out[tag] = out.get(tag, 0.0) + (x if isinstance(x, float) else x.mean_power)
+    return out
+
+
+@dataclass(frozen=True)
+class EngineFriction:
+    """The FLAME total of an engine at one speed (SI).
+
+    ``speed`` [rad/s]; ``total`` the :class:`FlameTotal` [W, Pa]; ``valve_trains`` name ->
+    friction power [W] of each included valve-train deck; ``valve_train_parts`` name -> {part:
+    W} (cams, bearings, guides); ``bearing_treatments`` {'ungrooved': W, 'grooved': W} of the
+    crank bearings (empty without them); ``missing`` the components left out (no data).
+    """
+
+    speed: float
+    total: FlameTotal
+    valve_trains: dict
+    valve_train_parts: dict
+    bearing_treatments: dict
+    missing: tuple
