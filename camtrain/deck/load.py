@@ -91,6 +91,9 @@ def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
         raise InputError(problems or [Problem("", "invalid deck")], source=name)
     if isinstance(deck, Deck):
         deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
+    resolve = getattr(deck, "resolve_paths", None)
+    if resolve is not None:  # a schema that names other files (an engine's valve-train decks)
+        deck = resolve(base_dir or Path.cwd(), name)
     return deck
 
 

@@ -159,6 +159,9 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     records = sorted(done.values(), key=lambda r: r["index"])
     outcome = Outcome(records, [csv_path, out_dir / "sweep.json"], reused)
     outcome.written += _write_trends(out_dir, sweep, outcome)
+    from camtrain.study.flame_table import write_flame
+
+    outcome.written += write_flame(out_dir, sweep.params, records, plots=plots, title=sweep.name)
     if plots:
         outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends)
         kept = [r for r in records if r["index"] in keep]
