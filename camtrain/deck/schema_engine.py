@@ -20,6 +20,8 @@ from typing import Literal
 from camtrain.deck.engine_units import MOMENT_UNITS, PRESSURE_UNITS
 from camtrain.deck.fields import option, quantity, section
 from camtrain.deck.schema_engine_bearings import EngineBearingsSection, EngineSolver
+from camtrain.deck.schema_flame import FlameSection
+from camtrain.deck.schema_piston import PistonSection
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
@@ -171,6 +173,12 @@ class EngineDeck:
     bearings: EngineBearingsSection = section("Big-end and main bearings", required=True)
     solver: EngineSolver = section("Models and resolution of the crank-bearing calculation",
                                    default=EngineSolver())
+    piston: PistonSection | None = section(
+        "Piston assembly of every cylinder: rings, gas, oil-control ring, skirt, liner "
+        "temperatures and oil (schema_piston)")
+    flame: FlameSection | None = section(
+        "Engine friction total by component: valve-train decks included by path, accessories "
+        "(schema_flame)")
 
     #: what the report's title line says after the run speed
     speed_label = "rpm engine"
@@ -187,6 +195,17 @@ class EngineDeck:
     def pressure_table(self) -> PressureTableSection:
         """The pressure table of this run's speed (validated to exist by :meth:`problems`)."""
         return next(t for t in self.pressure if t.applies_to(self.speed.omega))
+
+    def resolve_paths(self, base_dir, source: str) -> EngineDeck:
+        """The deck with its included valve-train decks made absolute and validated."""
+        import dataclasses
+
+        from camtrain.deck.schema_flame import resolve_valve_trains
+
+        if self.flame is None:
+            return self
+        return dataclasses.replace(self, flame=resolve_valve_trains(self.flame, base_dir,
+                                                                    source))
 
     def problems(self, path: str) -> list[Problem]:
         out = []

@@ -52,6 +52,9 @@ PRODUCTS: dict[str, str] = {
     "BearingOrbits": "camtrain.bearings.product:BearingOrbits",
     "CrankLoads": "camtrain.engine.loads:CrankLoads",
     "EngineBearings": "camtrain.engine.crank_bearings:EngineBearings",
+    "PistonFriction": "camtrain.piston.product:PistonFriction",
+    "ValveTrainFriction": "camtrain.engine.valve_trains:ValveTrainFriction",
+    "EngineFriction": "camtrain.engine.flame:EngineFriction",
 }
 
 VALVE_TRAIN: tuple[EffectSpec, ...] = (
@@ -109,6 +112,19 @@ ENGINE: tuple[EffectSpec, ...] = (
                "big-end and main bearings: orbits to a periodic cycle, steady and Petroff "
                "columns, minimum film and power per bearing and in total",
                needs=("CrankLoads",), produces=("EngineBearings",)),
+    EffectSpec("piston", "camtrain.effects.piston",
+               "piston assembly: inter-ring gas, compression-ring films (flooded, then starved "
+               "passes), oil-control ring and skirt friction, power of every piston",
+               produces=("PistonFriction",)),
+    EffectSpec("valve_trains", "camtrain.effects.valve_trains",
+               "valve-train decks included by path, run at the camshaft speed: cams, camshaft "
+               "bearings and guides",
+               produces=("ValveTrainFriction",)),
+    EffectSpec("flame", "camtrain.effects.flame",
+               "FLAME engine total: bearings + valve trains + pistons + accessories, fmep and "
+               "shares",
+               uses=("EngineBearings", "ValveTrainFriction", "PistonFriction"),
+               produces=("EngineFriction",)),
 )
 
 

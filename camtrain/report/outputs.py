@@ -41,6 +41,8 @@ def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: floa
         "report.txt": report_text(result, loaded.model, path=loaded.path, sha=loaded.sha256,
                                   checks=checks, wall_time=wall_time),
     }
+    for axis in result.axes[1:]:   # columns on another grid (e.g. the piston's ring_angle)
+        texts[f"cycle_{axis}.csv"] = csv_text(result, axis)
     out_dir.parent.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.staging-", dir=out_dir.parent))
     try:

@@ -185,6 +185,11 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
         from camtrain.report.engine_plots import load_sheet
 
         orbits += load_sheet(result, out_dir, title=getattr(deck, "title", ""), formats=formats)
+    if "ring_angle" in result.columns:
+        from camtrain.report.piston_plots import piston_sheet
+
+        orbits += piston_sheet(result, out_dir, title=getattr(deck, "title", ""),
+                               formats=formats)
     if "cam_angle" not in result.columns:
         return orbits
     import matplotlib

@@ -51,10 +51,14 @@ def _finite_or_none(x: float):
     return x if math.isfinite(x) else None
 
 
-def cycle_table(result: Result) -> tuple[list[str], np.ndarray]:
-    """Column headers with units (e.g. ``cam_angle[deg]``) and the data matrix."""
+def cycle_table(result: Result, axis: str | None = None) -> tuple[list[str], np.ndarray]:
+    """Column headers with units (e.g. ``cam_angle[deg]``) and the data matrix of the columns
+    on ``axis`` (default: the first axis; columns on other grids go to tables of their own)."""
     headers, cols = [], []
+    axis = axis or (result.axes[0] if result.axes else None)
     for name, col in result.columns.items():
+        if axis is not None and col.axis != axis:
+            continue
         unit, factor = _DISPLAY.get(col.unit, (col.unit, 1.0)) if name == "cam_angle" \
             else (col.unit, 1.0)
         headers.append(f"{name}[{unit}]")
@@ -75,8 +79,8 @@ def atomic_write(path: Path, text: str) -> None:
         raise
 
 
-def csv_text(result: Result) -> str:
-    headers, data = cycle_table(result)
+def csv_text(result: Result, axis: str | None = None) -> str:
+    headers, data = cycle_table(result, axis)
     lines = [",".join(headers)]
     lines += [",".join(f"{v:.10g}" for v in row) for row in data]
     return "\n".join(lines) + "\n"

@@ -31,7 +31,10 @@ KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max
                "big_end_max_load", "big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
                "total_power_dynamic", "total_power_steady",
                # transient cam film
-               "film_at_zero_entrainment_1", "film_max")
+               "film_at_zero_entrainment_1", "film_max",
+               # engine decks: piston assembly and FLAME
+               "piston_power_total", "ring_1_min_film_flooded", "inter_ring_pressure_1_peak",
+               "flame_total")
 
 #: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
 BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
@@ -210,6 +213,15 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          "half width of the averaged Reynolds zone in Hertz half widths"),
     Knob("film_tolerance", "solver.film_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8),
          lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
+    Knob("piston_crank_step", "piston.solver.crank_step", (4.0, 2.0, 1.0, 0.5),
+         lambda v: v, lambda raw: "piston" in raw,
+         "crank-angle step of the inter-ring gas and ring-film marches [deg]"),
+    Knob("ring_tolerance", "piston.solver.ring_tolerance", (1e-2, 1e-3, 1e-4, 1e-5, 1e-6),
+         lambda v: v, lambda raw: "piston" in raw,
+         "cyclic tolerance of the ring-film march"),
+    Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, lambda raw: "piston" in raw,
+         "iteration and cyclic tolerance of the inter-ring gas march"),
 )}
 
 

@@ -72,7 +72,42 @@ def test_a_third_pass_changes_nothing(zeta_pack):
 @pytest.mark.xfail(strict=True, reason="camtrain's starved top ring peaks at ~200 N, no lower "
                    "than flooded: the load relief of the exposed inlet face is not reproduced")
 def test_starved_top_ring_friction_is_relieved(zeta_pack):
-    """Yang Fig. 6.11: starved top-ring peak friction about 140 N against 210 N flooded."""
+    """Yang Fig. 6.11: starved top-ring peak friction about 140 N (+-20 %, figure reading),
+    below the flooded ring's (Fig. 6.7, about 210 N)."""
     _, _, sol = zeta_pack
     peak = np.max(np.abs(sol.starved[0].friction)) * np.pi * Z.BORE
-    assert peak == pytest.approx(140.0, rel=0.3)
+    flooded = np.max(np.abs(sol.flooded[0].friction)) * np.pi * Z.BORE
+    assert peak < flooded
+    assert peak == pytest.approx(140.0, rel=0.2)
+
+
+def _transport(theta, rc):
+    """Up, down and net oil transport [m^3/cycle] through a ring, up positive."""
+    q = -rc.flow * np.pi * Z.BORE * (theta[1] - theta[0]) / (RPM * np.pi / 30.0)
+    return q[q > 0].sum(), q[q < 0].sum(), q.sum()
+
+
+STARVED_TABLE_6_2 = [(0, (0.50e-8, -0.39e-8)), (1, (0.33e-8, -0.30e-8))]
+
+
+@pytest.mark.parametrize("ring, table", STARVED_TABLE_6_2)
+def test_starved_up_and_down_transport_within_a_factor_2(zeta_pack, ring, table):
+    """Yang Table 6.2 (starved, 3000 rpm): up and down transport, top +0.50e-8 / -0.39e-8,
+    second +0.33e-8 / -0.30e-8 m^3/cycle; signs exact, magnitudes within a factor 2 (the
+    inter-ring volume and rod length are assumed)."""
+    theta, _, sol = zeta_pack
+    up, down, _ = _transport(theta, sol.starved[ring])
+    for got, want in zip((up, down), table, strict=True):
+        assert 0.5 < got / want < 2.0
+
+
+@pytest.mark.xfail(strict=True, reason="the starved nets are small differences of up and down "
+                   "flows: camtrain's top-ring net is +2.9e-11 (Yang +0.11e-8, 38x less) and the "
+                   "second ring's +7.7e-10 (Yang +0.35e-9, 2.2x more); the dead-centre oil "
+                   "bookkeeping that also keeps the third pass moving decides them")
+@pytest.mark.parametrize("ring, net", [(0, 0.11e-8), (1, 0.35e-9)])
+def test_starved_net_transport_within_a_factor_2(zeta_pack, ring, net):
+    """Yang Table 6.2 (starved): net transport top +0.11e-8, second +0.35e-9 m^3/cycle; within
+    a factor 2."""
+    theta, _, sol = zeta_pack
+    assert 0.5 < _transport(theta, sol.starved[ring])[2] / net < 2.0
