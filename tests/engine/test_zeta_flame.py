@@ -191,3 +191,14 @@ def test_a_given_skirt_adds_its_power():
     assert m["piston_power_mean"].value == pytest.approx(parts, rel=1e-12)
     assert "piston.skirt" not in " ".join(result.warnings)
     assert np.all(np.sign(result["skirt_friction"]) == np.sign(result["liner_speed"]))
+
+
+def test_run_writes_the_piston_sheet_and_its_own_table(tmp_path):
+    """The run's outputs: the piston sheet (gas, ring films, friction per component, FLAME bars)
+    and the piston columns in a table of their own grid."""
+    loaded = api.load(ZETA)
+    written = api.write(run_at(3000), loaded, tmp_path, plots="sheets")
+    names = {p.name for p in written}
+    assert {"sheet_piston.png", "cycle_ring_angle.csv", "cycle.csv"} <= names
+    head = (tmp_path / "cycle_ring_angle.csv").read_text().splitlines()
+    assert head[0].startswith("ring_angle[rad],") and len(head) == 721
