@@ -118,7 +118,9 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
                                                               "error") if outcome.count(s))
         reused = f" ({outcome.reused} reused)" if outcome.reused else ""
         click.echo(f"{len(outcome.records)} cases{reused}: {counts}. Wrote {out_dir}/sweep.csv, "
-                   f"trends.md" + ("" if no_plots else ", plots/"))
+                   f"trends.md"
+                   + (", flame.md" if any(p.name == "flame.md" for p in outcome.written) else "")
+                   + ("" if no_plots else ", plots/"))
     if outcome.count("error"):
         click.echo("some cases hit an internal error (a bug in camtrain; see sweep.csv)",
                    err=True)
