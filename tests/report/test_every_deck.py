@@ -30,11 +30,17 @@ def test_deck_outputs_render_and_parse(name, tmp_path):
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert summary["deck"]["sha256"] == loaded.sha256
     assert set(summary["metrics"]) == set(result.metrics)
-    with (tmp_path / "cycle.csv").open() as fh:
-        rows = list(csv.reader(fh))
-    header = rows[0]
-    assert len(header) == len(result.columns)
-    assert all("[" in h and h.endswith("]") for h in header)
-    body = rows[1:]
-    assert len(body) == len(next(iter(result.columns.values())).values)
-    assert all(len(r) == len(header) for r in body)
+    # cycle.csv holds the first axis' columns, cycle_<axis>.csv each further axis' (an engine's
+    # piston columns on ring_angle)
+    for k, axis in enumerate(result.axes or [None]):
+        on_axis = [c for c in result.columns.values() if axis is None or c.axis == axis]
+        with (tmp_path / ("cycle.csv" if k == 0 else f"cycle_{axis}.csv")).open() as fh:
+            rows = list(csv.reader(fh))
+        header = rows[0]
+        assert len(header) == len(on_axis)
+        assert all("[" in h and h.endswith("]") for h in header)
+        body = rows[1:]
+        assert len(body) == len(on_axis[0].values)
+        assert all(len(r) == len(header) for r in body)
+    assert sum(len([c for c in result.columns.values() if c.axis == a])
+               for a in result.axes) in (0, len(result.columns))
