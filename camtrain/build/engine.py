@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 from camtrain.deck.schema_engine import EngineDeck
-from camtrain.errors import GeometryError
 from camtrain.engine import (
     YANG1992_MOBILITY_SCALE,
     BearingSpec,
@@ -13,6 +12,7 @@ from camtrain.engine import (
     PressureTable,
     SolverOptions,
 )
+from camtrain.errors import GeometryError
 
 
 def pressure_table(deck: EngineDeck) -> PressureTable:
