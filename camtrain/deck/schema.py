@@ -18,6 +18,7 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
     CamLobe,
     Camshaft,
 )
+from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -276,6 +277,9 @@ class Deck:
     camshaft: Camshaft | None = section(
         "The camshaft carrying copies of this valve train: lobes, bearings, drive (camshaft torque "
         "and bearing effects)")
+    dynamics: Dynamics | None = section(
+        "Elastic valve train in time: contact loss, spring surge, valve seating (the dynamic "
+        "contact load replaces the rigid train's)")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -295,4 +299,5 @@ class Deck:
         if self.cam.taper_angle and self.mechanism.type != "domed":
             out.append(Problem("cam.taper_angle", "applies to a domed follower only",
                                f"{from_si(self.cam.taper_angle, 'deg'):g} deg", "0"))
+        out.extend(dynamics_problems(self))
         return out

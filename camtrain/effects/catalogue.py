@@ -65,6 +65,10 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
     EffectSpec("loads", "camtrain.effects.loads",
                "contact load from the rigid-train D'Alembert balance; loss of contact",
                needs=("TrainKinematics",), produces=("ContactLoad",)),
+    EffectSpec("dynamics", "camtrain.effects.dynamics",
+               "contact load of the elastic train in time: separation, spring surge, valve "
+               "seating (replaces the rigid-train load when the deck has [dynamics])",
+               needs=("TrainKinematics",), produces=("ContactLoad",), rank=1),
     EffectSpec("hertz", "camtrain.effects.hertz",
                "Hertz contact half-width and maximum pressure",
                needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",)),

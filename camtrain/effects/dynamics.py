@@ -1,0 +1,135 @@
+"""Dynamics effect: the elastic valve train marched in time to its periodic state; its contact
+load replaces the rigid train's (rank 1 over ``loads``), so Hertz, film, friction, power and the
+camshaft run unchanged on it.
+
+Physics in :mod:`camtrain.dynamics` (lumped train, integrators), the deck's [dynamics] section
+turned into it in :mod:`camtrain.build.dynamics`. Writes the dynamic load, follower and valve
+motion, spring and seat forces, contact status and the rigid load beside them; events for every
+separation and re-contact during the lift event and every seat impact; warnings for bounce.
+"""
+from __future__ import annotations
+
+MODEL = "elastic valve train in time (lumped masses, unilateral contact and seat)"
+
+
+def missing(deck) -> list[str]:
+    out = []
+    if getattr(deck, "dynamics", None) is None:
+        out.append("dynamics (the [dynamics] section)")
+    if deck.spring is None:
+        out.append("spring (rate, preload_compression)")
+    if deck.masses is None:
+        out.append("masses (valve_side)")
+    return out
+
+
+def reason(deck, planned) -> str:
+    d = deck.dynamics
+    spring = (f"{d.spring_elements}-element spring chain" if d.spring_elements else
+              "single-rate spring")
+    return f"[dynamics] given: elastic train, {d.integrator}, {spring}"
+
+
+def run(deck, inputs, res):
+    import math
+
+    import numpy as np
+
+    from camtrain.build.dynamics import rigid_load, setup
+    from camtrain.dynamics import StepTooLarge, march
+    from camtrain.dynamics.findings import findings
+    from camtrain.errors import field_error
+    from camtrain.loads import ContactLoad, contact_mask
+    from camtrain.mechanisms import TrainKinematics
+
+    kin = inputs[TrainKinematics].main
+    run_setup = setup(deck, kin)
+    model, settings = run_setup.model, run_setup.settings
+    try:
+        resp = march(model, run_setup.cam, run_setup.base, settings)
+    except StepTooLarge as exc:
+        raise field_error("dynamics.steps_per_degree", str(exc),
+                          deck.dynamics.steps_per_degree,
+                          "a step below the stability limit") from None
+    ratio = np.asarray(kin.rocker_ratio)
+    load = resp.contact_force[0] * ratio
+    rigid = rigid_load(deck, kin)
+    inside = contact_mask(kin.valve_lift, run_setup.lash)
+    f, v = model.follower, model.valve
+    cols = (
+        ("load", load, "N", "normal cam/follower contact load of the elastic train (0 while "
+         "the follower is off the cam)"),
+        ("rigid_load", rigid, "N", "contact load of the rigid train (quasi-static limit)"),
+        ("follower_lift", resp.u[f], "m", "follower displacement referred to the valve"),
+        ("follower_velocity", resp.v[f], "m/s", "follower velocity referred to the valve"),
+        ("follower_acceleration", resp.a[f], "m/s^2", "follower acceleration referred to the "
+         "valve"),
+        ("valve_lift_dynamic", resp.u[v], "m", "valve displacement from rest on its seat"),
+        ("valve_velocity", resp.v[v], "m/s", "valve velocity"),
+        ("valve_acceleration", resp.a[v], "m/s^2", "valve acceleration"),
+        ("spring_force", model.spring_force_at_head(resp.u), "N", "valve-spring force on the "
+         "cylinder head"),
+        ("seat_force", resp.contact_force[1], "N", "valve-seat force"),
+        ("contact_status", (resp.contact_force[0] > 0.0).astype(float), "-",
+         "1 while the cam touches the follower, 0 while separated"),
+    )
+    for name, values, unit, text in cols:
+        res.add_column(name, values, unit, text)
+    if model.chain:
+        res.add_column("spring_force_retainer", model.spring_force_at_retainer(resp.u), "N",
+                       "valve-spring force on the retainer (differs from the head's by surge)")
+    res.add_axis("time", resp.time, "s", "time from the start of the last revolution marched")
+    res.add_column("load", load, "N", "dynamic contact load against time", axis="time")
+    res.add_column("valve_acceleration", resp.a[v], "m/s^2", "valve acceleration against time",
+                   axis="time")
+    i = int(np.argmax(load))
+    res.add_metric("load_max", load[i], "N", "largest dynamic contact load", kin.theta[i])
+    res.add_metric("rigid_load_max", float(np.max(rigid)), "N", "largest rigid-train load")
+    res.add_metric("dynamic_load_ratio", load[i] / max(float(np.max(rigid)), 1e-300), "-",
+                   "largest dynamic load / largest rigid load")
+    res.add_metric("valve_acceleration_max", float(np.max(np.abs(resp.a[v]))), "m/s^2",
+                   "largest valve acceleration")
+    res.add_metric("natural_frequency_max", model.omega_max() / (2 * math.pi), "Hz",
+                   "highest natural frequency of the train (contacts closed)")
+    res.add_metric("time_step", run_setup.base.period / resp.steps, "s",
+                   f"time step ({resp.steps} steps per revolution)")
+    res.add_metric("cycles", resp.cycles, "-", "camshaft revolutions marched")
+    res.add_metric("period_change", resp.change, "-", "change between the last two revolutions")
+    found = findings(resp)
+    for s in found.separations:
+        res.add_event("contact_loss", s.loss, "the cam loses the follower (elastic train)")
+        res.add_event("contact_regained", s.regained, f"the follower lands on the cam again at "
+                      f"{abs(s.speed):.3g} m/s")
+    for angle, speed in found.seat_impacts:
+        res.add_event("seat_impact", angle, f"the valve lands on its seat at {speed:.3g} m/s")
+    res.add_metric("separations", len(found.separations), "-",
+                   "separations of the cam contact during the lift event")
+    if found.separations:
+        dwell = min(s.dwell for s in found.separations)
+        res.add_metric("separation_dwell_min", dwell, "rad", "shortest separation")
+        first = found.separations[0]
+        res.add_metric("separation_angle", first.loss, "rad", "first loss of contact",
+                       first.loss)
+        deg = ", ".join(f"{math.degrees(s.loss):.1f}" for s in found.separations[:6])
+        res.warn(f"valve-train separation: the cam loses the follower {len(found.separations)} "
+                 f"times per revolution (at {deg} deg; shortest dwell "
+                 f"{math.degrees(dwell):.3g} deg); loads there are impacts, not a design load")
+    if found.seat_impacts:
+        speeds = [s for _, s in found.seat_impacts]
+        res.add_metric("seat_impacts", len(speeds), "-", "valve landings on the seat")
+        res.add_metric("seat_impact_speed_max", max(speeds), "m/s", "fastest valve landing")
+        if len(speeds) > 1:
+            res.warn(f"valve bounce: the valve lands on its seat {len(speeds)} times per "
+                     f"revolution (fastest {max(speeds):.3g} m/s)")
+    if found.base_circle_changes:
+        res.warn(f"zero lash: the follower touches and leaves the cam {found.base_circle_changes}"
+                 " times on the base circle (ringing at no load; give a clearance or an "
+                 "adjuster load to settle the base-circle contact)")
+    if not resp.converged:
+        res.warn(f"dynamics: no periodic state after {resp.cycles} revolutions (last change "
+                 f"{resp.change:.3g} > period_tol {settings.period_tol:g}); results are the "
+                 "last revolution")
+    if resp.cut_switches:
+        res.warn(f"dynamics: {resp.cut_switches} steps had more contact changes than the "
+                 "integrator locates per step (chattering); refine steps_per_degree")
+    return ContactLoad(load=load, in_contact=inside, model=MODEL)
