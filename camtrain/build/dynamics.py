@@ -1,0 +1,146 @@
+"""The deck's [dynamics] section turned into the lumped train, its cam input and its settings.
+
+Everything is referred to the valve. The masses split the rigid train's: the follower node gets
+``dynamics.follower_mass`` (taken out of ``masses.valve_side``), half the rocker's equivalent
+mass I/B^2 (Teodorescu eqs A1-A3) and half a pivoted follower's mass; the valve node the rest. So
+the rigid limit of the elastic train is the deck's rigid train (docs/dynamics.md).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from camtrain.dynamics import (
+    CamInput,
+    Settings,
+    TimeBase,
+    TrainModel,
+    assemble_train,
+    auto_steps,
+    cam_input,
+    rocker_equivalent_mass,
+)
+from camtrain.loads.forces import BASE_CIRCLE_TOLERANCE
+
+
+@dataclass(frozen=True)
+class DynamicSetup:
+    """What a dynamic run needs: the train, its cam input, the time base, the settings and the
+    valve-referred lash [m] and rocker ratio used for the push rod (1 otherwise)."""
+
+    model: TrainModel
+    cam: CamInput
+    base: TimeBase
+    settings: Settings
+    lash: float
+    pushrod_ratio: float
+
+
+def valve_arm(deck) -> float | None:
+    """Rocker arm on the valve side [m] (finger/rocker: B; push rod: D2), None without one."""
+    mech = deck.mechanism
+    if mech.type in ("finger", "rocker"):
+        return mech.B
+    if mech.type == "pushrod":
+        return mech.pushrod.rocker_valve_arm
+    return None
+
+
+def pushrod_ratio(deck) -> float:
+    """Valve motion per push-rod motion, D2/D1 (1 for trains without a push rod)."""
+    if deck.mechanism.type == "pushrod":
+        p = deck.mechanism.pushrod
+        return p.rocker_valve_arm / p.rocker_pushrod_arm
+    return 1.0
+
+
+def lash_of(deck) -> float:
+    c = deck.clearance
+    return 0.0 if (c is None or c.lash_adjuster) else c.valve_clearance
+
+
+def build_model(deck, *, stiffness_scale: float = 1.0) -> TrainModel:
+    """The lumped train of the deck (``stiffness_scale`` multiplies the contact, element and seat
+    stiffnesses, not the valve spring: the stiff limit of the tests)."""
+    d, m, s = deck.dynamics, deck.masses, deck.spring
+    arm = valve_arm(deck)
+    body = 0.0
+    if arm is not None:
+        body = rocker_equivalent_mass(m.rocker_inertia, arm)
+        if deck.mechanism.type in ("finger", "rocker"):
+            body += m.follower
+    third = d.spring_mass / 3.0 if d.spring_elements > 0 else 0.0
+    valve = m.valve_side - d.follower_mass - third
+    follower = d.follower_mass
+    if follower > 0.0:
+        follower += 0.5 * body
+        valve += 0.5 * body
+    else:
+        valve += body
+    ratio = pushrod_ratio(deck)
+
+    def scaled(k):
+        return math.inf if k is None else k * stiffness_scale
+
+    links = {}
+    if d.pushrod_stiffness is not None:
+        links["push rod"] = scaled(d.pushrod_stiffness / ratio ** 2)
+    if d.rocker_stiffness is not None:
+        links["rocker"] = scaled(d.rocker_stiffness)
+    if d.stem_stiffness is not None:
+        links["valve stem"] = scaled(d.stem_stiffness)
+    if follower > 0.0 and not links:
+        links["rigid link"] = math.inf
+    c = deck.clearance
+    adjuster = c.adjuster_load if (c is not None and c.lash_adjuster) else 0.0
+    return assemble_train(
+        valve_mass=valve, follower_mass=follower, contact_stiffness=scaled(d.contact_stiffness),
+        follower_stiffness=scaled(d.follower_stiffness), links=links,
+        seat_stiffness=scaled(d.seat_stiffness), spring_rate=s.rate,
+        spring_preload=s.rate * s.preload_compression, lash=lash_of(deck),
+        damping_ratio=d.damping_ratio, seat_damping_ratio=d.seat_damping_ratio,
+        spring_mass=d.spring_mass or 0.0, spring_elements=d.spring_elements,
+        spring_damping_ratio=d.spring_damping_ratio, adjuster_load=adjuster)
+
+
+def time_base(deck, omega: float | None = None) -> TimeBase:
+    d = deck.dynamics
+    w = deck.speed.omega if omega is None else omega
+    return TimeBase(w, d.speed_oscillation, d.speed_oscillation_order if d.speed_oscillation
+                    else 0)
+
+
+def setup(deck, kin, *, stiffness_scale: float = 1.0, omega: float | None = None,
+          overrides: dict | None = None) -> DynamicSetup:
+    """Model, cam input (the kinematics' valve lift), time base and settings of a run."""
+    d = deck.dynamics
+    model = build_model(deck, stiffness_scale=stiffness_scale)
+    cam = cam_input(kin.theta, kin.valve_lift, kin.valve_d1, kin.valve_d2,
+                    BASE_CIRCLE_TOLERANCE)
+    base = time_base(deck, omega)
+    spd = None if d.steps_per_degree is None else d.steps_per_degree
+    sub = auto_steps(model, base, kin.theta.size, d.steps_per_period, spd)
+    kw = dict(integrator=d.integrator, substeps=sub, cycles_max=d.cycles_max,
+              period_tol=d.period_tol, rtol=d.rtol, atol=d.atol, max_step=d.max_step,
+              stability_factor=d.stability_factor)
+    kw.update(overrides or {})
+    return DynamicSetup(model, cam, base, Settings(**kw), lash_of(deck), pushrod_ratio(deck))
+
+
+def rigid_load(deck, kin, omega: float | None = None):
+    """The rigid train's contact load [N] on the grid (Ball 1988 §4.2, friction arm at the
+    boundary coefficient): the quasi-static limit printed beside the dynamic load."""
+    import numpy as np
+
+    from camtrain.loads import contact_load
+
+    m, s = deck.masses, deck.spring
+    B = deck.mechanism.B or 0.0
+    body = {"follower_mass": m.follower, "follower_inertia": m.rocker_inertia + m.follower * B * B,
+            "rocker_inertia": m.rocker_inertia}
+    c = deck.clearance
+    lash = c is not None and c.lash_adjuster
+    return contact_load(kin, np.full(kin.theta.shape, deck.tribology.boundary_friction),
+                        rate=s.rate, preload_compression=s.preload_compression,
+                        valve_mass=m.valve_side, body_inertia=body, clearance=lash_of(deck),
+                        base_load=c.adjuster_load if lash else 0.0, omega=omega)
