@@ -144,3 +144,21 @@ def rigid_load(deck, kin, omega: float | None = None):
                         rate=s.rate, preload_compression=s.preload_compression,
                         valve_mass=m.valve_side, body_inertia=body, clearance=lash_of(deck),
                         base_load=c.adjuster_load if lash else 0.0, omega=omega)
+
+
+def separation_check(deck, kin, *, stiffness_scale: float = 1.0, overrides: dict | None = None):
+    """``separates(omega) -> (separated, first loss angle)``: in the periodic response at
+    camshaft speed omega [rad/s] the cam loses the follower while the valve is off its seat
+    (rebounds of the valve landing on its seat do not count: the rigid train has no seat)."""
+    from camtrain.dynamics import march
+    from camtrain.dynamics.findings import findings
+
+    def separates(omega):
+        s = setup(deck, kin, stiffness_scale=stiffness_scale, omega=omega, overrides=overrides)
+        flights = [x for x in findings(march(s.model, s.cam, s.base, s.settings)).separations
+                   if x.in_flight]
+        if not flights:
+            return False, None
+        return True, flights[0].loss
+
+    return separates

@@ -13,12 +13,15 @@ from camtrain.dynamics.integrators import TrainResponse
 @dataclass(frozen=True)
 class Separation:
     """The cam contact open from ``loss`` to ``regained`` [rad] during the lift event (``dwell``
-    [rad] the angle between), ``speed`` [m/s] the closing speed at re-contact."""
+    [rad] the angle between), ``speed`` [m/s] the closing speed at re-contact; ``in_flight``:
+    the valve was off its seat when the cam lost the follower (a jump, the elastic counterpart
+    of the rigid train's bounce), not a rebound of the valve landing on its seat."""
 
     loss: float
     regained: float
     dwell: float
     speed: float
+    in_flight: bool = True
 
 
 @dataclass(frozen=True)
@@ -46,23 +49,35 @@ def response_cam_lift(response: TrainResponse, angle: float) -> float:
 
 def findings(response: TrainResponse) -> Findings:
     """Pair each contact loss with the next re-contact (periodic), list seat impacts."""
-    cam_events = [e for e in response.events if e.kind in ("contact_loss", "contact_regained")]
-    on_lift = [e for e in cam_events if _on_lift(response, e.angle)]
-    base = len(cam_events) - len(on_lift)
+    # the revolution starts at rest in the middle of the dwell; the valve is in flight from its
+    # first lift off the seat to its first landing (later lifts are rebounds)
+    phase = "seated"
+    base = 0
     seps = []
     pending = None
-    for e in on_lift:
+    flight = False
+    for e in response.events:
+        if e.kind == "seat_lift" and phase == "seated":
+            phase = "flight"
+        elif e.kind == "seat_impact" and phase == "flight":
+            phase = "landed"
+        if e.kind in ("seat_lift", "seat_impact"):
+            continue
+        if not _on_lift(response, e.angle):
+            base += 1
+            continue
         if e.kind == "contact_loss":
-            pending = e
+            pending, flight = e, phase == "flight"
         elif pending is not None:
             dwell = (e.angle - pending.angle) % (2.0 * math.pi)
-            seps.append(Separation(pending.angle, e.angle, dwell, e.speed))
+            seps.append(Separation(pending.angle, e.angle, dwell, e.speed, flight))
             pending = None
     if pending is not None:  # regained after the end of the revolution: wrap to the first one
-        firsts = [e for e in on_lift if e.kind == "contact_regained"]
+        firsts = [e for e in response.events if e.kind == "contact_regained"
+                  and _on_lift(response, e.angle)]
         if firsts:
             e = firsts[0]
             seps.append(Separation(pending.angle, e.angle,
-                                   (e.angle - pending.angle) % (2.0 * math.pi), e.speed))
+                                   (e.angle - pending.angle) % (2.0 * math.pi), e.speed, flight))
     impacts = tuple((e.angle, abs(e.speed)) for e in response.events if e.kind == "seat_impact")
     return Findings(tuple(seps), impacts, base)

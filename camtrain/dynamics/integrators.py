@@ -365,3 +365,44 @@ class _Adaptive:
 def _constant(matrix):
     """A Jacobian callable returning a fixed matrix (LSODA wants a callable)."""
     return lambda t, y: matrix
+
+
+def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:
+    """The train with the listed contacts made permanent (bilateral) and the others removed:
+    a linear system for free-vibration and modal checks."""
+    from dataclasses import replace
+
+    k, c = model.stiffness.copy(), model.damping.copy()
+    for j in contacts:
+        i = model.uni_node[j]
+        k[i, i] += model.uni_k[j]
+        c[i, i] += model.uni_c[j]
+    zero = np.zeros_like(model.uni_k)
+    return replace(model, stiffness=k, damping=c, uni_k=zero, uni_c=zero.copy())
+
+
+def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
+                   integrator: str = "newmark") -> np.ndarray:
+    """Displacements [m] (n x steps) of the linear part of ``model`` released from ``u0`` at
+    rest without external force (unilateral contacts of zero stiffness stay open)."""
+    from camtrain.dynamics import _kernel
+
+    n = model.size
+    inputs = np.zeros((2, steps + 1))
+    u = np.array(u0, dtype=float)
+    v = np.zeros(n)
+    a = -(model.stiffness @ u) / model.mass
+    act = np.zeros(2, dtype=np.bool_)
+    out_u, out_v, out_a = np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps))
+    out_f = np.empty((2, steps))
+    ev_t, ev_k, ev_r = np.empty(1), np.empty(1, dtype=np.int64), np.empty(1)
+    args = (model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node, model.uni_k,
+            model.uni_c, model.uni_offset, np.zeros(2), inputs, inputs, dt, 1)
+    if integrator == "central_difference":
+        u_prev = u - dt * v + 0.5 * dt * dt * a
+        _kernel.central_difference_march(*args, u, u_prev, act, np.zeros(2), out_u, out_v,
+                                         out_a, out_f, ev_t, ev_k, ev_r, 0.0)
+    else:
+        _kernel.newmark_march(*args, u, v, a, act, out_u, out_v, out_a, out_f, ev_t, ev_k, ev_r,
+                              0.0)
+    return out_u

@@ -206,7 +206,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     here when ``spring_elements`` > 0). Damping ratios set c = 2 zeta sqrt(k m) with m the node
     mass (contact, seat, single-rate spring) or the reduced mass of the two nodes (links).
     ``adjuster_load``: a hydraulic lash adjuster between follower and valve pushes them apart
-    with a constant force (follower onto the cam, valve onto its seat); it needs a follower node.
+    with a constant force (the follower onto the cam, the valve off its seat: the seat carries
+    the spring preload less the adjuster's load); it needs a follower node.
     """
     links = dict(links or {})
     has_follower = follower_mass > 0.0
@@ -258,15 +259,18 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     if adjuster_load:
         if not has_follower:
             raise ValueError("a lash adjuster load needs a follower mass (a follower node)")
-        preload[follower] += adjuster_load
-        preload[valve] -= adjuster_load
-    seat_load = spring_preload + (adjuster_load if has_follower else 0.0)
+        preload[follower] -= adjuster_load
+        preload[valve] += adjuster_load
+    seat_load = spring_preload - (adjuster_load if has_follower else 0.0)
     zs = damping_ratio if seat_damping_ratio is None else seat_damping_ratio
     uni_node = np.array([follower, valve], dtype=np.int64)
     uni_k = np.array([cam_k, seat_stiffness])
     uni_c = np.array([damping_from_ratio(damping_ratio, cam_k, mass[follower]),
                       damping_from_ratio(zs, seat_stiffness, mass[valve])])
-    uni_offset = np.array([-lash, seat_load / seat_stiffness])
+    # an adjuster takes up the slack: at rest the contact is compressed by its load, no link is
+    # strained, every node sits at u = 0
+    uni_offset = np.array([-lash + (adjuster_load / cam_k if has_follower else 0.0),
+                           seat_load / seat_stiffness])
     return TrainModel(mass=mass, stiffness=k, damping=c, preload=preload, uni_node=uni_node,
                       uni_k=uni_k, uni_c=uni_c, uni_offset=uni_offset, follower=follower,
                       valve=valve, elements=tuple(elements), spring_rate=spring_rate,
@@ -276,7 +280,7 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
 def static_state(model: TrainModel) -> tuple[np.ndarray, np.ndarray]:
     """Displacements [m] and contact states at rest on the base circle (cam input 0).
 
-    The seat's offset is set so that the valve rests at u = 0 carrying the spring preload (and
+    The seat's offset is set so that the valve rests at u = 0 carrying the spring preload (less
     an adjuster's load); the cam contact is closed when an adjuster pushes the follower onto
     the cam (the follower then sits at -F_h / k_c), open otherwise (L7: every element carries
     the preload it must, to round-off).
