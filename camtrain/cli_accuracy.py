@@ -16,7 +16,8 @@ from camtrain.errors import CamtrainError
 @click.argument("deck", type=str)
 @click.option("--knob", "knobs", multiple=True, metavar="NAME",
               help="Resolution knob to study (repeatable): angle_points, friction_tolerance, "
-                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model; engine decks: "
+                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model; dynamics: "
+                   "steps_per_degree, spring_elements, dynamics_rtol; engine decks: "
                    "crank_step, period_tolerance, step_tolerance, pressure_interpolation, "
                    "mobility. Default: every knob that applies to the deck.")
 @click.option("--tolerance", default="0.1%", show_default=True,

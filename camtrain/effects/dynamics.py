@@ -104,6 +104,9 @@ def run(deck, inputs, res):
         res.add_event("seat_impact", angle, f"the valve lands on its seat at {speed:.3g} m/s")
     res.add_metric("separations", len(found.separations), "-",
                    "separations of the cam contact during the lift event")
+    jumps = [s for s in found.separations if s.in_flight]
+    res.add_metric("jumps", len(jumps), "-", "separations while the valve is off its seat "
+                   "(follower jump; the others are rebounds of the valve landing)")
     if found.separations:
         dwell = min(s.dwell for s in found.separations)
         res.add_metric("separation_dwell_min", dwell, "rad", "shortest separation")
@@ -112,8 +115,9 @@ def run(deck, inputs, res):
                        first.loss)
         deg = ", ".join(f"{math.degrees(s.loss):.1f}" for s in found.separations[:6])
         res.warn(f"valve-train separation: the cam loses the follower {len(found.separations)} "
-                 f"times per revolution (at {deg} deg; shortest dwell "
-                 f"{math.degrees(dwell):.3g} deg); loads there are impacts, not a design load")
+                 f"times per revolution ({len(jumps)} while the valve is in flight; at {deg} "
+                 f"deg; shortest dwell {math.degrees(dwell):.3g} deg); loads there are impacts, "
+                 "not a design load")
     if found.seat_impacts:
         speeds = [s for _, s in found.seat_impacts]
         res.add_metric("seat_impacts", len(speeds), "-", "valve landings on the seat")

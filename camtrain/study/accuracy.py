@@ -34,7 +34,9 @@ KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max
                "film_at_zero_entrainment_1", "film_max",
                # engine decks: piston assembly and FLAME
                "piston_power_total", "ring_1_min_film_flooded", "inter_ring_pressure_1_peak",
-               "flame_total")
+               "flame_total",
+               # valve-train dynamics
+               "separation_angle")
 
 #: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
 BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
@@ -164,6 +166,18 @@ def _averaged_reynolds(raw: dict) -> bool:
     return _film_model(raw) == "averaged_reynolds"
 
 
+def _dynamics(raw: dict) -> bool:
+    return "dynamics" in raw
+
+
+def _spring_chain(raw: dict) -> bool:
+    return int(raw.get("dynamics", {}).get("spring_elements", 0)) > 0
+
+
+def _adaptive(raw: dict) -> bool:
+    return raw.get("dynamics", {}).get("integrator") in ("lsoda", "radau")
+
+
 KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
          lambda v: 1.0 / v, _valve_train,
@@ -222,6 +236,13 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
          lambda v: v, lambda raw: "piston" in raw,
          "iteration and cyclic tolerance of the inter-ring gas march"),
+    Knob("steps_per_degree", "dynamics.steps_per_degree", (2.0, 4.0, 8.0, 16.0, 32.0, 64.0),
+         lambda v: 1.0 / v, lambda raw: _dynamics(raw) and not _adaptive(raw),
+         "time steps per degree of cam of the valve-train dynamics"),
+    Knob("spring_elements", "dynamics.spring_elements", (4, 8, 16, 32), lambda v: 1.0 / v,
+         _spring_chain, "elements of the valve-spring chain (surge)", integer=True),
+    Knob("dynamics_rtol", "dynamics.rtol", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9), lambda v: v,
+         _adaptive, "relative tolerance of the adaptive dynamics integrator"),
 )}
 
 
