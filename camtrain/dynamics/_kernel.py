@@ -85,15 +85,14 @@ def _matrix(m, K, C, node, k, c, act, h):
 
 
 @njit(cache=True)
-def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv, u1, v1, a1):
-    """One Newmark step of length h from time tau of step n, contact state fixed."""
+def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv, u1, v1, a1,
+           pu, pv, rhs):
+    """One Newmark step of length h from time tau of step n, contact state fixed (pu, pv, rhs:
+    work arrays)."""
     size = m.size
-    pu = np.empty(size)
-    pv = np.empty(size)
     for i in range(size):
         pu[i] = u[i] + h * v[i] + 0.25 * h * h * a[i]
         pv[i] = v[i] + 0.5 * h * a[i]
-    rhs = np.empty(size)
     for i in range(size):
         s = f0[i]
         for q in range(size):
@@ -153,6 +152,9 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
     us = np.empty(size)
     vs = np.empty(size)
     as_ = np.empty(size)
+    pu = np.empty(size)
+    pv = np.empty(size)
+    rhs = np.empty(size)
     nev = 0
     work = 0.0
     cut = 0
@@ -165,7 +167,7 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                 break
             Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
             _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv,
-                   u1, v1, a1)
+                   u1, v1, a1, pu, pv, rhs)
             # which contact changes state first inside the (sub)step?
             first = -1
             alpha = 2.0
@@ -201,7 +203,7 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
             side = 0
             for _ in range(30):
                 _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, x * h, dt,
-                       empty, us, vs, as_)
+                       empty, us, vs, as_, pu, pv, rhs)
                 bj, bdj = _input(b, bd, first, n, tau + x * h, dt)
                 px = _psi(us, vs, first, node, k, c, off, bj, bdj)[0] - level
                 if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
