@@ -340,6 +340,40 @@ def film_pressures(ax, r, ctx):
 
 
 #: name -> (title, function); the order is the order on the sheets
+def dynamic_load(ax, r, ctx):
+    """The elastic train's contact load over the rigid train's (its quasi-static limit)."""
+    if not has(r, "load", "rigid_load"):
+        return False
+    _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
+    return _cycle(ax, r, ctx, ["load", "rigid_load"], ylabel="contact load", zero=True,
+                  labels={"load": "elastic train", "rigid_load": "rigid train"}, legend=True)
+
+
+def valve_motion(ax, r, ctx):
+    """Valve lift of the elastic train over the cam's (rigid) valve lift, and the follower."""
+    if "valve_lift_dynamic" not in r.columns:
+        return False
+    return _cycle(ax, r, ctx, ["valve_lift", "valve_lift_dynamic", "follower_lift"],
+                  ylabel="lift", labels={"valve_lift": "rigid (cam)",
+                                         "valve_lift_dynamic": "valve, elastic",
+                                         "follower_lift": "follower, elastic"}, legend=True)
+
+
+def valve_acceleration(ax, r, ctx):
+    return _cycle(ax, r, ctx, ["valve_acceleration", "follower_acceleration"],
+                  ylabel="acceleration", zero=True, legend=True,
+                  labels={"valve_acceleration": "valve", "follower_acceleration": "follower"})
+
+
+def spring_forces(ax, r, ctx):
+    """Spring force at the head and the retainer (they differ by surge) and the seat force."""
+    return _cycle(ax, r, ctx, ["spring_force", "spring_force_retainer", "seat_force"],
+                  ylabel="force", legend=True,
+                  labels={"spring_force": "spring at the head",
+                          "spring_force_retainer": "spring at the retainer",
+                          "seat_force": "valve seat"})
+
+
 PANELS = {
     "lift": ("Lift", lift),
     "velocity": ("Velocity", velocity),
@@ -359,4 +393,8 @@ PANELS = {
     "power": ("Frictional power loss", power),
     "transient_film": ("Transient film against the steady film", transient_film),
     "film_pressures": ("Film and asperity pressures", film_pressures),
+    "dynamic_load": ("Contact load: elastic and rigid train", dynamic_load),
+    "valve_motion": ("Valve and follower motion", valve_motion),
+    "valve_acceleration": ("Valve and follower acceleration", valve_acceleration),
+    "spring_forces": ("Spring and seat forces", spring_forces),
 }

@@ -29,6 +29,8 @@ SHEETS = {
                                                 "torque", "power"]),
     "transient_film": ("Transient film over the cycle", ["transient_film", "film_pressures"]),
     "profile": ("Cam profile and film around it", ["profile"]),
+    "dynamics": ("Valve-train dynamics", [
+        "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),
 }
 
 #: progress(label, done, total) after each file set is written
