@@ -116,6 +116,14 @@ PUBLISHED = {
                                      "supports or the belt: every such value is assumed (flagged "
                                      "in the deck), so there is no published number to compare; "
                                      "see docs/camshaft_dynamics.md.", []),
+    "zeta_intake_dynamics": ("The Zeta intake train made elastic (stiffness, damping and the "
+                             "adjuster load assumed, flagged in the deck): dynamic contact load "
+                             "against the rigid one, spring surge (8-element chain), valve "
+                             "seating. No source prints this train's dynamics; see "
+                             "docs/dynamics.md.", []),
+    "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
+                         "flagged in the deck): the valve clearance taken up on the ramp, "
+                         "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),
     "zeta_intake_camshaft": ("The whole Zeta intake camshaft: eight intake cams and five plain "
                              "bearings, 1500 rpm camshaft. camtrain's drive power is the "
                              "cycle mean of the summed lobe torques, which over a cycle is the "
@@ -237,7 +245,7 @@ SHOWN = [("max_lift", "maximum lift", "mm", 1e3),
          ("load_max", "largest contact load", "N", 1.0),
          ("bounce_speed", "valve-bounce camshaft speed", "rpm", 1.0)]
 
-SHEETS_SHOWN = ("contact", "friction")
+SHEETS_SHOWN = ("contact", "friction", "dynamics")
 
 #: a published comparison off by more than this [%] (or points) must carry its explanation
 RESIDUAL_LIMIT = 10.0
