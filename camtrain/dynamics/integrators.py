@@ -182,23 +182,34 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings) 
         previous = out[0].copy()
     u, v, a, f, events, work, cut = out
     # sample r is grid index (i0 + r + 1) % grid: roll into grid order
-    order = (np.arange(grid) - i0 - 1) % grid
     sample_t = (np.arange(grid) + 1) * dt * sub
-    th = base.angle(sample_t)[0]
     dyn_events = []
     for time, kind, speed in events:
         angle = theta0 + float(base.angle(np.array([time]))[0][0])
-        angle = math.pi - math.fmod(math.pi - angle, 2 * math.pi) if angle > math.pi \
-            or angle <= -math.pi else angle
         angle = (angle + math.pi) % (2 * math.pi) - math.pi
         dyn_events.append(DynamicEvent(EVENT_NAMES[(kind // 2, kind % 2)], angle, time, speed))
-    del th
-    cam_at = (b[sub::sub][order], bd[sub::sub][order], bdd[sub::sub][order])
-    return TrainResponse(theta=cam.theta, time=sample_t[order], u=u[:, order], v=v[:, order],
-                         a=a[:, order], contact_force=f[:, order], cam=cam_at,
-                         events=tuple(dyn_events), cycles=cycle, converged=change <=
-                         settings.period_tol, change=change, cam_work=work, steps=steps,
-                         integrator=settings.integrator, cut_switches=cut)
+    samples = {"time": sample_t[None, :], "u": u, "v": v, "a": a, "f": f,
+               "cam": np.vstack((b[sub::sub], bd[sub::sub], bdd[sub::sub]))}
+    if base.amplitude and base.order:
+        # samples are uniform in time, not in angle: carry them onto the grid angles
+        angle = theta0 + base.angle(sample_t)[0]
+        on_grid = {k: _to_grid(val, angle, cam.theta) for k, val in samples.items()}
+    else:
+        order = (np.arange(grid) - i0 - 1) % grid   # sample r is grid angle (i0 + r + 1) % grid
+        on_grid = {k: val[:, order] for k, val in samples.items()}
+    return TrainResponse(theta=cam.theta, time=on_grid["time"][0], u=on_grid["u"],
+                         v=on_grid["v"], a=on_grid["a"], contact_force=on_grid["f"],
+                         cam=tuple(on_grid["cam"]), events=tuple(dyn_events), cycles=cycle,
+                         converged=change <= settings.period_tol, change=change, cam_work=work,
+                         steps=steps, integrator=settings.integrator, cut_switches=cut)
+
+
+def _to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    """Rows sampled at increasing ``angle`` (one revolution) interpolated (linear, periodic) at
+    the grid angles ``theta``."""
+    wrapped = np.mod(angle - theta[0], 2.0 * math.pi)
+    return np.array([np.interp(theta - theta[0], wrapped, row, period=2.0 * math.pi)
+                     for row in rows])
 
 
 class _FixedStep:
