@@ -360,6 +360,8 @@ def valve_motion(ax, r, ctx):
 
 
 def valve_acceleration(ax, r, ctx):
+    if "valve_lift_dynamic" not in r.columns:   # the rigid train's kinematics have one too
+        return False
     return _cycle(ax, r, ctx, ["valve_acceleration", "follower_acceleration"],
                   ylabel="acceleration", zero=True, legend=True,
                   labels={"valve_acceleration": "valve", "follower_acceleration": "follower"})
@@ -367,6 +369,8 @@ def valve_acceleration(ax, r, ctx):
 
 def spring_forces(ax, r, ctx):
     """Spring force at the head and the retainer (they differ by surge) and the seat force."""
+    if "seat_force" not in r.columns:
+        return False
     return _cycle(ax, r, ctx, ["spring_force", "spring_force_retainer", "seat_force"],
                   ylabel="force", legend=True,
                   labels={"spring_force": "spring at the head",
