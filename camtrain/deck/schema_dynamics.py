@@ -26,7 +26,7 @@ class Dynamics:
     follower_mass: float = quantity(
         "Mass lumped at the cam side, referred to the valve (bucket; tappet + push rod x "
         "(D1/D2)^2 for a push-rod train); it is taken out of masses.valve_side, so the rigid "
-        "train keeps its total mass. 0 = one node (cam contact in series with the train)",
+        "train keeps its total mass. 0: one node (cam contact in series with the train)",
         "kg", default=0.0, ge=0, example=0.054)
     contact_stiffness: float = quantity(
         "Cam/follower contact stiffness (linear unilateral spring)", "N/mm", gt=0,
@@ -47,7 +47,7 @@ class Dynamics:
         "Valve seat stiffness (unilateral: the valve rests on it with the spring preload)",
         "N/mm", gt=0, example=2.0e5)
     damping_ratio: float = quantity(
-        "Damping ratio of the contact and of every element between masses (c = 2 zeta "
+        "Damping ratio of the contact and of every element between masses (c: 2 zeta "
         "sqrt(k m))", "-", default=0.05, ge=0, lt=1)
     seat_damping_ratio: float | None = quantity(
         "Damping ratio of the valve seat; omit for damping_ratio", "-", default=None, ge=0,
@@ -56,14 +56,14 @@ class Dynamics:
         "Damping ratio of the valve spring (single rate: on the valve node; chain: modal, "
         "first surge mode)", "-", default=0.02, ge=0, lt=1)
     spring_elements: int = quantity(
-        "Elements of the valve-spring chain (spring surge); 0 = a single rate with a third of "
+        "Elements of the valve-spring chain (spring surge); 0: a single rate with a third of "
         "the spring mass in masses.valve_side", "-", default=0, ge=0, le=256)
     spring_mass: float | None = quantity(
         "Mass of the valve spring (needed with spring_elements > 0; then masses.valve_side "
         "still holds a third of it, which the chain replaces)", "kg", default=None, gt=0,
         example=0.035)
     speed_oscillation: float = quantity(
-        "Amplitude of an oscillation of the camshaft speed (Williams 2013 App A6); 0 = "
+        "Amplitude of an oscillation of the camshaft speed (Williams 2013 App A6); 0: "
         "constant speed", "rpm", default=0.0, ge=0)
     speed_oscillation_order: int = quantity(
         "Order of the speed oscillation (cycles per camshaft revolution)", "-", default=2,
