@@ -1,0 +1,62 @@
+"""Result columns and metrics of an elastic camshaft's answer (used by the one-way and the
+coupled camshaft effects; not an effect itself)."""
+from __future__ import annotations
+
+import math
+
+#: a load order within this fraction of a natural frequency is reported as near resonance
+NEAR_RESONANCE = 0.1
+
+
+def add_shaft(res, shaft, answer, theta, orders: int, omega: float) -> None:
+    """Reactions per bearing with their orders, deflection and twist per lobe, the largest of
+    each, the first natural frequencies and a warning near resonance."""
+    import numpy as np
+
+    from camtrain.camshaft import harmonic_orders
+
+    bx, by = answer.bearing_x, answer.bearing_y
+    for i in range(bx.shape[0]):
+        comp, what = f"bearing_{i + 1}", f"bearing {i + 1}"
+        res.add_column("reaction_x", bx[i], "N", f"{what}: load from the shaft, x",
+                       component=comp)
+        res.add_column("reaction_y", by[i], "N", f"{what}: load from the shaft, y",
+                       component=comp)
+        mag = np.hypot(bx[i], by[i])
+        j = int(np.argmax(mag))
+        res.add_metric("reaction_max", mag[j], "N", f"{what}: largest load from the shaft",
+                       theta[j], component=comp)
+        hx, hy = harmonic_orders(bx[i]), harmonic_orders(by[i])
+        amplitude = np.hypot(hx.amplitude, hy.amplitude)
+        for n in range(1, min(orders, amplitude.size - 1) + 1):
+            res.add_metric(f"reaction_order_{n}", amplitude[n], "N",
+                           f"{what}: order {n} amplitude of the load vector", component=comp)
+    dx, dy, twist = answer.deflection_x, answer.deflection_y, answer.twist
+    for i in range(dx.shape[0]):
+        comp, what = f"lobe_{i + 1}", f"lobe {i + 1}"
+        res.add_column("deflection_x", dx[i], "m", f"{what}: shaft deflection, x",
+                       component=comp)
+        res.add_column("deflection_y", dy[i], "m", f"{what}: shaft deflection, y",
+                       component=comp)
+        res.add_column("twist", twist[i], "rad",
+                       f"{what}: twist against the drive (positive with the rotation)",
+                       component=comp)
+    defl = np.hypot(dx, dy)
+    i, j = np.unravel_index(int(np.argmax(defl)), defl.shape)
+    res.add_metric("shaft_deflection_max", defl[i, j], "m",
+                   f"largest shaft deflection at a lobe (lobe {i + 1})", theta[j])
+    i, j = np.unravel_index(int(np.argmax(np.abs(twist))), twist.shape)
+    res.add_metric("shaft_twist_max", abs(twist[i, j]), "rad",
+                   f"largest twist of a lobe against the drive (lobe {i + 1})", theta[j])
+    bending = float(shaft.beam.natural_frequencies(1)[0])
+    twisting = float(shaft.torsion.natural_frequencies()[0])
+    res.add_metric("shaft_bending_frequency_1", bending / (2.0 * math.pi), "Hz",
+                   "first bending natural frequency of the camshaft")
+    res.add_metric("shaft_torsion_frequency_1", twisting / (2.0 * math.pi), "Hz",
+                   "first torsional natural frequency of the camshaft")
+    for name, w in (("bending", bending), ("torsional", twisting)):
+        near = [k for k in range(1, orders + 1)
+                if omega > 0 and abs(k * omega - w) < NEAR_RESONANCE * w]
+        if near:
+            res.warn(f"camshaft: load order(s) {near} within {NEAR_RESONANCE:.0%} of the first "
+                     f"{name} natural frequency ({w / (2 * math.pi):.0f} Hz): resonant shaft")
