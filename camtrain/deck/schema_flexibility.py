@@ -55,6 +55,23 @@ class CamshaftFlexibility:
     response: Literal["dynamic", "quasi_static"] = option(
         "dynamic: inertia and damping at every order; quasi_static: a static shaft at every "
         "angle", default="dynamic")
+    coupling: Literal["one_way", "two_way"] = option(
+        "one_way: the shaft answers the loads of the deck's train; two_way (needs [dynamics]): "
+        "every lobe drives its own elastic train, whose cam input the shaft's motion changes, "
+        "iterated with the shaft to a common periodic state (converges for a shaft stiff "
+        "against the cam contact; docs/camshaft_dynamics.md)", default="one_way")
+    coupling_tolerance: float = quantity(
+        "Relative change of the lobes' motion (displacement, twist) between two passes of the "
+        "shaft/train iteration that counts as converged", "-", default=1e-4, gt=0, lt=0.1)
+    coupling_passes: int = quantity("Most passes of the shaft/train iteration", "-", default=30,
+                                    ge=1, le=500)
+    coupling_method: Literal["quasi_newton", "aitken", "fixed"] = option(
+        "Acceleration of the shaft/train iteration: quasi_newton (IQN-ILS, least-squares "
+        "inverse Jacobian), aitken (adaptive relaxation) or fixed (constant relaxation)",
+        default="quasi_newton")
+    relaxation: float = quantity(
+        "Relaxation of the lobe loads in the first pass of the shaft/train iteration; later "
+        "passes adapt it (Aitken)", "-", default=0.5, gt=0, le=1)
     nodes_per_span: int = quantity(
         "Extra stations between neighbouring bearing, lobe and drive stations (resolution)", "-",
         default=2, ge=0, le=50)

@@ -11,7 +11,19 @@ a block Gauss-Seidel iteration between the two (a staggered, or partitioned, sol
 2. each train is marched to its periodic state with the cam input
    b_j = l(theta) + R(theta) p_j + l'(theta) phi_j  (valve-referred: R the rocker ratio, l' the
    valve lift per cam radian; a twist phi advances the lobe by phi, so it lifts l(theta + phi));
-3. the new loads, under-relaxed, go back to the shaft, until the loads of two passes agree.
+3. the trains' loads go back to the shaft, until the lobes' motion of two passes agrees (the
+   motion, not the loads, is the unknown: see :func:`staggered`).
+
+A stiff contact on a compliant shaft makes the plain iteration diverge (its loop gain, the
+contact stiffness over the shaft's, exceeds 1). Two accelerations are offered (``method``):
+
+* ``quasi_newton`` (default): the interface quasi-Newton method with an inverse Jacobian from
+  least squares (IQN-ILS, Degroote, Bathe and Vierendeels 2009), the standard of partitioned
+  fluid-structure solvers: from the differences of the residuals r = H(x) - x and of the outputs
+  H(x) of the passes so far, c = argmin |V c + r_k| and x_(k+1) = H(x_k) + W c.
+* ``aitken``: relaxation adapted every pass by Aitken's Delta^2 rule (Irons and Tuck 1969),
+  w_k = -w_(k-1) r_(k-1).(r_k - r_(k-1)) / |r_k - r_(k-1)|^2, kept in [w_min, 1]; enough for a
+  loop gain near 1.
 
 A stiff shaft makes p and phi vanish and returns every train's single-train solution (the limit
 the tests hold). The functions here take callables for the two halves, so neither knows the
@@ -25,17 +37,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["CoupledState", "staggered", "periodic_derivatives", "lobe_input_perturbation"]
+#: accelerations of the staggered iteration (module notes)
+COUPLING_METHODS = ("quasi_newton", "aitken", "fixed")
+
+__all__ = ["COUPLING_METHODS", "CoupledState", "staggered", "periodic_derivatives", "lobe_input_perturbation"]
 
 
 @dataclass(frozen=True)
 class CoupledState:
-    """The converged coupling: each lobe's contact load in the shaft's angle frame
-    (n_lobes, n) [N], the shaft's last answer (whatever ``solve_shaft`` returned), passes made,
-    the relative load change of the last pass and of every pass (``history``)."""
+    """The converged interface: the lobes' motion ``motion`` (what the shaft hands the trains,
+    e.g. displacement along the follower axis and twist per lobe, rows scaled alike), passes
+    made, the relative change of the last pass and of every pass (``history``)."""
 
-    loads: np.ndarray
-    shaft: object
+    motion: np.ndarray
     iterations: int
     change: float
     converged: bool
@@ -64,34 +78,59 @@ def lobe_input_perturbation(displacement, twist, ratio, valve_d1):
     return delta, d1, d2
 
 
-def staggered(solve_shaft: Callable[[np.ndarray], object],
-              solve_trains: Callable[[object], np.ndarray], initial_loads: np.ndarray, *,
-              tol: float = 1e-4, max_iterations: int = 30, relaxation: float = 1.0
-              ) -> CoupledState:
-    """Block Gauss-Seidel between the shaft and the trains (module notes).
+def staggered(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *,
+              tol: float = 1e-4, max_iterations: int = 30, relaxation: float = 0.5,
+              method: str = "quasi_newton", min_relaxation: float = 1e-3) -> CoupledState:
+    """Fixed point x = H(x) of the shaft/train pass H (module notes).
+
+    The interface unknown is the lobes' motion, not their loads: the shaft filters it, so it is
+    smooth, while a contact load carries the impacts of separations, whose timing moves a
+    little between passes. ``operator`` runs the trains under the motion x and returns the
+    shaft's motion under their loads; ``start`` is e.g. the shaft's motion under the
+    single-train loads. The change of a pass is max|H(x) - x| / max|H(x)| per row block; the
+    rows are scaled by the caller.
 
     Args:
-        solve_shaft: loads (n_lobes, n) -> the shaft's answer (passed on to ``solve_trains``).
-        solve_trains: the shaft's answer -> the trains' new loads (n_lobes, n) [N].
-        initial_loads: loads to start from (e.g. the single-train solution on every lobe).
-        tol: relative change of the loads between passes (max norm over the largest load).
+        tol: relative change that counts as converged.
         max_iterations: passes at most.
-        relaxation: under-relaxation factor in (0, 1] of the load update.
+        relaxation: relaxation factor in (0, 1] of the first update (of every update for
+            ``method = "fixed"``).
+        method: ``quasi_newton``, ``aitken`` or ``fixed`` (module notes).
+        min_relaxation: smallest factor Aitken's rule may take.
     """
+    if method not in COUPLING_METHODS:
+        raise ValueError(f"unknown coupling method {method!r}")
     if not 0.0 < relaxation <= 1.0:
         raise ValueError(f"relaxation must be in (0, 1], not {relaxation}")
-    loads = np.asarray(initial_loads, dtype=float)
+    x = np.asarray(start, dtype=float)
     history = []
     change = math.inf
-    shaft = None
+    w = float(relaxation)
+    previous = None
+    residuals, outputs = [], []
     for it in range(1, int(max_iterations) + 1):
-        shaft = solve_shaft(loads)
-        new = np.asarray(solve_trains(shaft), dtype=float)
+        new = np.asarray(operator(x), dtype=float)
+        residual = new - x
         scale = max(float(np.max(np.abs(new))), 1e-300)
-        change = float(np.max(np.abs(new - loads))) / scale
+        change = float(np.max(np.abs(residual))) / scale
         history.append(change)
-        loads = loads + relaxation * (new - loads)
         if change <= tol:
-            shaft = solve_shaft(loads)
-            return CoupledState(loads, shaft, it, change, True, tuple(history))
-    return CoupledState(loads, shaft, int(max_iterations), change, False, tuple(history))
+            return CoupledState(new, it, change, True, tuple(history))
+        if method == "quasi_newton":
+            residuals.append(residual.ravel())
+            outputs.append(new.ravel())
+            if len(residuals) > 1:
+                V = np.column_stack([residuals[-1] - r for r in residuals[:-1]])
+                W = np.column_stack([outputs[-1] - o for o in outputs[:-1]])
+                c = np.linalg.lstsq(V, -residuals[-1], rcond=None)[0]
+                x = (new.ravel() + W @ c).reshape(x.shape)
+                continue
+        elif method == "aitken" and previous is not None:
+            step = (residual - previous).ravel()
+            denom = float(step @ step)
+            if denom > 0.0:
+                w = -w * float(previous.ravel() @ step) / denom
+                w = min(max(w, min_relaxation), 1.0)
+        previous = residual
+        x = x + w * residual
+    return CoupledState(x, int(max_iterations), change, False, tuple(history))

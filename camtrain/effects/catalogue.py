@@ -95,6 +95,11 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "elastic camshaft: bending in two planes and torsion under the lobe and drive "
                "loads, bearing reactions, deflections and twist per lobe, orders",
                needs=("CamshaftLoads",), produces=("ElasticCamshaft",)),
+    EffectSpec("camshaft_coupled", "camtrain.effects.camshaft_coupled",
+               "every lobe's elastic valve train on the elastic camshaft, iterated to one "
+               "periodic state: lobe loads, bearing reactions, deflections, twist",
+               needs=("TrainKinematics", "ContactLoad", "CamshaftLoads"),
+               produces=("ElasticCamshaft",), rank=1),
     EffectSpec("bearings", "camtrain.effects.bearings",
                "camshaft bearings: lobe and drive forces split as beams (or by the elastic "
                "shaft), journal orbits (Booker mobility), minimum film and power",

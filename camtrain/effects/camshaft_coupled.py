@@ -1,0 +1,153 @@
+"""Coupled camshaft effect: every lobe's elastic valve train on the elastic camshaft, iterated to
+one periodic state (Teodorescu et al. 2005 §2.6, §4; the iteration in
+:mod:`camtrain.dynamics.coupling`).
+
+Each lobe drives its own copy of the deck's elastic train ([dynamics]), phased by its angle of
+maximum lift; the shaft ([camshaft.flexibility]) answers all their contact forces, friction
+(the deck's contact model: film and friction law at every angle of every lobe) and torques
+with its bending and twist; the motion of each lobe along its follower axis and its twist
+change that train's cam input. The result replaces the one-way elastic shaft (rank 1 for
+``ElasticCamshaft``): the bearings run on its loads.
+"""
+from __future__ import annotations
+
+MODEL = "elastic trains on the elastic camshaft, coupled"
+
+
+def missing(deck) -> list[str]:
+    cs = deck.camshaft
+    out = []
+    if cs is None or cs.flexibility is None:
+        out.append("[camshaft.flexibility] section")
+    elif cs.flexibility.coupling != "two_way":
+        out.append('camshaft.flexibility.coupling = "two_way"')
+    if cs is not None and not cs.bearings:
+        out.append("[[camshaft.bearings]]")
+    if getattr(deck, "dynamics", None) is None:
+        out.append("[dynamics] section (the elastic train of every lobe)")
+    return out
+
+
+def reason(deck, planned) -> str:
+    cs = deck.camshaft
+    lobes = sum(1 for lobe in cs.lobes if lobe.bank == 1)
+    return (f"[dynamics] and [camshaft.flexibility] given (coupling two_way): {lobes} elastic "
+            f"trains on the elastic shaft, iterated to tolerance "
+            f"{cs.flexibility.coupling_tolerance:g}")
+
+
+def run(deck, inputs, res):
+    import math
+
+    import numpy as np
+
+    from camtrain.build.dynamics import setup
+    from camtrain.build.shaft import answer, shaft_from_deck
+    from camtrain.camshaft import lobe_force, shift_curve
+    from camtrain.camshaft.product import CamshaftLoads
+    from camtrain.contact.model import CamContact
+    from camtrain.dynamics import CamInput, march
+    from camtrain.dynamics.coupling import lobe_input_perturbation, staggered
+    from camtrain.dynamics.findings import findings
+    from camtrain.effects.shaft_output import add_shaft
+    from camtrain.formulas import cam_torque
+    from camtrain.loads import ContactLoad
+    from camtrain.mechanisms import TrainKinematics
+
+    cs, f = deck.camshaft, deck.camshaft.flexibility
+    kin = inputs[TrainKinematics].main
+    single = inputs[ContactLoad].load
+    shaft_loads = inputs[CamshaftLoads]
+    lobes = [lobe for lobe in cs.lobes if lobe.bank == 1]
+    gammas = [lobe.max_lift_angle for lobe in lobes]
+    axes = np.array([lobe.follower_axis_angle for lobe in lobes])
+    theta = res["cam_angle"]
+    omega = abs(deck.speed.omega)
+    turn = 1.0 if cs.rotation == "anticlockwise" else -1.0
+    run_setup = setup(deck, kin)
+    cam = run_setup.cam
+    ratio = np.asarray(kin.rocker_ratio, dtype=float) * np.ones_like(theta)
+    contact = CamContact.from_deck(deck)
+    shaft = shaft_from_deck(deck, shaft_loads.lobe_positions)
+    arm_sign = np.sign(np.where(kin.friction_arm == 0, 1.0, kin.friction_arm))
+    responses = [None] * len(lobes)
+
+    def lobe_loads(loads):
+        """Forces and torques on the shaft of every lobe from its load (shaft frame)."""
+        forces, torques = [], []
+        for j, g in enumerate(gammas):
+            w = np.maximum(shift_curve(loads[j], -g), 0.0)  # the lobe's own angle frame
+            fr = contact.solve(kin, w).force
+            torque = cam_torque(w, kin.torque_arm_normal, fr, kin.friction_arm)
+            forces.append(lobe_force(shift_curve(w, g), shift_curve(-turn * fr * arm_sign, g),
+                                     axes[j]))
+            torques.append(shift_curve(np.asarray(torque, dtype=float), g))
+        return forces, np.array(torques)
+
+    def solve_shaft(loads):
+        forces, torques = lobe_loads(loads)
+        return answer(deck, shaft, forces, torques, torques.sum(axis=0), omega, theta)
+
+    def solve_trains(along, twist):
+        new = []
+        for j, g in enumerate(gammas):
+            delta, d1, d2 = lobe_input_perturbation(shift_curve(along[j], -g),
+                                                    shift_curve(twist[j], -g), ratio,
+                                                    kin.valve_d1)
+            moved = CamInput(cam.theta, cam.lift + delta, cam.d1 + d1, cam.d2 + d2)
+            responses[j] = march(run_setup.model, moved, run_setup.base, run_setup.settings)
+            new.append(shift_curve(responses[j].contact_force[0] * ratio, g))
+        return np.array(new)
+
+    def motion(out):
+        """Each lobe's displacement along its follower axis [m] and its twist [rad]."""
+        along = (out.deflection_x * np.cos(axes)[:, None]
+                 + out.deflection_y * np.sin(axes)[:, None])
+        return along, out.twist
+
+    n = len(lobes)
+    start = np.array([shift_curve(np.maximum(single, 0.0), g) for g in gammas])
+    along0, twist0 = motion(solve_shaft(start))
+    # rows scaled so a pass's change weighs displacement and twist alike
+    scale = np.array([max(float(np.max(np.abs(along0))), 1e-15),
+                      max(float(np.max(np.abs(twist0))), 1e-15)])
+
+    def one_pass(x):
+        loads = solve_trains(x[:n] * scale[0], x[n:] * scale[1])
+        along, twist = motion(solve_shaft(loads))
+        return np.vstack([along / scale[0], twist / scale[1]])
+
+    state = staggered(one_pass, np.vstack([along0 / scale[0], twist0 / scale[1]]),
+                      tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
+                      relaxation=f.relaxation, method=f.coupling_method)
+    loads = solve_trains(state.motion[:n] * scale[0], state.motion[n:] * scale[1])
+    out = solve_shaft(loads)
+    add_shaft(res, shaft, out, theta, cs.orders, omega)
+    for j, g in enumerate(gammas):
+        comp = f"lobe_{j + 1}"
+        load = loads[j]
+        res.add_column("load", load, "N", f"lobe {j + 1}: contact load of its elastic train on "
+                       "the elastic shaft", component=comp)
+        resp = responses[j]
+        res.add_column("valve_acceleration", shift_curve(resp.a[run_setup.model.valve], g),
+                       "m/s^2", f"lobe {j + 1}: valve acceleration", component=comp)
+        i = int(np.argmax(load))
+        res.add_metric("load_max", load[i], "N", f"lobe {j + 1}: largest contact load",
+                       theta[i], component=comp)
+        seps = findings(resp).separations
+        res.add_metric("separations", len(seps), "-",
+                       f"lobe {j + 1}: separations of the cam contact", component=comp)
+        for s in seps:
+            res.add_event("contact_loss", math.remainder(s.loss + g, 2 * math.pi),
+                          f"lobe {j + 1}: the cam loses the follower", component=comp)
+    summed = loads.sum(axis=0)
+    res.add_column("camshaft_load_sum", summed, "N", "sum of the lobes' contact loads")
+    res.add_metric("coupling_passes", state.iterations, "-",
+                   "passes of the shaft/train iteration")
+    res.add_metric("coupling_change", state.change, "-",
+                   "relative change of the lobes' motion in the last pass")
+    if not state.converged:
+        res.warn(f"camshaft coupling: no common periodic state after {state.iterations} passes "
+                 f"(last change {state.change:.3g} > {f.coupling_tolerance:g}); the loads are the "
+                 "last pass's")
+    return out

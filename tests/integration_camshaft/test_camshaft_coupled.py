@@ -1,0 +1,75 @@
+"""Every lobe's elastic valve train on the elastic camshaft ([dynamics] + [camshaft.flexibility]
+with coupling = "two_way"): the plan, and the stiff-shaft limit in which each train is the
+single-train dynamic solution (Teodorescu et al. 2005 §4; issue: within 0.5 % of the peak)."""
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from camtrain import api
+from camtrain.camshaft import shift_curve
+from camtrain.deck.load import validate
+from camtrain.scene import resolve
+
+DECKS = Path(__file__).resolve().parents[2] / "decks"
+
+
+def coupled_raw(scale: float = 1.0, coupling: str = "two_way") -> dict:
+    """The Zeta intake dynamics deck on the elastic Zeta camshaft, one lobe per cylinder,
+    shaft, supports and belt stiffened by ``scale``; Petroff bearings, 360 angles."""
+    raw = tomllib.loads((DECKS / "zeta_intake_dynamics.toml").read_text("utf-8"))
+    shaft = tomllib.loads((DECKS / "zeta_intake_camshaft_elastic.toml").read_text("utf-8"))
+    cs = shaft["camshaft"]
+    cs["lobes"] = cs["lobes"][::2]
+    cs["method"] = "petroff"
+    f = cs["flexibility"]
+    for key in ("modulus", "shear_modulus", "bearing_stiffness", "drive_stiffness"):
+        f[key] *= scale
+    f["coupling"] = coupling
+    raw["camshaft"] = cs
+    raw.setdefault("solver", {})["angle_points"] = 360
+    return raw
+
+
+@pytest.fixture(scope="module")
+def stiff():
+    model = validate(coupled_raw(1e3), "coupled", DECKS)
+    return model, api.run(model)
+
+
+@pytest.mark.derived
+def test_stiff_shaft_gives_every_train_its_single_train_solution(stiff):
+    model, r = stiff
+    assert r.metrics["coupling_change"].value <= model.camshaft.flexibility.coupling_tolerance
+    single = r["load"]  # the deck's own train, dynamic (the dynamics effect)
+    peak = float(np.max(single))
+    for j, lobe in enumerate(model.camshaft.lobes):
+        lobe_load = r.component(f"lobe_{j + 1}")["load"]
+        expected = shift_curve(single, lobe.max_lift_angle)
+        assert np.max(np.abs(lobe_load - expected)) < 5e-3 * peak
+
+
+def test_plan_runs_the_coupled_trains_only_when_asked(stiff):
+    model, _ = stiff
+    steps = {s.effect: s for s in resolve(model).steps}
+    assert steps["camshaft_coupled"].chosen
+    assert "chosen over camshaft_elastic" in steps["camshaft_coupled"].reason
+    assert "loads from the elastic camshaft" in steps["bearings"].reason
+    one_way = validate(coupled_raw(1e3, "one_way"), "one_way", DECKS)
+    steps = {s.effect: s for s in resolve(one_way).steps}
+    assert not steps["camshaft_coupled"].chosen
+    assert 'coupling = "two_way"' in steps["camshaft_coupled"].reason
+    assert steps["camshaft_elastic"].chosen
+
+
+def test_coupled_outputs_per_lobe(stiff):
+    model, r = stiff
+    for j in range(len(model.camshaft.lobes)):
+        comp = r.component(f"lobe_{j + 1}")
+        assert comp["load"].shape == r["cam_angle"].shape
+        assert comp["valve_acceleration"].shape == r["cam_angle"].shape
+        assert f"lobe_{j + 1}_load_max" in r.metrics
+    assert r.metrics["coupling_passes"].value >= 1
