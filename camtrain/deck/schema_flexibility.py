@@ -65,6 +65,9 @@ class CamshaftFlexibility:
         "shaft/train iteration that counts as converged", "-", default=1e-4, gt=0, lt=0.1)
     coupling_passes: int = quantity("Most passes of the shaft/train iteration", "-", default=30,
                                     ge=1, le=500)
+    coupling_solver: Literal["monolithic", "staggered"] = option(
+        "two_way coupling: monolithic (trains and shaft marched together in time) or staggered "
+        "(trains and shaft solved in turn to a common periodic state)", default="monolithic")
     coupling_method: Literal["quasi_newton", "aitken", "fixed"] = option(
         "Acceleration of the shaft/train iteration: quasi_newton (IQN-ILS, least-squares "
         "inverse Jacobian), aitken (adaptive relaxation) or fixed (constant relaxation)",

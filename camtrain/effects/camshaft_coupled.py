@@ -117,6 +117,9 @@ def run(deck, inputs, res):
         along, twist = motion(solve_shaft(loads))
         return np.vstack([along / scale[0], twist / scale[1]])
 
+    if f.coupling_solver == "monolithic":
+        return _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, turn,
+                           contact, omega, theta)
     state = staggered(one_pass, np.vstack([along0 / scale[0], twist0 / scale[1]]),
                       tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
                       relaxation=f.relaxation, method=f.coupling_method)
@@ -150,4 +153,70 @@ def run(deck, inputs, res):
         res.warn(f"camshaft coupling: no common periodic state after {state.iterations} passes "
                  f"(last change {state.change:.3g} > {f.coupling_tolerance:g}); the loads are the "
                  "last pass's")
+    return out
+
+
+def _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, turn, contact,
+                omega, theta):
+    """Every train and the shaft marched together (camtrain.dynamics.monolithic)."""
+    import numpy as np
+
+    from camtrain.build.shaft import answer
+    from camtrain.camshaft import lobe_force, shift_curve
+    from camtrain.dynamics.monolithic import march_coupled
+    from camtrain.effects.shaft_output import add_shaft
+    from camtrain.formulas import cam_torque
+
+    cs, f = deck.camshaft, deck.camshaft.flexibility
+    arm_sign = np.sign(np.where(kin.friction_arm == 0, 1.0, kin.friction_arm))
+
+    def own_frame(loads):
+        """Cam-level loads of every lobe in its own angle frame."""
+        return [np.maximum(shift_curve(loads[j] * 1.0, -g), 0.0) * ratio
+                for j, g in enumerate(gammas)]
+
+    def friction(loads):
+        mu = []
+        for j, w in enumerate(own_frame(loads)):
+            force = contact.solve(kin, w).force
+            coefficient = np.divide(force, w, out=np.zeros_like(w), where=w > 0)
+            mu.append(shift_curve(coefficient, gammas[j]))
+        return np.array(mu)
+
+    sub = run_setup.settings.substeps
+    result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, np.radians(0) + axes,
+                           np.asarray(gammas), omega, substeps=sub, friction=friction,
+                           friction_arm=kin.friction_arm, turn=turn,
+                           cycles_max=run_setup.settings.cycles_max,
+                           period_tol=f.coupling_tolerance)
+    forces, torques, loads = [], [], []
+    for j, (g, w) in enumerate(zip(gammas, own_frame(result.loads), strict=True)):
+        fr = contact.solve(kin, w).force
+        torque = cam_torque(w, kin.torque_arm_normal, fr, kin.friction_arm)
+        forces.append(lobe_force(shift_curve(w, g), shift_curve(-turn * fr * arm_sign, g),
+                                 axes[j]))
+        torques.append(shift_curve(np.asarray(torque, dtype=float), g))
+        loads.append(shift_curve(w, g))
+    torques = np.array(torques)
+    out = answer(deck, shaft, forces, torques, torques.sum(axis=0), omega, theta)
+    add_shaft(res, shaft, out, theta, cs.orders, omega)
+    for j in range(len(lobes)):
+        comp = f"lobe_{j + 1}"
+        res.add_column("load", loads[j], "N", f"lobe {j + 1}: contact load of its elastic train "
+                       "on the elastic shaft (monolithic march)", component=comp)
+        res.add_column("valve_acceleration", result.valve_acceleration[j], "m/s^2",
+                       f"lobe {j + 1}: valve acceleration", component=comp)
+        i = int(np.argmax(loads[j]))
+        res.add_metric("load_max", loads[j][i], "N", f"lobe {j + 1}: largest contact load",
+                       theta[i], component=comp)
+    res.add_column("camshaft_load_sum", np.sum(loads, axis=0), "N",
+                   "sum of the lobes' contact loads")
+    res.add_metric("coupling_passes", result.cycles, "-",
+                   "revolutions of the monolithic march")
+    res.add_metric("coupling_change", result.change, "-",
+                   "relative change of the lobe loads between the last two revolutions")
+    if not result.converged:
+        res.warn(f"camshaft coupling: no periodic state after {result.cycles} revolutions "
+                 f"(last change {result.change:.3g} > {f.coupling_tolerance:g}); results are the "
+                 "last revolution")
     return out
