@@ -17,7 +17,7 @@ from camtrain.scene import resolve
 DECKS = Path(__file__).resolve().parents[2] / "decks"
 
 
-def coupled_raw(scale: float = 1.0, coupling: str = "two_way") -> dict:
+def coupled_raw(scale: float = 1.0, coupling: str = "two_way", solver: str = "staggered") -> dict:
     """The Zeta intake dynamics deck on the elastic Zeta camshaft, one lobe per cylinder,
     shaft, supports and belt stiffened by ``scale``; Petroff bearings, 360 angles."""
     raw = tomllib.loads((DECKS / "zeta_intake_dynamics.toml").read_text("utf-8"))
@@ -29,19 +29,21 @@ def coupled_raw(scale: float = 1.0, coupling: str = "two_way") -> dict:
     for key in ("modulus", "shear_modulus", "bearing_stiffness", "drive_stiffness"):
         f[key] *= scale
     f["coupling"] = coupling
+    f["coupling_solver"] = solver
     raw["camshaft"] = cs
     raw.setdefault("solver", {})["angle_points"] = 360
     return raw
 
 
-@pytest.fixture(scope="module")
-def stiff():
-    model = validate(coupled_raw(1e3), "coupled", DECKS)
+@pytest.fixture(scope="module", params=["staggered", "monolithic"])
+def stiff(request):
+    model = validate(coupled_raw(1e3, solver=request.param), "coupled", DECKS)
     return model, api.run(model)
 
 
 @pytest.mark.derived
 def test_stiff_shaft_gives_every_train_its_single_train_solution(stiff):
+    """Both solvers; the monolithic march's shaft and trains share one Newmark time step."""
     model, r = stiff
     assert r.metrics["coupling_change"].value <= model.camshaft.flexibility.coupling_tolerance
     single = r["load"]  # the deck's own train, dynamic (the dynamics effect)
@@ -73,3 +75,25 @@ def test_coupled_outputs_per_lobe(stiff):
         assert comp["valve_acceleration"].shape == r["cam_angle"].shape
         assert f"lobe_{j + 1}_load_max" in r.metrics
     assert r.metrics["coupling_passes"].value >= 1
+
+
+@pytest.mark.derived
+def test_monolithic_and_staggered_agree_on_an_elastic_shaft():
+    """x10 the assumed shaft (lobes move about 0.7 um): both solvers reach a periodic state and
+    every lobe's peak load agrees within 1 %. (The load curves differ by up to 4 % of the peak
+    at the separation impacts, and that difference does not fall with the step:
+    docs/camshaft_dynamics.md.)"""
+    runs = {solver: api.run(validate(coupled_raw(10.0, solver=solver), solver, DECKS))
+            for solver in ("monolithic", "staggered")}
+    for r in runs.values():
+        assert r.metrics["coupling_change"].value <= 1e-4
+    for j in range(1, 5):
+        peaks = [r.metrics[f"lobe_{j}_load_max"].value for r in runs.values()]
+        assert abs(peaks[0] - peaks[1]) < 0.01 * max(peaks)
+
+
+def test_monolithic_converges_where_the_staggered_iteration_does_not():
+    """The assumed Zeta shaft itself (lobes move ten times the contact's deflection)."""
+    r = api.run(validate(coupled_raw(1.0, solver="monolithic"), "soft", DECKS))
+    assert r.metrics["coupling_change"].value <= 1e-4
+    assert not any("no periodic state" in w for w in r.warnings)
