@@ -124,6 +124,11 @@ PUBLISHED = {
     "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
                          "flagged in the deck): the valve clearance taken up on the ramp, "
                          "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),
+    "zeta_intake_camshaft_coupled": ("Teodorescu's multi-valve model on the Zeta intake camshaft: "
+                                     "the eight elastic intake trains on the elastic shaft, "
+                                     "marched together. Every train, shaft, support and belt "
+                                     "stiffness is assumed (flagged in the deck): no published "
+                                     "number to compare; see docs/camshaft_dynamics.md.", []),
     "zeta_intake_camshaft": ("The whole Zeta intake camshaft: eight intake cams and five plain "
                              "bearings, 1500 rpm camshaft. camtrain's drive power is the "
                              "cycle mean of the summed lobe torques, which over a cycle is the "

@@ -15,16 +15,20 @@ def _gradient_dot(coef, z, ix, iy, iphi, ifol, ival, j):
 
 
 @njit(cache=True)
-def revolution(q, v, acc, w_prev, x_f0, P, Q, ainv_basis, b, bd, gx, gy, gphi, fric_mu, arm,
+def revolution(q, v, acc, w_prev, x_f0, P, Q, blocks, ainv_basis, b, bd, gx, gy, gphi, fric_mu, arm,
                ratio, cosa, sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi,
                ifol, ival, valve_dof, substeps, out_load, out_acc):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
-    steps) into ``out_load``/``out_acc`` (n_lobes x grid). State arrays are updated in place."""
+    steps) into ``out_load``/``out_acc`` (n_lobes x grid). State arrays are updated in place.
+    ``P`` = A^-1 M and ``Q`` = A^-1 C are block diagonal (shaft planes, twist, each train):
+    ``blocks`` holds the block boundaries, so only the diagonal blocks are multiplied."""
     n = q.size
     lobes = ix.size
     steps = b.shape[1]
     grid = out_load.shape[1]
     rhs_w = np.empty(n)
+    rhs_c = np.empty(n)
+    base = np.empty(n)
     x0 = np.empty(n)
     x = np.empty(n)
     coef = np.zeros((2 * lobes, 5))
@@ -37,10 +41,14 @@ def revolution(q, v, acc, w_prev, x_f0, P, Q, ainv_basis, b, bd, gx, gy, gphi, f
         # the linear part's step from the state (P = A^-1 M, Q = A^-1 C)
         for i in range(n):
             rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
-        base = x_f0 + P @ rhs_w
-        for i in range(n):
-            rhs_w[i] = a1 * q[i] + v[i]
-        base = base + Q @ rhs_w
+            rhs_c[i] = a1 * q[i] + v[i]
+        for k in range(blocks.size - 1):
+            lo, hi = blocks[k], blocks[k + 1]
+            for i in range(lo, hi):
+                total = x_f0[i]
+                for e in range(lo, hi):
+                    total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
+                base[i] = total
         # constant contact forces and friction enter through A^-1 of the basis vectors
         for j in range(lobes):
             fr = fric_mu[j, s] * ratio[j, s] * w_prev[j]

@@ -128,6 +128,9 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     a0, a1 = 4.0 / dt ** 2, 2.0 / dt
     Ainv = np.linalg.inv(K + a1 * C + a0 * M)
     P, Q, x_f0 = Ainv @ M, Ainv @ C, Ainv @ f0
+    # the linear part is block diagonal: both bending planes, the twist, each train
+    blocks = np.array([0, nb, 2 * nb, tr0] + [tr0 + (j + 1) * nt for j in range(n_lobes)],
+                      dtype=np.int64)
     # A^-1 of every basis vector a contact gradient is made of: (x, y, phi, follower, valve)
     ainv_basis = np.empty((n, 5 * n_lobes))
     for j in range(n_lobes):
@@ -148,7 +151,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     valve_acc = np.zeros((n_lobes, grid))
     previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
-        revolution(q, v, acc, w_prev, x_f0, P, Q, ainv_basis, lift, d1 * omega, gx, gy, d1, mu,
+        revolution(q, v, acc, w_prev, x_f0, P, Q, blocks, ainv_basis, lift, d1 * omega, gx, gy, d1, mu,
                    arm, r, cosa, sina, float(turn), kc, cc, ks, cs_, offc, offs, a0, a1, dt,
                    ix, iy, iphi, ifol, ival, valve_dof, int(substeps), loads, valve_acc)
         if friction is not None:  # the coefficient on this revolution's loads, for the next
