@@ -15,9 +15,13 @@ from camtrain import __version__
 from camtrain.report import profile
 from camtrain.report.findings import Findings, find
 from camtrain.report.header import header_rows, title_line
-from camtrain.report.panels import PANELS, Ctx
+from camtrain.report.panels import PANELS as CYCLE_PANELS
+from camtrain.report.panels import Ctx
+from camtrain.report.panels_shaft import SHAFT_PANELS
 from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
 from camtrain.result import Result
+
+PANELS = {**CYCLE_PANELS, **SHAFT_PANELS}
 
 #: name -> (heading, panels); "profile" is the cam drawn to scale
 SHEETS = {
@@ -31,6 +35,8 @@ SHEETS = {
     "profile": ("Cam profile and film around it", ["profile"]),
     "dynamics": ("Valve-train dynamics", [
         "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),
+    "camshaft": ("Elastic camshaft: bearing loads, orders, lobes", [
+        "shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"]),
 }
 
 #: progress(label, done, total) after each file set is written

@@ -107,3 +107,17 @@ def test_bore_not_below_diameter_names_the_field():
     with pytest.raises(InputError) as err:
         flexible(extra="bore = 30.0")
     assert "camshaft.flexibility.bore" in str(err.value)
+
+
+def test_camshaft_sheet_only_with_the_elastic_shaft(tmp_path, rigid_bays):
+    from camtrain.report.panels_shaft import SHAFT_PANELS
+    from camtrain.report.sheets import write_plots
+
+    deck = flexible()
+    written = write_plots(ct.run(deck), deck.model, tmp_path / "elastic", single_panels=False,
+                          formats=("png",))
+    assert (tmp_path / "elastic" / "sheet_camshaft.png") in written
+    plain = write_plots(rigid_bays, ct.loads(camshaft_deck("petroff")).model, tmp_path / "plain",
+                        single_panels=False, formats=("png",))
+    assert not any(p.name == "sheet_camshaft.png" for p in plain)
+    assert set(SHAFT_PANELS) >= {"shaft_reactions", "shaft_orders", "lobe_twist"}
