@@ -39,7 +39,9 @@ KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max
                "separation_angle")
 
 #: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
-BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean")
+BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean",
+                   # the elastic camshaft: load from the shaft and its orders 1 and 4
+                   "reaction_max", "reaction_order_1", "reaction_order_4")
 
 #: Observed orders outside this range are treated as noise, not as asymptotic convergence.
 PLAUSIBLE_ORDER = (0.5, 8.0)
