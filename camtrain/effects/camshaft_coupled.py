@@ -126,34 +126,43 @@ def run(deck, inputs, res):
     loads = solve_trains(state.motion[:n] * scale[0], state.motion[n:] * scale[1])
     out = solve_shaft(loads)
     add_shaft(res, shaft, out, theta, cs.orders, omega)
+    accelerations = [shift_curve(responses[j].a[run_setup.model.valve], g)
+                     for j, g in enumerate(gammas)]
+    _report(res, loads, accelerations, theta, "staggered iteration", state.iterations,
+            state.change, state.converged, f.coupling_tolerance)
     for j, g in enumerate(gammas):
+        seps = findings(responses[j]).separations
+        res.add_metric("separations", len(seps), "-",
+                       f"lobe {j + 1}: separations of the cam contact", component=f"lobe_{j + 1}")
+        for s in seps:
+            res.add_event("contact_loss", math.remainder(s.loss + g, 2 * math.pi),
+                          f"lobe {j + 1}: the cam loses the follower", component=f"lobe_{j + 1}")
+    return out
+
+
+def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, change: float,
+            converged: bool, tolerance: float) -> None:
+    """Every lobe's coupled load and valve acceleration, the summed load and the solver's
+    convergence (passes of the iteration or revolutions of the march)."""
+    import numpy as np
+
+    for j, load in enumerate(loads):
         comp = f"lobe_{j + 1}"
-        load = loads[j]
         res.add_column("load", load, "N", f"lobe {j + 1}: contact load of its elastic train on "
-                       "the elastic shaft", component=comp)
-        resp = responses[j]
-        res.add_column("valve_acceleration", shift_curve(resp.a[run_setup.model.valve], g),
-                       "m/s^2", f"lobe {j + 1}: valve acceleration", component=comp)
+                       f"the elastic shaft ({solver})", component=comp)
+        res.add_column("valve_acceleration", valve_accelerations[j], "m/s^2",
+                       f"lobe {j + 1}: valve acceleration", component=comp)
         i = int(np.argmax(load))
         res.add_metric("load_max", load[i], "N", f"lobe {j + 1}: largest contact load",
                        theta[i], component=comp)
-        seps = findings(resp).separations
-        res.add_metric("separations", len(seps), "-",
-                       f"lobe {j + 1}: separations of the cam contact", component=comp)
-        for s in seps:
-            res.add_event("contact_loss", math.remainder(s.loss + g, 2 * math.pi),
-                          f"lobe {j + 1}: the cam loses the follower", component=comp)
-    summed = loads.sum(axis=0)
-    res.add_column("camshaft_load_sum", summed, "N", "sum of the lobes' contact loads")
-    res.add_metric("coupling_passes", state.iterations, "-",
-                   "passes of the shaft/train iteration")
-    res.add_metric("coupling_change", state.change, "-",
-                   "relative change of the lobes' motion in the last pass")
-    if not state.converged:
-        res.warn(f"camshaft coupling: no common periodic state after {state.iterations} passes "
-                 f"(last change {state.change:.3g} > {f.coupling_tolerance:g}); the loads are the "
-                 "last pass's")
-    return out
+    res.add_column("camshaft_load_sum", np.sum(loads, axis=0), "N",
+                   "sum of the lobes' contact loads")
+    res.add_metric("coupling_passes", passes, "-", f"passes of the {solver}")
+    res.add_metric("coupling_change", change, "-",
+                   f"relative change between the last two passes of the {solver}")
+    if not converged:
+        res.warn(f"camshaft coupling: no periodic state after {passes} passes of the {solver} "
+                 f"(last change {change:.3g} > {tolerance:g}); the results are the last pass's")
 
 
 def _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, turn, contact,
@@ -200,23 +209,6 @@ def _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, tu
     torques = np.array(torques)
     out = answer(deck, shaft, forces, torques, torques.sum(axis=0), omega, theta)
     add_shaft(res, shaft, out, theta, cs.orders, omega)
-    for j in range(len(lobes)):
-        comp = f"lobe_{j + 1}"
-        res.add_column("load", loads[j], "N", f"lobe {j + 1}: contact load of its elastic train "
-                       "on the elastic shaft (monolithic march)", component=comp)
-        res.add_column("valve_acceleration", result.valve_acceleration[j], "m/s^2",
-                       f"lobe {j + 1}: valve acceleration", component=comp)
-        i = int(np.argmax(loads[j]))
-        res.add_metric("load_max", loads[j][i], "N", f"lobe {j + 1}: largest contact load",
-                       theta[i], component=comp)
-    res.add_column("camshaft_load_sum", np.sum(loads, axis=0), "N",
-                   "sum of the lobes' contact loads")
-    res.add_metric("coupling_passes", result.cycles, "-",
-                   "revolutions of the monolithic march")
-    res.add_metric("coupling_change", result.change, "-",
-                   "relative change of the lobe loads between the last two revolutions")
-    if not result.converged:
-        res.warn(f"camshaft coupling: no periodic state after {result.cycles} revolutions "
-                 f"(last change {result.change:.3g} > {f.coupling_tolerance:g}); results are the "
-                 "last revolution")
+    _report(res, loads, result.valve_acceleration, theta, "monolithic march", result.cycles,
+            result.change, result.converged, f.coupling_tolerance)
     return out
