@@ -53,14 +53,16 @@ def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Res
 
 
 def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0, *,
-          plots: str = "sheets") -> list[Path]:
+          plots: str = "sheets", units: str = "deck") -> list[Path]:
     """Write a run's outputs into ``out_dir`` atomically: cycle.csv, report.txt, summary.json
     (with the deck's design-limit checks) and, unless ``plots="none"``, the plot sheets
-    (``plots``: "sheets" PNG, "pdf" PNG and PDF, "all" also every panel alone)."""
+    (``plots``: "sheets" PNG, "pdf" PNG and PDF, "all" also every panel alone). ``units``:
+    cycle.csv and summary.json in the deck's units ("deck", each with its unit) or in SI
+    ("si")."""
     from camtrain.report.outputs import check_limits, write_run
 
     return write_run(result, deck, Path(out_dir), wall_time,
-                     checks=check_limits(result, deck), plots=plots)
+                     checks=check_limits(result, deck), plots=plots, units=units)
 
 
 def _model(deck: LoadedDeck | Deck) -> Deck:

@@ -14,6 +14,11 @@ import click
 from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 
+#: --units of the commands that write tables: the deck's units (default) or SI for pipelines
+UNITS_OPTION = dict(type=click.Choice(["deck", "si"]), default="deck", show_default=True,
+                    help="Units of the written tables and JSON: deck (mm, deg, µm, MPa, ..., each "
+                         "with its unit) or si (m, rad, Pa, ... for machine pipelines).")
+
 MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic",
                      "journal_bearing", "engine")
 
@@ -136,8 +141,9 @@ EXIT_PRECEDENCE = (EXIT_INTERNAL, 2, 3, 4, 1, 0)
 @click.option("--quiet", "-q", is_flag=True, help="Print only errors and violated limits.")
 @click.option("--json", "as_json", is_flag=True,
               help="Print summary.json to standard output (a list for several decks).")
+@click.option("--units", **UNITS_OPTION)
 def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None, plots: str,
-        no_plots: bool, quiet: bool, as_json: bool) -> None:
+        no_plots: bool, quiet: bool, as_json: bool, units: str) -> None:
     """Run DECK... and write cycle.csv, report.txt, plot sheets and summary.json for each.
 
     \b
@@ -167,7 +173,7 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
         overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
         for deck, out_dir in zip(decks, targets, strict=True):
             report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
-                                       check=check)
+                                       check=check, units=units)
             reports.append(report)
             summaries.append(summary)
             codes.append(report.exit_code if (check or report.exit_code != 1) else 0)
@@ -206,7 +212,8 @@ def _output_dirs(decks: tuple[str, ...], out: str | None) -> list[Path]:
     return dirs
 
 
-def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool):
+def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
+             units: str = "deck"):
     """Load, run, check and write one deck; errors become a report, never an exception."""
     from camtrain import api
     from camtrain.report.junit import DeckReport
@@ -229,7 +236,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
                 bar.update(task, description=f"{name}: {label}", completed=done, total=total)
 
         written = write_run(result, loaded, out_dir, wall, checks=checks, plots=plots,
-                            progress=step)
+                            progress=step, units=units)
     except CamtrainError as exc:
         message = str(exc) if deck in str(exc) else f"{deck}: {exc}"
         report.error, report.exit_code = message, exc.exit_code
@@ -260,7 +267,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
 
         click.echo(f"{deck}:")
         print_checks(console or _console(), violated(checks))
-    return report, summary_dict(result, loaded, wall, checks)
+    return report, summary_dict(result, loaded, wall, checks, units)
 
 
 def _print_batch(console, reports, check: bool) -> None:
@@ -290,8 +297,9 @@ def _print_batch(console, reports, check: bool) -> None:
               help="Angles over one revolution (default: the deck's solver.angle_points).")
 @click.option("--no-plots", is_flag=True, help="Write the table only.")
 @click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
+@click.option("--units", **UNITS_OPTION)
 def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
-                 quiet: bool) -> None:
+                 quiet: bool, units: str) -> None:
     """Lift, velocity, acceleration and jerk of DECK's lift law: lift.csv and a plot sheet."""
     from camtrain import api
     from camtrain.report.tables import write_table
@@ -299,7 +307,7 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
     loaded = api.load(deck)
     result = api.lift(loaded, points)
     out_dir = Path(out) if out else Path("out") / (Path(deck).stem if deck != "-" else "stdin")
-    written = [write_table(result, out_dir / "lift.csv")]
+    written = [write_table(result, out_dir / "lift.csv", units)]
     if not no_plots:
         from camtrain.report.plots import lift_sheet
 

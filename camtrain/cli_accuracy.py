@@ -27,8 +27,10 @@ from camtrain.errors import CamtrainError
 @click.option("--repeat", type=click.IntRange(1, 100), default=1, show_default=True,
               help="Time each rung this many times and keep the fastest.")
 @click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
+@click.option("--units", type=click.Choice(["deck", "si"]), default="deck", show_default=True,
+              help="Units of accuracy.csv and accuracy.json: deck (mm, µm, MPa, ...) or si.")
 def accuracy(deck: str, knobs: tuple[str, ...], tolerance: str, out: str | None, repeat: int,
-             quiet: bool) -> None:
+             quiet: bool, units: str) -> None:
     """Run DECK at a ladder of resolutions per knob: value, error, observed order, wall time.
 
     \b
@@ -37,20 +39,20 @@ def accuracy(deck: str, knobs: tuple[str, ...], tolerance: str, out: str | None,
     coarsest rung from which every finer rung stays within --tolerance for every key metric.
     """
     try:
-        _accuracy(deck, knobs, tolerance, out, repeat, quiet)
+        _accuracy(deck, knobs, tolerance, out, repeat, quiet, units)
     except CamtrainError as exc:  # also when run outside the main group (no traceback)
         click.echo(f"error: {exc}", err=True)
         sys.exit(exc.exit_code)
 
 
-def _accuracy(deck, knobs, tolerance, out, repeat, quiet) -> None:
-    from camtrain.study.accuracy import parse_tolerance, render_table, study, write_outputs
+def _accuracy(deck, knobs, tolerance, out, repeat, quiet, units="deck") -> None:
+    from camtrain.study.accuracy import in_units, parse_tolerance, render_table, study, write_outputs
 
     tol = parse_tolerance(tolerance)
     progress = None if quiet else (lambda k: click.echo(f"studying {k} ...", err=True))
     report = study(deck, knobs, tol, repeat=repeat, progress=progress)
-    written = write_outputs(report, out) if out else []
+    written = write_outputs(report, out, units) if out else []
     if not quiet:
-        click.echo(render_table(report))
+        click.echo(render_table(in_units(report)))
         for path in written:
             click.echo(f"wrote {path}")

@@ -83,10 +83,13 @@ class _SweepCommand(click.Command):
 @click.option("--overlay-max", type=click.IntRange(0, 200), default=20, show_default=True,
               help="At most this many cases in the per-angle overlay plot.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar or summary.")
+@click.option("--units", type=click.Choice(["deck", "si"]), default="deck", show_default=True,
+              help="Units of sweep.csv, the curves and the trend tables: deck (mm, µm, MPa, ... "
+                   "each with its unit) or si (for machine pipelines). Plots are in deck units.")
 @click.pass_context
 def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zipped: bool,
           sets, out: str | None, jobs: int | None, scheduler: str | None, resume: bool,
-          no_plots: bool, overlay_max: int, quiet: bool) -> None:
+          no_plots: bool, overlay_max: int, quiet: bool, units: str) -> None:
     """Run DECK for many values of one or more parameters (Ball's parametric studies).
 
     \b
@@ -105,7 +108,7 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
 
     try:
         outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots,
-                                overlay_max, quiet)
+                                overlay_max, quiet, units)
     except CamtrainError as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(exc.exit_code)
@@ -127,7 +130,8 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
         sys.exit(EXIT_INTERNAL)
 
 
-def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet):
+def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,
+         units="deck"):
     from pathlib import Path
 
     from camtrain.errors import CamtrainError
@@ -141,7 +145,7 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
         raise CamtrainError(f"--jobs: {jobs} is not a number of worker processes (>= 1)")
     if jobs is not None and scheduler is not None:
         raise CamtrainError("--jobs and --scheduler: give one (the cluster decides its workers)")
-    sweep_def = prepare(deck, specs, list(sets), zipped)
+    sweep_def = prepare(deck, specs, list(sets), zipped, units)
     stem = Path(deck).stem if deck != "-" else "stdin"
     out_dir = Path(out) if out else Path("out") / f"{stem}_sweep"
     if quiet:

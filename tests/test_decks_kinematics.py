@@ -98,6 +98,6 @@ def test_cycle_csv_has_profile_for_grinding(tmp_path):
                                     str(tmp_path), "--quiet", "--no-plots"])
     assert res.exit_code == 0, res.output
     header = (tmp_path / "cycle.csv").read_text().splitlines()[0].split(",")
-    for col in ("contact_x[m]", "contact_y[m]", "profile_radius[m]", "profile_angle[rad]",
-                "cam_radius[m]", "entrainment[m/s]"):
+    for col in ("contact_x[mm]", "contact_y[mm]", "profile_radius[mm]", "profile_angle[deg]",
+                "cam_radius[mm]", "entrainment[m/s]"):
         assert col in header

@@ -89,11 +89,23 @@ def test_lift_command_writes_table_and_plots(tmp_path):
                                     str(tmp_path), "--points", "360", "--quiet"])
     assert res.exit_code == 0, res.output
     header = (tmp_path / "lift.csv").read_text().splitlines()[0]
-    assert header == ("cam_angle[deg],lift[m],velocity[m/rad],acceleration[m/rad^2],"
-                      "jerk[m/rad^3]")
+    assert header == ("cam_angle[deg],lift[mm],velocity[mm/deg],acceleration[mm/deg²],"
+                      "jerk[mm/deg³]")
     assert len((tmp_path / "lift.csv").read_text().splitlines()) == 361
     assert (tmp_path / "lift.png").stat().st_size > 10_000
     assert (tmp_path / "lift.pdf").exists()
+
+
+def test_lift_command_units_si(tmp_path):
+    """--units si writes the lift table in SI for machine pipelines, the angle in rad too."""
+    res = CliRunner().invoke(main, ["lift", str(DECKS / "harrison_flat.toml"), "--out",
+                                    str(tmp_path), "--points", "360", "--quiet", "--no-plots",
+                                    "--units", "si"])
+    assert res.exit_code == 0, res.output
+    lines = (tmp_path / "lift.csv").read_text().splitlines()
+    assert lines[0] == ("cam_angle[rad],lift[m],velocity[m/rad],acceleration[m/rad^2],"
+                        "jerk[m/rad^3]")
+    assert abs(max(abs(float(r.split(",")[0])) for r in lines[1:]) - 3.14159) < 0.02
 
 
 def test_lift_command_bad_table_exit_2(tmp_path):

@@ -47,6 +47,23 @@ def display_unit(name: str, si_unit: str) -> tuple[str, float]:
     return _BY_UNIT.get(si_unit, (si_unit, 1.0))
 
 
+#: unit systems of the files a run writes: the deck's engineering units (default) or SI
+UNIT_SYSTEMS = ("deck", "si")
+
+
+def output_unit(name: str, si_unit: str, units: str = "deck") -> tuple[str, float]:
+    """(unit written beside a column or metric, factor from SI) in a file of ``units``.
+
+    "deck" writes what the terminal and report show (mm, deg, µm, MPa, ...), "si" the SI unit
+    camtrain computes in. A dimensionless quantity is written "-". Converting a value already
+    in its display unit again leaves it unchanged (the display units map to themselves).
+    """
+    if units not in UNIT_SYSTEMS:
+        raise ValueError(f"units {units!r}: expected one of {', '.join(UNIT_SYSTEMS)}")
+    unit, factor = (si_unit, 1.0) if units == "si" else display_unit(name, si_unit)
+    return unit or "-", factor
+
+
 def shown(name: str, value: float, si_unit: str, digits: int = 4) -> tuple[str, str]:
     """(formatted value, unit) in display units, e.g. ('417.3', 'MPa')."""
     unit, factor = display_unit(name, si_unit)

@@ -49,6 +49,23 @@ class Check:
         return asdict(self)
 
 
+def in_si(check: Check) -> Check:
+    """The same check with its value and bound in SI (for ``--units si`` outputs)."""
+    from dataclasses import replace
+
+    from camtrain.units import UNITS
+
+    factor, unit = UNITS[check.unit]
+    value = None if check.value is None else check.value * factor
+    return replace(check, value=value, bound=_clean(check.bound * factor), unit=unit)
+
+
+def _clean(x: float) -> float:
+    """A deck value brought back from SI without the float noise of the round trip
+    (0.049999999999999996 -> 0.05): 12 significant digits are far beyond any deck's."""
+    return float(f"{x:.12g}")
+
+
 # deck key -> (quantity, kind, display unit, factor SI -> display, column, metric)
 SPECS = {
     "max_hertz": ("maximum Hertz stress", "max", "MPa", 1e-6, "hertz_pmax", "hertz_max"),
@@ -73,7 +90,7 @@ def evaluate(limits, result: Result, speed_rpm: float | None = None) -> list[Che
         bound_si = getattr(limits, key, None)
         if bound_si is None:
             continue
-        bound = bound_si * factor
+        bound = _clean(bound_si * factor)
         if key == "min_bounce_margin":
             value, angle, note = _bounce_margin(result, speed_rpm)
         else:

@@ -30,19 +30,22 @@ def check_limits(result: Result, loaded: LoadedDeck) -> list[Check]:
 
 def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: float, *,
               checks: list[Check] | None = None, plots: str = "sheets",
-              progress: Callable[[str, int, int], None] | None = None) -> list[Path]:
+              progress: Callable[[str, int, int], None] | None = None,
+              units: str = "deck") -> list[Path]:
     """Write cycle.csv, report.txt, plots and summary.json. ``plots``: "sheets" (PNG sheets),
-    "pdf" (the sheets as PNG and PDF), "all" (also every panel alone, PNG and PDF) or "none"."""
+    "pdf" (the sheets as PNG and PDF), "all" (also every panel alone, PNG and PDF) or "none".
+    ``units``: the tables in the deck's units ("deck") or in SI ("si"); report and plots are for
+    people and always in the deck's units."""
     out_dir = Path(out_dir)
-    summary = json.dumps(summary_dict(result, loaded, wall_time, checks), indent=2,
+    summary = json.dumps(summary_dict(result, loaded, wall_time, checks, units), indent=2,
                          allow_nan=False, ensure_ascii=False) + "\n"
     texts = {
-        "cycle.csv": csv_text(result),
+        "cycle.csv": csv_text(result, units=units),
         "report.txt": report_text(result, loaded.model, path=loaded.path, sha=loaded.sha256,
                                   checks=checks, wall_time=wall_time),
     }
     for axis in result.axes[1:]:   # columns on another grid (e.g. the piston's ring_angle)
-        texts[f"cycle_{axis}.csv"] = csv_text(result, axis)
+        texts[f"cycle_{axis}.csv"] = csv_text(result, axis, units)
     out_dir.parent.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.staging-", dir=out_dir.parent))
     try:

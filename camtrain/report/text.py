@@ -97,15 +97,17 @@ def _cycle_table(result: Result, step_deg: float) -> list[str]:
         heads.append(_short(n))
         units.append(f"[{unit or '-'}]")
         cols.append(result[n] * factor)
-    w = 10
+    cells = [[_cell(c[i]) for i in idx] for c in cols]
+    # every number whole: the column is as wide as its longest entry (never cut to fit)
+    w = max(10, 1 + max(len(t) for t in heads + units + [x for c in cells for x in c]))
     out = [_rule(f"CYCLE TABLE (every {step_deg:g} deg; cycle.csv has every angle)", "-")]
-    chunk = (WIDTH - w) // w          # columns per block so lines stay printable
+    chunk = max(1, (WIDTH - w) // w)          # columns per block so lines stay printable
     for start in range(1, len(heads), chunk):
         sel = [0] + list(range(start, min(start + chunk, len(heads))))
         out.append("".join(f"{heads[j]:>{w}}" for j in sel))
         out.append("".join(f"{units[j]:>{w}}" for j in sel))
-        for i in idx:
-            out.append("".join(f"{_cell(cols[j][i]):>{w}}" for j in sel))
+        for k in range(len(idx)):
+            out.append("".join(f"{cells[j][k]:>{w}}" for j in sel))
         out.append("")
     key = "; ".join(f"{SHORT[n]} = {LABELS.get(n, n)}" for n in names if SHORT[n] != LABELS.get(n))
     out.append("  key: " + key)
@@ -127,4 +129,4 @@ def _short(name: str) -> str:
 def _cell(x: float) -> str:
     if not math.isfinite(x):
         return str(x)
-    return fmt(float(x), 4)[:9]
+    return fmt(float(x), 4)

@@ -520,14 +520,37 @@ def render_table(report: dict) -> str:
     return "\n".join(lines)
 
 
-def write_outputs(report: dict, out_dir) -> list:
-    """Write accuracy.csv, accuracy.json and accuracy.png into ``out_dir``; return the paths."""
+def in_units(report: dict, units: str = "deck") -> dict:
+    """The study with every metric value and reference in ``units`` ("deck": mm, µm, MPa, ...
+    as the report shows them; "si" as computed), each metric's unit changed to match. Errors
+    and orders are relative and unchanged."""
+    from camtrain.report.display import output_unit
+
+    out = {**report, "units": units, "knobs": {}}
+    for knob, k in report["knobs"].items():
+        metrics = {}
+        for name, m in k["metrics"].items():
+            unit, f = output_unit(name, m["unit"], units)
+            metrics[name] = {**m, "unit": unit,
+                             "values": [None if v is None else v * f for v in m["values"]],
+                             "reference": None if m["reference"] is None else m["reference"] * f}
+        rungs = [{**r, "metrics": {n: {"value": x["value"] * output_unit(n, x["unit"], units)[1],
+                                       "unit": output_unit(n, x["unit"], units)[0]}
+                                   for n, x in r["metrics"].items()}} for r in k["rungs"]]
+        out["knobs"][knob] = {**k, "metrics": metrics, "rungs": rungs}
+    return out
+
+
+def write_outputs(report: dict, out_dir, units: str = "deck") -> list:
+    """Write accuracy.csv, accuracy.json and accuracy.png into ``out_dir``; return the paths.
+    The tables hold the metrics in ``units`` ("deck" or "si"), each with its unit."""
     import csv
     import json
     from pathlib import Path
 
     from camtrain.study.accuracy_plot import pareto_plot
 
+    report = in_units(report, units)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     csv_path, json_path = out / "accuracy.csv", out / "accuracy.json"

@@ -32,6 +32,7 @@ class Sweep:
     fixed: list[Parameter]
     cases: list[Case]
     zipped: bool = False
+    units: str = "deck"     # of sweep.csv, the curves and trends: "deck" or "si"
 
 
 @dataclass
@@ -48,7 +49,7 @@ class Outcome:
 
 
 def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str] = (),
-            zipped: bool = False) -> Sweep:
+            zipped: bool = False, units: str = "deck") -> Sweep:
     """Read the deck, resolve and check every parameter, generate the cases.
 
     ``specs`` = [(name, 'values' | 'range' | 'relative', text)]; ``sets`` = ['path=value', ...].
@@ -66,7 +67,7 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str]
         validate(raw, loaded.path, Path(base_dir))
     params = build_parameters(raw, list(specs))
     return Sweep(raw, loaded.path, base_dir, loaded.sha256, params, fixed,
-                 cases(params, zipped), zipped)
+                 cases(params, zipped), zipped, units)
 
 
 def kept_indices(n: int, most: int) -> set[int]:
@@ -82,7 +83,7 @@ def _manifest(sweep: Sweep) -> dict:
     from camtrain import __version__
 
     return {"camtrain_version": __version__, "deck": sweep.name, "deck_sha256": sweep.sha256,
-            "zip": sweep.zipped, "cases": len(sweep.cases),
+            "zip": sweep.zipped, "cases": len(sweep.cases), "units": sweep.units,
             "set": {p.path: p.values[0] for p in sweep.fixed},
             "parameters": [{"name": p.name, "path": p.path, "unit": p.unit, "datum": p.datum,
                             "values": list(p.values)} for p in sweep.params]}
@@ -96,6 +97,11 @@ def _check_resume(out_dir: Path, sweep: Sweep) -> None:
         old = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return
+    if old.get("units", "si") != sweep.units:
+        raise InputError(Problem("--units", f"the sweep in {out_dir} wrote its tables in "
+                                 f"{old.get('units', 'si')} units", sweep.units,
+                                 f"--units {old.get('units', 'si')}",
+                                 "resume with the same --units, or use another --out"))
     if old.get("deck_sha256") != sweep.sha256:
         raise InputError(Problem("--resume", f"the deck {sweep.name} changed since the sweep in "
                                  f"{out_dir} started", None, "the same deck",
@@ -116,7 +122,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     done: dict[int, dict] = {}
     if resume:
         _check_resume(out_dir, sweep)
-        done = so.read_finished(csv_path, sweep.params, sweep.cases)
+        done = so.read_finished(csv_path, sweep.params, sweep.cases, sweep.units)
     else:
         for stale in (out_dir / "curves").glob("case_*.csv"):
             stale.unlink()
@@ -140,6 +146,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     try:
         if todo:
             for rec in executor.map(run_case, jobs_list):
+                rec = so.in_units(rec, sweep.units)
                 so.write_curves(out_dir, rec)
                 rec["curves"] = None  # on disk now; keeps memory flat for long sweeps
                 done[rec["index"]] = rec
@@ -149,11 +156,11 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
                 # grows with the sweep, so a fast sweep would otherwise spend its time here
                 if time.monotonic() - last > max(1.0, 10.0 * cost):
                     tick = time.monotonic()
-                    so.write_csv(csv_path, sweep.params, list(done.values()))
+                    so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
                     last = time.monotonic()
                     cost = last - tick
     finally:
-        so.write_csv(csv_path, sweep.params, list(done.values()))
+        so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
         if own:
             executor.close()
     records = sorted(done.values(), key=lambda r: r["index"])
@@ -163,7 +170,8 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
 
     outcome.written += write_flame(out_dir, sweep.params, records, plots=plots, title=sweep.name)
     if plots:
-        outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends)
+        outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends,
+                                           title=Path(sweep.name).name)
         kept = [r for r in records if r["index"] in keep]
         outcome.written += so.overlay_plots(out_dir, sweep.params, kept)
     return outcome

@@ -1,8 +1,9 @@
 """Sweep outputs: sweep.csv (and reading it back to resume), the trend table, plots, overlays.
 
 sweep.csv has one row per case: ``case``, the parameter values (``name[unit]``), ``status``,
-``message``, then every metric (``name[unit]``, SI as in summary.json). Numbers are written as the
-shortest text that reads back to the same float, so a resumed sweep reproduces the table exactly.
+``message``, then every metric (``name[unit]``, in the deck's units as in summary.json, or SI with
+``units="si"``). Numbers are written as the shortest text that reads back to the same float, so a
+resumed sweep reproduces the table exactly.
 """
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import math
 import re
 from pathlib import Path
 
+from camtrain.report.display import display_unit, output_unit
 from camtrain.report.tables import atomic_write
 from camtrain.study.sweep import Case, Parameter
 
@@ -23,6 +25,38 @@ _HEADER = re.compile(r"^(.*)\[(.*)\]$")
 
 def _fmt(x: float) -> str:
     return repr(float(x))  # 'nan' and 'inf' stay readable and distinct from a missing value
+
+
+def in_units(record: dict, units: str = "deck") -> dict:
+    """A case record (metrics and curves in SI, as a case returns them) with its metrics and
+    curves in ``units``: the deck's units ("deck") or SI ("si"). A record already converted
+    (read back from sweep.csv) is unchanged."""
+    metrics = {}
+    for n, (value, unit) in record["metrics"].items():
+        out, factor = output_unit(n, unit, units)
+        metrics[n] = (value * factor, out)
+    curves = record.get("curves")
+    if curves:
+        curves = {n: (output_unit(n, unit, units)[0],
+                      [v * output_unit(n, unit, units)[1] for v in values])
+                  for n, (unit, values) in curves.items()}
+    return {**record, "metrics": metrics, "curves": curves}
+
+
+def shown(name: str, value: float, unit: str) -> tuple[float, str]:
+    """A metric or curve value in the units a person reads (plots), from SI or deck units."""
+    out, factor = display_unit(name, unit)
+    return value * factor, out or "-"
+
+
+def param_column(p: Parameter, units: str = "deck") -> tuple[str, float]:
+    """(header, factor from the deck unit) of a parameter's column in sweep.csv."""
+    from camtrain.units import UNITS
+
+    if units == "si" and p.unit in UNITS:
+        factor, si = UNITS[p.unit]
+        return f"{p.name}[{si}]", factor
+    return p.label, 1.0
 
 
 def metric_order(records: list[dict]) -> list[str]:
@@ -43,31 +77,37 @@ def metric_units(records: list[dict]) -> dict[str, str]:
     return units
 
 
-def csv_text(params: list[Parameter], records: list[dict]) -> str:
-    """The text of sweep.csv for these records (sorted by case index)."""
+def csv_text(params: list[Parameter], records: list[dict], units: str = "deck") -> str:
+    """The text of sweep.csv for these records (sorted by case index; metrics already in
+    ``units``, see in_units; parameters in their deck unit, converted here for "si")."""
     names = metric_order(records)
-    units = metric_units(records)
+    metric_unit = metric_units(records)
+    columns = [param_column(p, units) for p in params]
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["case"] + [p.label for p in params] + ["status", "message"]
-               + [f"{n}[{units[n]}]" for n in names])
+    w.writerow(["case"] + [label for label, _ in columns] + ["status", "message"]
+               + [f"{n}[{metric_unit[n]}]" for n in names])
     for r in sorted(records, key=lambda r: r["index"]):
-        row = [str(r["index"])] + [_fmt(r["values"][p.name]) for p in params]
+        row = [str(r["index"])] + [_fmt(r["values"][p.name] * f)
+                                   for p, (_, f) in zip(params, columns, strict=True)]
         row += [r["status"], r["message"]]
         row += [_fmt(r["metrics"][n][0]) if n in r["metrics"] else "" for n in names]
         w.writerow(row)
     return buf.getvalue()
 
 
-def write_csv(path: Path, params: list[Parameter], records: list[dict]) -> Path:
+def write_csv(path: Path, params: list[Parameter], records: list[dict],
+              units: str = "deck") -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
-    atomic_write(path, csv_text(params, records))
+    atomic_write(path, csv_text(params, records, units))
     return path
 
 
-def read_finished(path: Path, params: list[Parameter], cases: list[Case]) -> dict[int, dict]:
+def read_finished(path: Path, params: list[Parameter], cases: list[Case],
+                  units: str = "deck") -> dict[int, dict]:
     """Records of sweep.csv whose case index *and* parameter values match a case of this sweep
-    and whose status is final. Anything else (other values, a torn last line) is run again."""
+    and whose status is final. Anything else (other values, a torn last line) is run again.
+    Metrics stay as written (in ``units``); parameter values are the case's own."""
     if not path.is_file():
         return {}
     wanted = {c.index: c.as_dict() for c in cases}
@@ -80,17 +120,21 @@ def read_finished(path: Path, params: list[Parameter], cases: list[Case]) -> dic
         for row in reader:
             if len(row) != len(header):
                 continue
-            rec = _parse_row(header, row, params)
+            rec = _parse_row(header, row, params, units)
             if rec is None or rec["status"] not in FINAL or rec["index"] not in wanted:
                 continue
-            if rec["values"] != wanted[rec["index"]]:
+            want = wanted[rec["index"]]
+            if set(rec["values"]) != set(want) or not all(
+                    math.isclose(rec["values"][k], want[k], rel_tol=1e-12, abs_tol=1e-300)
+                    for k in want):
                 continue
-            out[rec["index"]] = rec
+            out[rec["index"]] = {**rec, "values": want}
     return out
 
 
-def _parse_row(header: list[str], row: list[str], params: list[Parameter]) -> dict | None:
-    labels = {p.label: p.name for p in params}
+def _parse_row(header: list[str], row: list[str], params: list[Parameter],
+               units: str = "deck") -> dict | None:
+    labels = {param_column(p, units)[0]: (p.name, param_column(p, units)[1]) for p in params}
     rec = {"index": None, "values": {}, "status": "", "message": "", "metrics": {}, "curves": None}
     try:
         for col, text in zip(header, row, strict=True):
@@ -99,7 +143,8 @@ def _parse_row(header: list[str], row: list[str], params: list[Parameter]) -> di
             elif col in ("status", "message"):
                 rec[col] = text
             elif col in labels:
-                rec["values"][labels[col]] = float(text)
+                name, factor = labels[col]
+                rec["values"][name] = float(text) / factor
             elif text != "":
                 m = _HEADER.match(col)
                 if m is None:
@@ -146,9 +191,9 @@ def read_curves(out_dir: Path, index: int) -> dict | None:
 
 # --------------------------------------------------------------------------- plots
 
-#: Column name -> (label, display unit, factor from the SI unit)
-CURVE_DISPLAY = {"film_min": ("minimum film", "µm", 1e6), "load": ("contact load", "N", 1.0),
-                 "hertz_pmax": ("Hertz stress", "MPa", 1e-6), "lift": ("lift", "mm", 1e3)}
+#: Column name -> label of its overlay panel (values shown in display units, see ``shown``)
+CURVE_DISPLAY = {"film_min": "minimum film", "load": "contact load",
+                 "hertz_pmax": "Hertz stress", "lift": "lift"}
 #: Ball's three outputs of every parametric study (Figs 5.x)
 BALL_METRICS = ("film_min_at_max_lift", "hertz_at_max_lift", "power_loss_mean")
 
@@ -164,8 +209,9 @@ def _case_label(values: dict, params: list[Parameter]) -> str:
 
 
 def metric_plots(out_dir: Path, params: list[Parameter], records: list[dict],
-                 trends: list | None = None) -> list[Path]:
-    """One sheet per parameter: every metric against it (one line per setting of the others).
+                 trends: list | None = None, title: str = "") -> list[Path]:
+    """One sheet per parameter: every metric against it (one line per setting of the others),
+    in display units whatever the tables' units, under a title naming the sweep.
 
     Metrics the trend table found constant for a parameter are left off its sheet: they say
     nothing, and each panel costs drawing time.
@@ -190,13 +236,14 @@ def metric_plots(out_dir: Path, params: list[Parameter], records: list[dict],
             groups, others = {(): ok}, []  # zipped parameters: one line through all cases
         for ax, n in zip(axes.flat, names, strict=False):
             for key, line in groups.items():
-                pts = sorted((r["values"][p.name], r["metrics"][n][0]) for r in line
+                pts = sorted((r["values"][p.name], shown(n, *r["metrics"][n])[0]) for r in line
                              if n in r["metrics"] and math.isfinite(r["metrics"][n][0]))
                 if pts:
                     label = ", ".join(f"{q.name} {v:g}" for q, v in zip(others, key, strict=True))
                     ax.plot(*zip(*pts, strict=True), marker="o", ms=3, lw=1, label=label or None)
             ax.set_title(n, fontsize=8)
-            ax.set_ylabel(units[n], fontsize=7)
+            ax.set_ylabel(shown(n, 1.0, units[n])[1], fontsize=7)
+            ax.yaxis.set_major_formatter(_plain_formatter())
             ax.tick_params(labelsize=7)
             ax.grid(True, alpha=0.3)
         for ax in list(axes.flat)[len(names):]:
@@ -206,7 +253,9 @@ def metric_plots(out_dir: Path, params: list[Parameter], records: list[dict],
         if others and len(groups) <= 8:
             axes.flat[0].legend(fontsize=6)
         # fixed spacing: tight_layout on dozens of panels costs seconds per sheet
-        fig.subplots_adjust(left=0.07, right=0.98, bottom=0.5 / nrow, top=1 - 0.25 / nrow,
+        head = f"{title}: " if title else ""
+        fig.suptitle(f"{head}metrics against {p.label} (ok cases)", fontsize=9)
+        fig.subplots_adjust(left=0.07, right=0.98, bottom=0.5 / nrow, top=1 - 0.45 / nrow,
                             hspace=0.55, wspace=0.4)
         written.append(_save(plt, fig, out_dir / "plots" / f"metrics_vs_{p.name}.png"))
     for p in params:
@@ -214,6 +263,26 @@ def metric_plots(out_dir: Path, params: list[Parameter], records: list[dict],
         if ball is not None:
             written.append(_save(plt, ball, out_dir / "plots" / f"ball_{p.name}.png"))
     return written
+
+
+def _plain_formatter():
+    """Tick labels written in full with just enough digits to tell them apart: no offset or
+    multiplier ('1e-8', '+4.17e2') for the reader to apply."""
+    from matplotlib.ticker import Formatter
+
+    class Plain(Formatter):
+        def __call__(self, x, pos=None):
+            return f"{x:.6g}"
+
+        def format_ticks(self, values):
+            labels = [f"{v:.6g}" for v in values]
+            for digits in range(3, 13):
+                labels = [f"{v:.{digits}g}" for v in values]
+                if len(set(labels)) == len(labels):
+                    break
+            return labels
+
+    return Plain()
 
 
 def _ball_sheet(plt, p: Parameter, ok: list[dict], units: dict):
@@ -259,10 +328,12 @@ def overlay_plots(out_dir: Path, params: list[Parameter], records: list[dict]) -
     for i, (r, curves) in enumerate(kept):
         color = cmap(i / max(1, len(kept) - 1))
         for ax, n in zip(axes[:, 0], panels, strict=True):
-            label, unit, factor = CURVE_DISPLAY[n]
-            ax.plot(curves["cam_angle"][1], [v * factor for v in curves[n][1]], lw=0.9,
+            unit = shown(n, 1.0, curves[n][0])[1]
+            theta = [shown("cam_angle", v, curves["cam_angle"][0])[0]
+                     for v in curves["cam_angle"][1]]
+            ax.plot(theta, [shown(n, v, curves[n][0])[0] for v in curves[n][1]], lw=0.9,
                     color=color, label=_case_label(r["values"], params))
-            ax.set_ylabel(f"{label} [{unit}]")
+            ax.set_ylabel(f"{CURVE_DISPLAY[n]} [{unit}]")
             ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("cam angle from maximum lift [deg]")
     axes[-1, 0].set_xlim(-180, 180)

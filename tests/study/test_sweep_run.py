@@ -33,7 +33,7 @@ def test_failing_case_in_the_middle_does_not_stop_the_sweep(fast_flat, tmp_path)
     rows = _rows(tmp_path / "sweep.csv")
     assert rows[1]["status"] == "failed" and "GeometryError" in rows[1]["message"]
     assert "base-circle radius must exceed" in rows[1]["message"]
-    assert rows[1]["max_lift[m]"] == "" and rows[2]["max_lift[m]"] != ""
+    assert rows[1]["max_lift[mm]"] == "" and rows[2]["max_lift[mm]"] != ""
     assert rows[0]["base_radius[mm]"] == "16.0"
 
 
@@ -114,7 +114,7 @@ def test_outputs_plots_and_curves(fast_flat, tmp_path):
             "plots/overlay_curves.png"} <= names
     assert (tmp_path / "curves" / "case_00001.csv").is_file()
     header = (tmp_path / "sweep.csv").read_text().splitlines()[0]
-    assert header.startswith("case,speed[rpm],status,message,") and "max_lift[m]" in header
+    assert header.startswith("case,speed[rpm],status,message,") and "max_lift[mm]" in header
 
 
 def test_generic_trend_of_a_dotted_path(fast_flat, tmp_path):
