@@ -23,22 +23,59 @@ class Trend:
     points: int = 0
 
 
+#: A change counts only above this many standard deviations of a step of pure scatter.
+NOISE_SIGMAS = 3.0
+
+
+def scatter(xs: list[float], ys: list[float]) -> float:
+    """The sweep's own scatter of ys about a smooth line: the rms residual of a least-squares
+    quadratic in x (n - 3 degrees of freedom); 0 with fewer than five points.
+
+    A metric read off the angle grid (a minimum film, a peak stress at a sampled angle) jitters
+    from case to case by up to the grid step's effect; a quadratic follows any physical trend
+    over a sweep's range but not that zig-zag, so its residual measures the noise.
+    """
+    n = len(xs)
+    if n < 5:
+        return 0.0
+    import numpy as np
+
+    x = np.asarray(xs, dtype=float)
+    x = (x - x.mean()) / (np.ptp(x) or 1.0)
+    y = np.asarray(ys, dtype=float)
+    resid = y - np.polyval(np.polyfit(x, y, 2), x)
+    return float(math.sqrt(float(resid @ resid) / (n - 3)))
+
+
+def noise_threshold(xs: list[float], ys: list[float], rtol: float = 1e-6) -> float:
+    """Smallest change of ys read as a trend: ``NOISE_SIGMAS`` x sqrt(2) x the scatter (a
+    difference of two noisy values), and never below ``rtol`` x the largest |y|."""
+    floor = rtol * max((abs(v) for v in ys), default=0.0)
+    return max(floor, NOISE_SIGMAS * math.sqrt(2.0) * scatter(xs, ys))
+
+
 def classify(xs: list[float], ys: list[float], rtol: float = 1e-6) -> tuple[str, str]:
     """(trend, detail) of ys against increasing xs.
 
-    Steps smaller than ``rtol`` times the largest |y| count as flat (numerical noise), so a metric
-    the parameter does not affect comes out 'constant'. A non-monotone series gets its sequence of
-    runs as detail, e.g. 'falls then rises'.
+    A move counts when ys has changed by more than the noise threshold (``noise_threshold``:
+    the sweep's own scatter about a quadratic, or ``rtol`` x the largest |y|) since the last
+    move that counted, so neither numerical noise nor grid zig-zag reads as a trend, while a
+    slow steady change still does. A metric the parameter does not affect comes out 'constant';
+    a non-monotone series gets its sequence of runs as detail, e.g. 'falls then rises'.
     """
     pts = sorted((x, y) for x, y in zip(xs, ys, strict=True) if math.isfinite(y))
     if len(pts) < 2:
         return UNKNOWN, "fewer than two finished cases"
     values = [y for _, y in pts]
-    tol = rtol * max(abs(v) for v in values)
+    tol = noise_threshold([x for x, _ in pts], values, rtol)
     runs: list[str] = []
-    for a, b in zip(values, values[1:], strict=False):
-        step = RISES if b - a > tol else FALLS if a - b > tol else None
-        if step and (not runs or runs[-1] != step):
+    anchor = values[0]
+    for b in values[1:]:
+        step = RISES if b - anchor > tol else FALLS if anchor - b > tol else None
+        if step is None:
+            continue
+        anchor = b
+        if not runs or runs[-1] != step:
             runs.append(step)
     if not runs:
         return CONSTANT, ""
@@ -97,5 +134,9 @@ def trends_markdown(trends: list[Trend], params: list[str], metrics: list[str],
             cells.append(SYMBOLS[t.trend] + (f" ({t.detail})" if t.detail else ""))
         lines.append(f"| {m} [{units.get(m, '-')}] | " + " | ".join(cells) + " |")
     legend = ("\n↑ rises as the parameter increases, ↓ falls, – unaffected, ↕ non-monotone, "
-              "? fewer than two finished cases. Only cases with status ok count.\n")
+              "? fewer than two finished cases. Only cases with status ok count. A change counts "
+              f"only above the noise threshold: {NOISE_SIGMAS:g} x sqrt(2) x the rms scatter of "
+              "the metric about a quadratic fit along the parameter (5 or more cases; this is "
+              "the jitter of values read off the angle grid), and at least 1e-6 of its "
+              "largest value.\n")
     return "\n".join(lines) + "\n" + legend

@@ -25,6 +25,22 @@ def test_classify(ys, expected):
     assert classify(list(range(len(ys))), ys) == expected
 
 
+def test_grid_noise_is_not_a_trend():
+    """A flat metric that zig-zags on grid noise is 'constant'; the same noise on a real slope
+    still rises; a real minimum still reads 'falls then rises' (noise threshold from the
+    sweep's own scatter about a quadratic)."""
+    xs = list(range(11))
+    jitter = [0.0, 1.0, -0.8, 0.9, -1.1, 0.7, -0.9, 1.2, -1.0, 0.8, -0.6]
+    flat = [100.0 + 1e-2 * j for j in jitter]
+    assert classify(xs, flat) == ("constant", "")
+    assert classify(xs, [100.0 + 0.5 * x + 1e-2 * j for x, j in zip(xs, jitter, strict=True)]) \
+        == ("rises", "")
+    assert classify(xs, [(x - 5.0) ** 2 + 1e-2 * j for x, j in zip(xs, jitter, strict=True)]) \
+        == ("non-monotone", "falls then rises")
+    # a slow steady change whose single steps are all tiny still counts
+    assert classify(xs, [1.0 + 1e-5 * x for x in xs]) == ("rises", "")
+
+
 def test_classify_sorts_by_parameter_and_needs_two_points():
     assert classify([3, 1, 2], [30, 10, 20])[0] == "rises"
     assert classify([1], [1])[0] == "n/a"
