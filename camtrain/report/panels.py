@@ -141,7 +141,9 @@ def velocities(ax, r, ctx):
 
 
 def radii(ax, r, ctx):
-    """Cam radius r_c and equivalent radius R; flat spots (infinite radius) are clipped."""
+    """Cam radius r_c and equivalent radius R on a symmetric-log scale: linear near the
+    base-circle size, logarithmic beyond, so a concave flank (r_c < 0, shaded) is shown
+    whole next to the large radii near flat spots; only infinite radii are left out."""
     present = [n for n in ("cam_radius", "equivalent_radius") if n in r.columns]
     if not present:
         return False
@@ -151,13 +153,15 @@ def radii(ax, r, ctx):
         y = _finite(y)
         finite_vals.append(y[np.isfinite(y)])
         ax.plot(ctx.theta, y, color=[COLORS["main"], COLORS["second"]][i], label=LABELS[name])
+    _shade(ax, ctx.findings.concave, COLORS["no_contact"], "concave flank (r_c < 0)")
     vals = np.concatenate(finite_vals) if finite_vals else np.array([])
     if vals.size:
-        lo, hi = np.percentile(vals, [0.5, 99.0])
-        span = max(hi - min(lo, 0.0), 1e-9)
-        ax.set_ylim(min(lo, 0.0) - 0.05 * span, hi + 0.05 * span)
+        lo, hi = float(min(vals.min(), 0.0)), float(max(vals.max(), 0.0))
+        scale = float(np.median(np.abs(vals[vals != 0]))) if np.any(vals) else 1.0
+        ax.set_yscale("symlog", linthresh=scale, linscale=1.0)
+        ax.set_ylim(lo * 1.3 if lo < 0 else -0.05 * scale, hi * 1.3 if hi > 0 else scale)
     _zero_line(ax)
-    ax.set_ylabel(f"radius of curvature [{unit}]")
+    ax.set_ylabel(f"radius of curvature [{unit}] (symlog)")
     angle_axis(ax)
     finish_axes(ax, legend=True)
     return True

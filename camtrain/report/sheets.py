@@ -93,15 +93,17 @@ def _frac(x0: float, y0: float, w: float, h: float, size) -> list[float]:
 
 
 def _panel_rects(count: int, size=A4_PORTRAIT) -> list[list[float]]:
-    """Axes rectangles of ``count`` panels in two columns under the header band, rows of
-    at most MAX_ROW_IN (a short sheet leaves the bottom of the page empty)."""
-    rows = max((count + 1) // 2, 1)
+    """Axes rectangles of ``count`` panels under the header band: two columns for five or
+    more, one column of wide panels for three or four (so they fill the page rather than
+    leave its bottom third empty), rows of at most MAX_ROW_IN."""
+    columns = 2 if count > 4 or count < 3 else 1
+    rows = max(-(-count // columns), 1)
     top = size[1] - PAGE_IN - HEADER_IN
     row_in = min((top - PAGE_IN) / rows, MAX_ROW_IN)
-    width = (size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN - GAP_X_IN) / 2
+    width = (size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN - (columns - 1) * GAP_X_IN) / columns
     rects = []
     for i in range(count):
-        r, c = divmod(i, 2)
+        r, c = divmod(i, columns)
         x0 = PAGE_IN + LEFT_IN + c * (width + GAP_X_IN)
         y0 = top - (r + 1) * row_in + XLABEL_IN
         rects.append(_frac(x0, y0, width, row_in - XLABEL_IN - TITLE_IN, size))

@@ -79,9 +79,12 @@ def finish_axes(ax, legend: bool = False, handles=None) -> None:
 
 
 def headroom(ax, fraction: float = 0.32) -> None:
-    """Room above the curves for a legend, so it never hides data."""
+    """Room above the curves for a legend, so it never hides data (measured on the axis's
+    own scale, so a log or symlog axis gets the same share of the panel)."""
     lo, hi = ax.get_ylim()
-    ax.set_ylim(lo, hi + fraction * (hi - lo))
+    t = ax.yaxis.get_transform()
+    a, b = t.transform([lo, hi])
+    ax.set_ylim(lo, float(t.inverted().transform([b + fraction * (b - a)])[0]))
 
 
 def _has_twin(ax) -> bool:
