@@ -96,7 +96,8 @@ def test_schema_is_valid_json_schema_and_accepts_templates():
     for mechanism in MECHANISMS:
         raw = tomllib.loads(invoke("template", mechanism).output)
         Draft202012Validator(schema).validate(raw)
-    assert schema["properties"]["cam"]["properties"]["base_radius"]["exclusiveMinimum"] == 0
+    cam = schema["$defs"]["valve_train"]["properties"]["cam"]
+    assert cam["properties"]["base_radius"]["exclusiveMinimum"] == 0
 
 
 def test_run_writes_summary_and_cycle(tmp_path):

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.fields import When, option, quantity, section
 from camtrain.deck.schema_bearing_model import (
     BearingCavitation,
     BearingModelName,
@@ -48,6 +48,8 @@ class BearingSpeed:
     journal: float = quantity("Journal speed", "rpm", gt=-1e6, lt=1e6, example=1500.0)
     bearing: float = quantity("Bush (bearing) speed; 0 for a fixed bush", "rpm", default=0.0,
                               gt=-1e6, lt=1e6)
+
+    schema_rules = (When("journal", (0,), reject=True),)
 
     @property
     def omega(self) -> float:

@@ -104,6 +104,39 @@ def info_of(f: dataclasses.Field) -> FieldInfo:
     return f.metadata.get("deck", FieldInfo(""))
 
 
+# --------------------------------------------------------------------------- cross-field rules
+
+@dataclass(frozen=True)
+class When:
+    """A cross-field rule of a section, stated once for the JSON Schema: when ``key`` takes one
+    of ``values`` (or, ``negate``, none of them), the keys in ``require`` must be given, those in
+    ``forbid`` must not, ``equal`` fixes values, and ``reject`` refuses the value itself. A
+    section lists its rules in a class attribute ``schema_rules``; its ``problems()`` enforces
+    the same rules with messages."""
+
+    key: str
+    values: tuple
+    require: tuple[str, ...] = ()
+    forbid: tuple[str, ...] = ()
+    equal: tuple[tuple[str, Any], ...] = ()
+    negate: bool = False
+    reject: bool = False    # the value itself is not allowed (e.g. a speed of 0)
+
+
+@dataclass(frozen=True)
+class ExactlyOne:
+    """Exactly one of the groups of keys is given (a group counts when any of its keys is)."""
+
+    groups: tuple[tuple[str, ...], ...]
+
+
+@dataclass(frozen=True)
+class Together:
+    """The keys are given all together or not at all."""
+
+    keys: tuple[str, ...]
+
+
 # --------------------------------------------------------------------------- type introspection
 
 @dataclass(frozen=True)

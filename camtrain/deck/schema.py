@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.fields import ExactlyOne, When, option, quantity, section
 from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one schema namespace
     CamBearing,
     CamDamper,
@@ -64,6 +64,8 @@ class Speed:
     engine: float | None = quantity(
         "Engine (crankshaft) speed, instead of camshaft; camshaft speed = engine speed / 2",
         "rpm", default=None, gt=0)
+
+    schema_rules = (ExactlyOne((("camshaft",), ("engine",))),)
 
     def problems(self, path: str) -> list[Problem]:
         given = [n for n in ("camshaft", "engine") if getattr(self, n) is not None]
@@ -120,6 +122,11 @@ class Pushrod:
                                      "the push-rod joint lies", default=-1)
     branch: Literal[-1, 1] = option("Assembly branch of the follower on the cam side",
                                     default=1)
+
+    schema_rules = (
+        When("layout", ("simple",), require=("tappet_axis_distance",)),
+        When("layout", ("four_bar",),
+             require=("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")))
 
     def problems(self, path: str) -> list[Problem]:
         if self.layout == "simple" and self.tappet_axis_distance is None:
@@ -192,6 +199,16 @@ class Mechanism:
     closing: ClosingPair | None = section(
         "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
         "(centrally pivoted)", applies="desmodromic")
+
+    schema_rules = (
+        When("type", ("domed", "finger", "rocker", "desmodromic"), require=("follower_radius",)),
+        When("type", ("flat",), forbid=("follower_radius",)),
+        When("type", ("pushrod",), require=("pushrod",)),
+        When("type", ("pushrod",), negate=True, forbid=("pushrod",)),
+        When("type", ("desmodromic",), require=("closing",)),
+        When("type", ("desmodromic",), negate=True, forbid=("closing",)),
+        When("type", PIVOTED + ("desmodromic",), require=("A", "B", "D", "kappa", "lambda")),
+        When("type", ("domed",), negate=True, equal=(("offset", 0),)))
 
     def problems(self, path: str) -> list[Problem]:
         out = []

@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.fields import ExactlyOne, Together, When, option, quantity, section
 from camtrain.errors import Problem
 
 LIFT_FORMS = ("four_power", "multipol", "table", "exp_poly", "polynomial",
@@ -113,6 +113,9 @@ class Table:
     noise: float | None = quantity(
         "Measurement noise (standard deviation) of the lifts; omit for printed step / sqrt(12)", "mm",
         default=None, gt=0)
+
+    schema_rules = (ExactlyOne((("angles", "lifts"), ("file",), ("dataset",))),
+                    Together(("angles", "lifts")))
 
     def problems(self, path: str) -> list[Problem]:
         has_inline = self.angles is not None or self.lifts is not None
@@ -228,6 +231,10 @@ class Lift:
         "Williams elementary curve", applies="form = williams_elementary")
     williams_low_jerk: WilliamsLowJerk | None = section(
         "Williams low-jerk curve", applies="form = williams_low_jerk")
+
+    schema_rules = tuple(When("form", (form,), require=(form,),
+                              forbid=tuple(f for f in LIFT_FORMS if f != form))
+                         for form in LIFT_FORMS)
 
     def problems(self, path: str) -> list[Problem]:
         out = []

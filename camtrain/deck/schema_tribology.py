@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity
+from camtrain.deck.fields import When, option, quantity
 from camtrain.errors import Problem
 
 # --------------------------------------------------------------------------- loads
@@ -112,6 +112,11 @@ class Lubricant:
     fit_viscosities: tuple[float, ...] | None = quantity(
         "Dynamic viscosities at the fit temperatures", "Pa·s", default=None, gt=0,
         applies="viscosity_fit")
+
+    schema_rules = (
+        When("viscosity_fit", (None,), require=("viscosity",)),
+        When("viscosity_fit", (None,), negate=True,
+             require=("temperature", "fit_temperatures", "fit_viscosities")))
 
     def __post_init__(self) -> None:
         # the run chain reads ``viscosity``: fill it from the fit (bad fit data -> problems())

@@ -9,6 +9,7 @@ import dataclasses
 import json
 
 from camtrain.deck.fields import REQUIRED, FieldInfo, Shape, deck_key, section_fields
+from camtrain.deck.jsonschema import SCHEMA_FILE
 from camtrain.deck.schema import LIFT_FORMS, MECHANISMS, Deck
 
 _HARRISON_LIFT = {
@@ -209,11 +210,21 @@ def render_engine_template() -> str:
     return "\n".join(lines).rstrip() + "\n"
 
 
+#: first line of every template: editors (taplo, Even Better TOML) validate the deck against
+#: the schema file written by `camtrain schema --out camtrain-deck.schema.json` beside it
+SCHEMA_LINE = f"#:schema ./{SCHEMA_FILE}\n"
+
+
 def render_template(mechanism: str) -> str:
-    """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is.
+    """A complete, commented deck for ``mechanism`` that `camtrain check` accepts as it is,
+    starting with the ``#:schema`` line editors read.
 
     ``"journal_bearing"`` gives the stand-alone bearing deck instead of a valve train.
     """
+    return SCHEMA_LINE + _render_template(mechanism)
+
+
+def _render_template(mechanism: str) -> str:
     if mechanism == "journal_bearing":
         return render_bearing_template()
     if mechanism == "engine":
