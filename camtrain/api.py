@@ -52,6 +52,40 @@ def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Res
     return result
 
 
+#: effects cheap enough for ``check`` to run: the geometry of the train (no loads, no film)
+GEOMETRY_EFFECTS = ("kinematics",)
+
+
+def implausible(deck: LoadedDeck | Deck) -> list[str]:
+    """Warnings on part sizes no engine has (0.018 mm: a deck written in metres)."""
+    from camtrain.deck.plausible import implausible as sizes
+
+    return sizes(_model(deck))
+
+
+def check(deck: LoadedDeck | Deck) -> tuple[str, list[str]]:
+    """The cheap geometry checks ``camtrain check`` adds to validation: (what was checked,
+    warnings of the geometry).
+
+    Runs the plan's geometry effects (``GEOMETRY_EFFECTS``): a flat follower on too small a base
+    circle, a mechanism that cannot assemble raise GeometryError here as in ``run``. For a deck
+    kind without such an effect the first item says plainly that no geometry was checked."""
+    from camtrain.runner import Inputs
+    from camtrain.scene import effect_module
+
+    model = _model(deck)
+    warnings: list[str] = []
+    cheap = [s for s in resolve(model).effects if s.name in GEOMETRY_EFFECTS]
+    if not cheap:
+        return "geometry not checked (no kinematic check for this deck kind; run checks it)", \
+            warnings
+    result = Result()
+    for spec in cheap:
+        effect_module(spec).run(model, Inputs(spec, {}), result)
+    warnings += [w for w in result.warnings if w not in warnings]
+    return f"geometry checked ({', '.join(s.name for s in cheap)})", warnings
+
+
 def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: float = 0.0, *,
           plots: str = "sheets", units: str = "deck") -> list[Path]:
     """Write a run's outputs into ``out_dir`` atomically: cycle.csv, report.txt, summary.json

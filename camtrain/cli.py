@@ -81,8 +81,10 @@ def template(mechanism: str) -> None:
               help="Write to this file instead of standard output.")
 @click.option("--markdown", is_flag=True, help="Write the deck reference page instead.")
 @click.option("--kind", "kind", type=click.Choice(["valve_train", "journal_bearing", "engine"]),
-              default="valve_train", show_default=True, help="Deck kind of the JSON Schema.")
-def schema(out: str | None, markdown: bool, kind: str) -> None:
+              default=None,
+              help="The schema of this deck kind alone (default: one schema for every kind, "
+                   "picked by the deck's kind; templates' #:schema line points at it).")
+def schema(out: str | None, markdown: bool, kind: str | None) -> None:
     """Write the JSON Schema of a deck (for editors that validate while typing)."""
     import json
 
@@ -104,19 +106,25 @@ def schema(out: str | None, markdown: bool, kind: str) -> None:
 @click.argument("deck", type=str)
 @click.option("--quiet", "-q", is_flag=True, help="Print nothing; the exit code tells.")
 def check(deck: str, quiet: bool) -> None:
-    """Validate DECK ('-' for standard input): echo the input and the plan. Exit 0 or 2."""
+    """Validate DECK ('-' for standard input), run its cheap geometry checks and echo the input
+    and the plan. Exit 0, 2 (invalid input) or 3 (impossible geometry, as `run` would)."""
     from camtrain import api
     from camtrain.report.console import print_echo, print_plan
 
     loaded = api.load(deck)
     plan = api.plan(loaded)
+    for w in api.implausible(loaded):     # before the geometry: it explains a failure there
+        click.echo(f"warning: {w}", err=True)
+    checked, warnings = api.check(loaded)
     if not quiet:
         console = _console()
         print_echo(console, loaded)
         print_plan(console, plan)
         for message in getattr(loaded.model, "advisories", list)():
-            console.print(f"[yellow]warning:[/] {message}")
-        console.print(f"[green]{loaded.path}: valid[/]")
+            click.echo(f"warning: {message}")
+        for w in warnings:
+            click.echo(f"warning: {w}")
+        click.echo(f"{loaded.path}: valid; {checked}")
 
 
 #: exit-code precedence over a batch of decks: a bug first, then invalid input, then the other
