@@ -60,7 +60,12 @@ def output_unit(name: str, si_unit: str, units: str = "deck") -> tuple[str, floa
     """
     if units not in UNIT_SYSTEMS:
         raise ValueError(f"units {units!r}: expected one of {', '.join(UNIT_SYSTEMS)}")
-    unit, factor = (si_unit, 1.0) if units == "si" else display_unit(name, si_unit)
+    if units == "si":
+        from camtrain.units import UNITS
+
+        factor, si = UNITS.get(si_unit, (1.0, si_unit))   # a deck unit (deg, rpm) to SI
+        return si or "-", factor
+    unit, factor = display_unit(name, si_unit)
     return unit or "-", factor
 
 

@@ -110,3 +110,13 @@ def test_accuracy_tables_in_deck_units(fast_flat, tmp_path):
         report = json.loads((out / "accuracy.json").read_text(encoding="utf-8"))
         assert report["units"] == units
         assert report["knobs"]["angle_points"]["metrics"]["hertz_max"]["unit"] == unit
+
+
+def test_si_curves_and_speeds_are_si(both):
+    """The overlay curves' angle and a metric in rpm (bounce speed) come out in rad and rad/s."""
+    _, out = both
+    curve = (out["si"] / "curves" / "case_00000.csv").read_text(encoding="utf-8")
+    assert curve.startswith("cam_angle[rad]")
+    si, deck = _rows(out["si"] / "sweep.csv"), _rows(out["deck"] / "sweep.csv")
+    assert float(si[0]["bounce_speed[rad/s]"]) == pytest.approx(
+        float(deck[0]["bounce_speed[rpm]"]) * 3.141592653589793 / 30, rel=1e-12)
