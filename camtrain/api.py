@@ -27,6 +27,21 @@ def loads(text: str, name: str = "<text>") -> LoadedDeck:
     return load_deck_text(text, name)
 
 
+def to_toml(deck: LoadedDeck | Deck) -> str:
+    """A deck (validated, any kind) as TOML in its deck units, every field written."""
+    from camtrain.deck.writer import to_toml as text
+
+    return text(_model(deck))
+
+
+def save_deck(deck: LoadedDeck | Deck, path: str | Path) -> Path:
+    """Write a deck (e.g. one built or changed in Python with dataclasses.replace, values in
+    SI) to ``path`` as TOML that ``load`` reads back to an equal deck."""
+    from camtrain.deck.writer import save
+
+    return save(_model(deck), path)
+
+
 def plan(deck: LoadedDeck | Deck) -> Plan:
     """The effects this deck calls for, with the reason for each."""
     return resolve(_model(deck))

@@ -83,13 +83,16 @@ class _SweepCommand(click.Command):
 @click.option("--overlay-max", type=click.IntRange(0, 200), default=20, show_default=True,
               help="At most this many cases in the per-angle overlay plot.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar or summary.")
+@click.option("--write-decks", is_flag=True,
+              help="Also write each case's deck as OUT/decks/case_NNNNN.toml.")
 @click.option("--units", type=click.Choice(["deck", "si"]), default="deck", show_default=True,
               help="Units of sweep.csv, the curves and the trend tables: deck (mm, µm, MPa, ... "
                    "each with its unit) or si (for machine pipelines). Plots are in deck units.")
 @click.pass_context
 def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zipped: bool,
           sets, out: str | None, jobs: int | None, scheduler: str | None, resume: bool,
-          no_plots: bool, overlay_max: int, quiet: bool, units: str) -> None:
+          no_plots: bool, overlay_max: int, quiet: bool, write_decks: bool,
+          units: str) -> None:
     """Run DECK for many values of one or more parameters (Ball's parametric studies).
 
     \b
@@ -108,7 +111,7 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
 
     try:
         outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots,
-                                overlay_max, quiet, units)
+                                overlay_max, quiet, units, write_decks)
     except CamtrainError as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(exc.exit_code)
@@ -131,7 +134,7 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
 
 
 def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,
-         units="deck"):
+         units="deck", write_decks=False):
     from pathlib import Path
 
     from camtrain.errors import CamtrainError
@@ -150,7 +153,8 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
     out_dir = Path(out) if out else Path("out") / f"{stem}_sweep"
     if quiet:
         return run_sweep(sweep_def, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
-                         plots=not no_plots, overlay_max=overlay_max), out_dir
+                         plots=not no_plots, overlay_max=overlay_max,
+                         write_decks=write_decks), out_dir
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
@@ -165,5 +169,6 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
             bar.update(task, completed=done, bad=f"{failed[0]} not ok" if failed[0] else "")
 
         outcome = run_sweep(sweep_def, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
-                            plots=not no_plots, overlay_max=overlay_max, progress=progress)
+                            plots=not no_plots, overlay_max=overlay_max, progress=progress,
+                            write_decks=write_decks)
     return outcome, out_dir

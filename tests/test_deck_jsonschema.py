@@ -115,6 +115,7 @@ def _set(raw, path, value):
 
 
 _DELETE = object()
+NINE = [-60.0, -45.0, -30.0, -15.0, 0.0, 15.0, 30.0, 45.0, 60.0]
 
 #: (case, base deck or template, [(dotted path, new value or _DELETE)])
 INVALID = [
@@ -137,11 +138,10 @@ INVALID = [
      [("lubricant.viscosity", _DELETE), ("lubricant.viscosity_fit", "two_point")]),
     ("no viscosity at all", "harrison_flat.toml", [("lubricant.viscosity", _DELETE)]),
     ("lift table angles without lifts", "harrison_flat.toml",
-     [("lift", {"form": "table", "table": {"angles": [-60.0, 0.0, 60.0]}})]),
+     [("lift", {"form": "table", "table": {"angles": NINE}})]),
     ("lift table with two sources", "harrison_flat.toml",
-     [("lift", {"form": "table", "table": {"dataset": "zeta_intake",
-                                           "angles": [-60.0, 0.0, 60.0],
-                                           "lifts": [0.0, 9.0, 0.0]}})]),
+     [("lift", {"form": "table", "table": {"dataset": "zeta_intake", "angles": NINE,
+                                           "lifts": [0.0, 1, 4, 8, 9, 8, 4, 1, 0.0]}})]),
     ("push rod simple layout without its tappet distance", "template:pushrod",
      [("mechanism.pushrod.tappet_axis_distance", _DELETE)]),
     ("bearing deck with a valve-train section", "bearing_ocvirk_check.toml",
@@ -151,6 +151,14 @@ INVALID = [
     ("valve-train section in a bearing deck named valve_train", "bearing_ocvirk_check.toml",
      [("kind", "valve_train")]),
 ]
+
+
+def test_valid_table_deck_passes_both(validator):
+    raw = _raw("harrison_flat.toml")
+    raw["lift"] = {"form": "table", "table": {"angles": NINE,
+                                              "lifts": [0.0, 1, 4, 8, 9, 8, 4, 1, 0.0]}}
+    validate(raw, "t")
+    assert _errors(validator, raw) == []
 
 
 @pytest.mark.parametrize("case, base, edits", INVALID, ids=[c[0] for c in INVALID])

@@ -110,8 +110,10 @@ def _check_resume(out_dir: Path, sweep: Sweep) -> None:
 
 def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, scheduler=None,
               executor=None, resume: bool = False, plots: bool = True, overlay_max: int = 20,
-              progress: Callable[[dict, int, int], None] | None = None) -> Outcome:
-    """Run every case not already finished in ``out_dir`` and write all outputs.
+              progress: Callable[[dict, int, int], None] | None = None,
+              write_decks: bool = False) -> Outcome:
+    """Run every case not already finished in ``out_dir`` and write all outputs;
+    ``write_decks`` also writes each case's deck as ``decks/case_NNNNN.toml``.
 
     ``progress(record, done, total)`` is called as each case finishes (also for reused ones).
     """
@@ -128,6 +130,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
             stale.unlink()
     reused = len(done)
     atomic_write(out_dir / "sweep.json", json.dumps(_manifest(sweep), indent=2) + "\n")
+    decks = write_case_decks(out_dir, sweep) if write_decks else []
     todo = [c for c in sweep.cases if c.index not in done]
     total = len(sweep.cases)
     if progress:
@@ -164,7 +167,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         if own:
             executor.close()
     records = sorted(done.values(), key=lambda r: r["index"])
-    outcome = Outcome(records, [csv_path, out_dir / "sweep.json"], reused)
+    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused)
     outcome.written += _write_trends(out_dir, sweep, outcome)
     from camtrain.study.flame_table import write_flame
 
@@ -175,6 +178,25 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         kept = [r for r in records if r["index"] in keep]
         outcome.written += so.overlay_plots(out_dir, sweep.params, kept)
     return outcome
+
+
+def write_case_decks(out_dir: Path, sweep: Sweep) -> list[Path]:
+    """Each case's deck as TOML (the datum deck with the case's values written in, deck
+    units), so any case can be run, checked or handed on by itself."""
+    import tomli_w
+
+    from camtrain.study.sweep import case_raw
+
+    (out_dir / "decks").mkdir(parents=True, exist_ok=True)
+    written = []
+    for case in sweep.cases:
+        values = ", ".join(f"{p.name} = {case.as_dict()[p.name]:g} {p.unit}"
+                           for p in sweep.params)
+        head = f"# case {case.index} of the sweep of {sweep.name}: {values}\n\n"
+        path = out_dir / "decks" / f"case_{case.index:05d}.toml"
+        atomic_write(path, head + tomli_w.dumps(case_raw(sweep.raw, sweep.params, case)))
+        written.append(path)
+    return written
 
 
 def _write_trends(out_dir: Path, sweep: Sweep, outcome: Outcome) -> list[Path]:
