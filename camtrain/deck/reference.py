@@ -35,8 +35,12 @@ def _type_text(shape: Shape) -> str:
 
 def markdown() -> str:
     lines = ["# Deck reference", "",
-             "Generated from camtrain's deck schema (`camtrain schema` gives the same as JSON "
-             "Schema). Units are the units written in the deck; camtrain converts them to SI.", ""]
+             "Generated from camtrain's deck schema (`camtrain schema --out "
+             "camtrain-deck.schema.json` gives the same as JSON Schema, with defaults and the "
+             "rules between fields; templates name it in their first line, `#:schema`). Units "
+             "are the units written in the deck; camtrain converts them to SI inside and writes "
+             "its tables, JSON, report and plots back in these units, each value with its unit "
+             "(`--units si` for SI tables).", ""]
     _section(Deck, "", "The valve-train deck (top level)", lines)
     lines += ["# Journal-bearing decks", "",
               "A deck with `kind = \"journal_bearing\"` describes one journal bearing under a "
