@@ -120,3 +120,20 @@ def test_outputs_are_readable_by_others(tmp_path):
     finally:
         os.umask(old)
     assert stat.S_IMODE((tmp_path / "x.csv").stat().st_mode) == 0o644
+
+
+@pytest.mark.parametrize("units, angle, film", [("deck", "angle[deg]", "min_film[µm]"),
+                                                 ("si", "angle[rad]", "min_film[m]")])
+def test_bearing_outputs_in_deck_units(tmp_path, units, angle, film):
+    """A journal-bearing deck's load-diagram table and summary speak deg and µm (or SI)."""
+    res = _run(DECKS / "bearing_ocvirk_check.toml", "--out", tmp_path, "--no-plots", "--quiet",
+               "--units", units)
+    assert res.exit_code == 0, res.output
+    header, data = _table(tmp_path / "cycle.csv")
+    assert header[0] == angle and film in header
+    summary = json.loads((tmp_path / "summary.json").read_text(encoding="utf-8"))
+    m = summary["metrics"]["min_film"]
+    assert m["unit"] == film.split("[")[1].rstrip("]")
+    j = header.index(film)
+    assert m["value"] == pytest.approx(float(np.nanmin(data[:, j])), rel=1e-6)
+    assert summary["columns"]["angle"]["unit"] == angle.split("[")[1].rstrip("]")
