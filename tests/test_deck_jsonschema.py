@@ -144,6 +144,7 @@ INVALID = [
                                            "lifts": [0.0, 1, 4, 8, 9, 8, 4, 1, 0.0]}})]),
     ("push rod simple layout without its tappet distance", "template:pushrod",
      [("mechanism.pushrod.tappet_axis_distance", _DELETE)]),
+    ("bank-2 lobe without the V angle", "pinto_camshaft.toml", [("camshaft.lobes", "bank2")]),
     ("bearing deck with a valve-train section", "bearing_ocvirk_check.toml",
      [("cam", {"base_radius": 18.0})]),
     ("bearing deck with journal speed 0", "bearing_ocvirk_check.toml", [("speed.journal", 0.0)]),
@@ -167,7 +168,19 @@ def test_camtrain_and_schema_both_reject(validator, case, base, edits):
         else _raw(base)
     raw = copy.deepcopy(raw)
     for path, value in edits:
+        if value == "bank2":        # the first lobe moved to the other bank of a V engine
+            raw["camshaft"]["lobes"][0]["bank"] = 2
+            raw["camshaft"].pop("v_angle", None)
+            continue
         _set(raw, path, value)
     with pytest.raises(InputError):
         validate(raw, case, DECKS)
     assert _errors(validator, raw), f"the schema accepts: {case}"
+
+
+def test_bank_two_lobe_with_v_angle_passes_both(validator):
+    raw = _raw("pinto_camshaft.toml")
+    raw["camshaft"]["lobes"][0]["bank"] = 2
+    raw["camshaft"]["v_angle"] = 60.0
+    validate(raw, "v", DECKS)
+    assert _errors(validator, raw) == []

@@ -124,6 +124,17 @@ class When:
 
 
 @dataclass(frozen=True)
+class WhenItem:
+    """When an item of the array of tables ``items`` has ``key`` in ``values``, the keys in
+    ``require`` must be given in the section itself."""
+
+    items: str
+    key: str
+    values: tuple
+    require: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class ExactlyOne:
     """Exactly one of the groups of keys is given (a group counts when any of its keys is)."""
 

@@ -13,7 +13,16 @@ import dataclasses
 import importlib
 
 from camtrain import __version__
-from camtrain.deck.fields import ExactlyOne, FieldInfo, Shape, Together, When, deck_key, section_fields
+from camtrain.deck.fields import (
+    ExactlyOne,
+    FieldInfo,
+    Shape,
+    Together,
+    When,
+    WhenItem,
+    deck_key,
+    section_fields,
+)
 from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
 from camtrain.units import UNITS
 
@@ -87,6 +96,10 @@ def _rule(rule, defaults: dict) -> dict:
     if isinstance(rule, ExactlyOne):
         return {"oneOf": [_given(g[0]) if len(g) == 1 else {"anyOf": [_given(k) for k in g]}
                           for g in rule.groups]}
+    if isinstance(rule, WhenItem):
+        item = {"properties": {rule.key: {"enum": list(rule.values)}}, "required": [rule.key]}
+        return {"if": {"properties": {rule.items: {"contains": item}}, "required": [rule.items]},
+                "then": {"required": list(rule.require)}}
     if isinstance(rule, Together):
         return {"anyOf": [{"required": list(rule.keys)},
                           {"not": {"anyOf": [_given(k) for k in rule.keys]}}]}

@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.fields import WhenItem, option, quantity, section
 from camtrain.deck.schema_bearing_model import (
     BearingCavitation,
     BearingModelName,
@@ -148,6 +148,8 @@ class Camshaft:
         default=1e-5, gt=0, lt=0.1)
     max_cycles: int = quantity("Most load cycles marched before giving up", "-", default=20,
                                ge=2, le=1000)
+
+    schema_rules = (WhenItem("lobes", "bank", (2,), require=("v_angle",)),)
 
     def problems(self, path: str) -> list[Problem]:
         out = []
