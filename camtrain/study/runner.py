@@ -176,7 +176,8 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends,
                                            title=Path(sweep.name).name)
         kept = [r for r in records if r["index"] in keep]
-        outcome.written += so.overlay_plots(out_dir, sweep.params, kept)
+        outcome.written += so.overlay_plots(out_dir, sweep.params, kept,
+                                            title=Path(sweep.name).name)
     return outcome
 
 

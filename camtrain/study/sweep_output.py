@@ -307,7 +307,8 @@ def _ball_sheet(plt, p: Parameter, ok: list[dict], units: dict):
     return fig
 
 
-def overlay_plots(out_dir: Path, params: list[Parameter], records: list[dict]) -> list[Path]:
+def overlay_plots(out_dir: Path, params: list[Parameter], records: list[dict],
+                  title: str = "") -> list[Path]:
     """Film, load and stress (or lift) against cam angle, one line per kept case."""
     plt = _pyplot()
     kept = []
@@ -338,6 +339,8 @@ def overlay_plots(out_dir: Path, params: list[Parameter], records: list[dict]) -
     axes[-1, 0].set_xlabel("cam angle from maximum lift [deg]")
     axes[-1, 0].set_xlim(-180, 180)
     axes[0, 0].legend(fontsize=6, ncol=2)
+    axes[0, 0].set_title((f"{title}: " if title else "") + "per-angle curves of "
+                         f"{len(kept)} cases", fontsize=9)
     fig.tight_layout()
     return [_save(plt, fig, out_dir / "plots" / "overlay_curves.png")]
 
