@@ -101,7 +101,7 @@ def test_defaults_are_written_in_deck_units(kind):
                 assert props[key]["default"] == pytest.approx(d / UNITS[info.unit][0], rel=1e-12)
             checked += 1
     assert checked > 0
-    assert kind_schema(kind)["properties"]["kind"]["const"] == kind
+    assert kind_schema(kind)["properties"]["kind"]["enum"] == [kind]
 
 
 def _set(raw, path, value):
