@@ -201,4 +201,4 @@ def test_run_writes_the_piston_sheet_and_its_own_table(tmp_path):
     names = {p.name for p in written}
     assert {"sheet_piston.png", "cycle_ring_angle.csv", "cycle.csv"} <= names
     head = (tmp_path / "cycle_ring_angle.csv").read_text().splitlines()
-    assert head[0].startswith("ring_angle[rad],") and len(head) == 721
+    assert head[0].startswith("ring_angle[deg],") and len(head) == 721   # deck units
