@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench lint clean venv
+.PHONY: demo test test-oldest fuzz bench lint clean venv
 
 venv: $(STAMP)
 
@@ -21,6 +21,19 @@ demo: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest
 
+# The declared minimum version of every dependency (and test extra), in a venv of its own.
+OLDEST := .venv-oldest
+$(OLDEST)/.installed: pyproject.toml scripts/oldest_pins.py
+	$(PYTHON) -m venv $(OLDEST)
+	$(OLDEST)/bin/python -m pip install --quiet --upgrade pip
+	$(PYTHON) scripts/oldest_pins.py > $(OLDEST)/constraints.txt
+	$(OLDEST)/bin/python -m pip install --quiet -c $(OLDEST)/constraints.txt -e '.[test]'
+	touch $@
+
+test-oldest: $(OLDEST)/.installed
+	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w)=='
+	$(OLDEST)/bin/python -m pytest -p no:cacheprovider
+
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -p no:cacheprovider
 
@@ -28,4 +41,4 @@ lint: $(STAMP)
 	$(BIN)/ruff check camtrain tests benchmarks
 
 clean:
-	rm -rf $(VENV) out build *.egg-info
+	rm -rf $(VENV) $(OLDEST) out build *.egg-info

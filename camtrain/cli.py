@@ -220,6 +220,14 @@ def _output_dirs(decks: tuple[str, ...], out: str | None) -> list[Path]:
     return dirs
 
 
+def _escape(text: str) -> str:
+    """User and deck text as rich prints it literally (a '[' is not markup); imports rich only
+    when something is printed with it."""
+    from rich.markup import escape
+
+    return escape(text)
+
+
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
              units: str = "deck"):
     """Load, run, check and write one deck; errors become a report, never an exception."""
@@ -232,7 +240,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     name = out_dir.name
     report = DeckReport(name=name, path=deck)
     start = time.perf_counter()
-    task = bar.add_task(f"{name}: running", total=None) if bar else None
+    task = bar.add_task(_escape(f"{name}: running"), total=None) if bar else None
     try:
         loaded = api.load(deck)
         result = api.run(loaded)
@@ -241,7 +249,8 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
 
         def step(label: str, done: int, total: int) -> None:
             if bar:
-                bar.update(task, description=f"{name}: {label}", completed=done, total=total)
+                bar.update(task, description=_escape(f"{name}: {label}"), completed=done,
+                           total=total)
 
         written = write_run(result, loaded, out_dir, wall, checks=checks, plots=plots,
                             progress=step, units=units)
@@ -267,7 +276,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     if show:
         from camtrain.report.console import print_plan, print_run
 
-        console.rule(f"[bold]{loaded.model.title}[/]  ({deck})")
+        console.rule(f"[bold]{_escape(loaded.model.title)}[/]  ({_escape(deck)})")
         print_plan(console, result.plan, result.timings)
         print_run(console, result, written, checks, out_dir)
     elif check and violated(checks):
@@ -279,6 +288,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
 
 
 def _print_batch(console, reports, check: bool) -> None:
+    from rich.markup import escape
     from rich.table import Table
 
     table = Table(title="decks", title_justify="left")
@@ -293,7 +303,7 @@ def _print_batch(console, reports, check: bool) -> None:
         else:
             status = "[green]ok[/]"
         limits = f"{len(r.checks) - bad}/{len(r.checks)} pass" if r.checks else "none set"
-        table.add_row(r.path, status, limits, f"{r.seconds:.2f}")
+        table.add_row(escape(r.path), status, limits, f"{r.seconds:.2f}")
     console.print(table)
 
 

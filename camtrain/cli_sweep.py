@@ -6,6 +6,7 @@ imported when the command runs.
 from __future__ import annotations
 
 import sys
+from contextlib import contextmanager
 
 import click
 
@@ -105,20 +106,21 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
     Writes sweep.csv (one row per case, with status and message), trends.csv and trends.md
     (rises / falls per metric and parameter), and plots. Failed cases are recorded and the
     sweep goes on. Exit codes: 0 done (even with failed cases), 2 bad arguments or deck,
-    70 an internal error in some case, 130 interrupted (use --resume).
+    70 an internal error in some case, 130 interrupted, 143 terminated (use --resume).
     """
     from camtrain.errors import EXIT_INTERNAL, CamtrainError
 
     try:
-        outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots,
-                                overlay_max, quiet, units, write_decks)
+        with _terminate_as_interrupt():
+            outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume,
+                                    no_plots, overlay_max, quiet, units, write_decks)
     except CamtrainError as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(exc.exit_code)
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as exc:
         click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
                    err=True)
-        sys.exit(130)
+        sys.exit(143 if isinstance(exc, Terminated) else 130)
     if not quiet:
         counts = ", ".join(f"{outcome.count(s)} {s}" for s in ("ok", "lost_contact", "failed",
                                                               "error") if outcome.count(s))
@@ -131,6 +133,30 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
         click.echo("some cases hit an internal error (a bug in camtrain; see sweep.csv)",
                    err=True)
         sys.exit(EXIT_INTERNAL)
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM received: handled as Ctrl-C, exit 143."""
+
+
+@contextmanager
+def _terminate_as_interrupt():
+    """SIGTERM (CI cancellation, `timeout`) ends a sweep as Ctrl-C does: the workers are stopped
+    and the finished cases kept, instead of this process dying and leaving its workers running."""
+    import signal
+    import threading
+
+    def interrupt(signum, frame):
+        raise Terminated
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,

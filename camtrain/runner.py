@@ -56,7 +56,20 @@ def run_plan(deck, plan: Plan | None = None) -> Result:
             out = effect_module(spec).run(deck, Inputs(spec, products), result)
             result.timings[spec.name] = time.perf_counter() - start
             products.update(_checked(spec, out))
+    warn_non_finite(result)
     return result
+
+
+def warn_non_finite(result: Result) -> None:
+    """A metric that came out NaN or infinite is never silent: a warning names it (unless an
+    effect's own warning already does)."""
+    import math
+
+    for name, metric in result.metrics.items():
+        if math.isfinite(metric.value) or any(name in w for w in result.warnings):
+            continue
+        what = "not computed (NaN)" if math.isnan(metric.value) else f"{metric.value}"
+        result.warn(f"{name} is {what}: {metric.description}")
 
 
 def _checked(spec: EffectSpec, out) -> dict[str, object]:

@@ -232,6 +232,11 @@ def _type_name(value: Any) -> str:
     return type(value).__name__
 
 
+#: the magnitudes a deck number may have, in deck units (mm, rpm, GPa, ...): anything outside is a
+#: slip (a unit, an exponent), and beyond it floating point overflows or divides by zero
+MAGNITUDE = (1e-12, 1e12)
+
+
 def _check_number(value: Any, info: FieldInfo, path: str, problems: list[Problem]) -> float | None:
     """Validate one number in deck units; return it converted to SI, or None after a problem."""
     if not _is_number(value):
@@ -241,6 +246,12 @@ def _check_number(value: Any, info: FieldInfo, path: str, problems: list[Problem
     x = float(value)
     if not math.isfinite(x):
         problems.append(Problem(path, "must be finite", value, info.expected_text()))
+        return None
+    if x != 0.0 and not MAGNITUDE[0] <= abs(x) <= MAGNITUDE[1]:
+        problems.append(Problem(
+            path, "is beyond the magnitudes camtrain computes with", value,
+            f"0 or a magnitude between {MAGNITUDE[0]:g} and {MAGNITUDE[1]:g} {info.unit}",
+            "check the unit: the deck is written in the units its prompts name"))
         return None
     bad = ((info.gt is not None and not x > info.gt) or (info.ge is not None and not x >= info.ge)
            or (info.lt is not None and not x < info.lt) or (info.le is not None and not x <= info.le))

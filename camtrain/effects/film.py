@@ -31,6 +31,9 @@ _TRANSIENT = {
 
 def reason(deck, planned) -> str:
     model = deck.tribology.film_model
+    if "ContactLoad" in planned and deck.cam.width is None:
+        return ("lubricant given, contact loads planned but no cam.width: Blok rigid-piezoviscous "
+                "film for line contacts, which needs no load per unit width (Ball eq. 4.3)")
     if "ContactLoad" in planned:
         if model == "steady":
             return "lubricant given and contact loads planned: EHL film with the contact load"
@@ -73,8 +76,16 @@ def run_pair(contact, kin, load, res, component: str | None = None):
 
     import numpy as np
 
+    from camtrain.contact.hertz import is_line
     from camtrain.formulas import film_parameter
 
+    no_width = load is not None and contact.width is None and is_line(kin)
+    if no_width:
+        # a line contact's EHL film needs the load per unit width: without the cam width the
+        # load-free film is the one that can be computed
+        res.warn("no cam.width: the film of the line contact is the load-free Blok film "
+                 "(Ball eq. 4.3), not the EHL film under the contact load")
+        load = None
     tag = f" ({component} pair)" if component else ""
     col = partial(res.add_column, component=component)
     met = partial(res.add_metric, component=component)
@@ -99,7 +110,7 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     met("film_min_at_max_lift", film.min[k], "m",
                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
-    if load is None:
+    if load is None and not no_width:
         res.warn("film without contact loads: Blok rigid-piezoviscous film (Ball eq. 4.3)")
     if film.steady is not None:
         transient_outputs(film, kin, res, component)

@@ -50,6 +50,11 @@ def run(deck, inputs, res):
         capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
         met("boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
+        skipped = pos & ~field.used & ~np.isnan(hertz[component].pmax)
+        if np.any(skipped):
+            res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "
+                     "where the Hertz stress or the film is not finite: friction, torque and "
+                     "power_loss_mean count 0 there and understate the loss")
         if not np.all(np.isfinite(force)):
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")
     return ContactFriction(tuple(fields), model=CamContact.from_deck(deck).friction_law)

@@ -44,6 +44,10 @@ def run(deck, inputs, res):
         if np.any(hz.bad):
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
+        if np.any(np.isposinf(hz.pmax)):
+            res.warn(f"hertz_pmax is infinite{tag} at {int(np.isposinf(hz.pmax).sum())} loaded "
+                     "angles (a vanishing contact radius or width): the contact cannot carry "
+                     "the load there")
         p = np.where(np.isnan(hz.pmax), -np.inf, hz.pmax)
         i = int(np.argmax(p))
         met("hertz_max", hz.pmax[i], "Pa",

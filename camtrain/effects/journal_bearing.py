@@ -81,4 +81,8 @@ def run(deck, inputs, result):
                       "largest cycle-to-cycle change of eps at the end")
     result.add_metric("petroff_ratio", orbit.mean_power / petroff if petroff else math.nan, "-",
                       "mean power / Petroff power")
+    if not petroff:
+        result.warn("petroff_ratio is undefined (NaN): the Petroff power is 0 because the journal "
+                    "and the bush turn at the same speed (speed.journal = speed.bearing), so no "
+                    "film is sheared")
     return BearingOrbits((orbit,))

@@ -22,11 +22,11 @@ KEY_METRICS = ("max_lift", "power_loss_mean", "film_min_at_max_lift", "film_min"
 
 
 def print_echo(console: Console, deck: LoadedDeck) -> None:
-    table = Table(title=f"{deck.model.title}  ({deck.path})", title_justify="left")
+    table = Table(title=escape(f"{deck.model.title}  ({deck.path})"), title_justify="left")
     for name in ("field", "value", "unit", "what it is"):
         table.add_column(name, overflow="fold")
     for path, doc, value, unit in echo_rows(deck.model):
-        table.add_row(path, value, unit, doc)
+        table.add_row(escape(path), escape(value), escape(unit), escape(doc))
     console.print(table)
 
 
@@ -37,7 +37,7 @@ def print_plan(console: Console, plan: Plan, timings: dict[str, float] | None = 
     for step in plan.steps:
         runs = "yes" if step.chosen else "no"
         t = (timings or {}).get(step.effect)
-        table.add_row(step.effect, runs, "" if t is None else f"{t * 1e3:.1f} ms",
+        table.add_row(escape(step.effect), runs, "" if t is None else f"{t * 1e3:.1f} ms",
                       escape(step.reason))
     console.print(table)
 
@@ -55,23 +55,23 @@ def print_run(console: Console, result: Result, written: list[Path], checks=None
         for name in keys:
             m = result.metrics[name]
             value, unit = shown(name, m.value, m.unit)
-            table.add_row(name, value, unit, deg(m.angle), m.description)
+            table.add_row(name, value, unit, deg(m.angle), escape(m.description))
         console.print(table)
     elif result.metrics:
         console.print(f"{len(result.metrics)} results (see summary.json)")
     for w in result.warnings + find(result).messages(result.warnings):
-        console.print(f"[yellow]warning:[/] {w}")
+        console.print(f"[yellow]warning:[/] {escape(w)}")
     print_checks(console, checks or [])
     if out_dir is not None:
-        console.print(f"wrote {len(written)} files to {out_dir}")
+        console.print(escape(f"wrote {len(written)} files to {out_dir}"))
     elif written:
-        console.print("wrote " + ", ".join(str(p) for p in written))
+        console.print(escape("wrote " + ", ".join(str(p) for p in written)))
 
 
 def print_checks(console: Console, checks) -> None:
     for c in checks:
         mark = "[green]ok[/]  " if c.ok else "[bold red]FAIL[/]"
-        console.print(f"{mark} {c.text()}")
+        console.print(f"{mark} {escape(c.text())}")
 
 
 @contextmanager

@@ -111,7 +111,7 @@ def _measure(result: Result, kind: str, column: str | None, metric: str | None):
         y = np.asarray(result[column], dtype=float)
         if kind == "max" and column == "friction_torque":
             y = np.abs(y)
-        mask = np.isfinite(y)
+        mask = ~np.isnan(y)  # an infinite value is the worst one, never skipped
         contact = in_contact(result)
         if kind == "min" and contact is not None:
             mask &= contact
@@ -121,7 +121,7 @@ def _measure(result: Result, kind: str, column: str | None, metric: str | None):
             return float(y[i]), float(result["cam_angle"][i]), ""
     if metric and metric in result.metrics:
         m = result.metrics[metric]
-        if math.isfinite(m.value):
+        if not math.isnan(m.value):
             return m.value, m.angle, ""
     missing = " or ".join(f"'{n}'" for n in (column, metric) if n)
     return None, None, f"the run has no {missing}"

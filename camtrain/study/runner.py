@@ -106,6 +106,24 @@ def _check_resume(out_dir: Path, sweep: Sweep) -> None:
         raise InputError(Problem("--resume", f"the deck {sweep.name} changed since the sweep in "
                                  f"{out_dir} started", None, "the same deck",
                                  "start a new sweep (without --resume) or use another --out"))
+    # a finished case is found again by its swept values alone: everything else that defines the
+    # sweep (the --set values, which parameters, their datum, --zip) must be what it ran with
+    def definition(manifest: dict) -> dict:
+        return {"set": manifest.get("set"), "zip": manifest.get("zip"),
+                "parameters": [{k: p.get(k) for k in ("name", "path", "unit", "datum")}
+                               for p in manifest.get("parameters", [])]}
+
+    new = definition(json.loads(json.dumps(_manifest(sweep))))
+    was = definition(old)
+    what = {"set": "the --set values", "parameters": "the swept parameters", "zip": "--zip"}
+    changed = [what[k] for k in new if new[k] != was[k]]
+    if changed:
+        raise InputError(Problem(
+            "--resume", f"the sweep definition changed since the sweep in {out_dir} started: "
+            + ", ".join(changed) + f" (was {was}, now {new})", None,
+            "the same --param/--set/--zip options",
+            "its finished cases were computed with the old definition; start a new sweep "
+            "(without --resume) or use another --out"))
 
 
 def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, scheduler=None,
@@ -162,6 +180,12 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
                     so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
                     last = time.monotonic()
                     cost = last - tick
+    except BaseException:
+        # interrupted (Ctrl-C, SIGTERM) or failed: the workers stop now, not after their chunks
+        if own:
+            getattr(executor, "abort", executor.close)()
+            own = False
+        raise
     finally:
         so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
         if own:

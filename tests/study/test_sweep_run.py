@@ -204,3 +204,22 @@ def test_scheduler_without_dask_is_a_clear_error(fast_flat, tmp_path):
     res = _invoke([fast_flat, "--param", "speed", "--values", "1500", "--scheduler",
                    "tcp://127.0.0.1:1", "--out", tmp_path])
     assert res.exit_code == 2 and "camtrain[dask]" in res.output
+
+
+@pytest.mark.parametrize("first, second", [
+    (["--set", "solver.angle_points=120"], ["--set", "solver.angle_points=150"]),
+    ([], ["--set", "spring.rate=30"]),
+    (["--zip", "-p", "speed", "--values", "1500,2000"], ["-p", "speed", "--values", "1500,2000"]),
+])
+def test_resume_refuses_a_changed_sweep_definition(fast_flat, tmp_path, first, second):
+    base = [str(fast_flat), "-p", "base_radius", "--values", "17,18", "--out", str(tmp_path),
+            "-j", "1", "--no-plots", "-q"]
+    res = CliRunner().invoke(sweep_command, base + first)
+    assert res.exit_code == 0, res.output
+    before = (tmp_path / "sweep.csv").read_bytes()
+    res = CliRunner().invoke(sweep_command, base + second + ["--resume"])
+    assert res.exit_code == 2, res.output
+    assert "sweep definition changed" in res.output
+    assert (tmp_path / "sweep.csv").read_bytes() == before
+    res = CliRunner().invoke(sweep_command, base + first + ["--resume"])
+    assert res.exit_code == 0, res.output

@@ -1,0 +1,42 @@
+"""SIGTERM (CI cancellation, `timeout`) to `camtrain sweep -j N` stops its workers too."""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+psutil = pytest.importorskip("psutil")
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_path):
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(fast_flat), "-p", "speed",
+           "--range", "1000:3000:400", "-j", "3", "--no-plots", "-q", "--out", str(tmp_path / "s")]
+    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    parent = psutil.Process(proc.pid)
+    workers: list = []
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        workers = [p for p in parent.children(recursive=True)
+                   if "spawn_main" in " ".join(p.cmdline())]
+        if len(workers) >= 2:
+            break
+        time.sleep(0.2)
+    assert len(workers) >= 2, f"the sweep never started its workers: {proc.poll()}"
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGTERM)
+    proc.wait(timeout=30)
+    _, alive = psutil.wait_procs(workers, timeout=10)
+    for p in alive:
+        p.kill()
+    _, err = proc.communicate(timeout=10)
+    assert not alive, f"workers still running after SIGTERM: {[p.pid for p in alive]}"
+    assert proc.returncode == 143, err.decode()
+    assert b"--resume" in err and b"Traceback" not in err

@@ -1,0 +1,132 @@
+"""Issue 16, first half: decks `check` accepts never crash `run`; results are never silently wrong.
+
+Each test here failed before its fix (behaviour tier).
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from camtrain.cli import main
+from camtrain.deck.templates import render_template
+from tests.conftest import DECKS
+
+FLAT = render_template("flat")
+
+
+def _set(text: str, key: str, value: str) -> str:
+    """The deck text with the first ``key = ...`` line's value replaced."""
+    new, n = re.subn(rf"(?m)^{re.escape(key)} = .*$", f"{key} = {value}", text, count=1)
+    assert n == 1, key
+    return new
+
+
+def _drop(text: str, key: str) -> str:
+    new, n = re.subn(rf"(?m)^{re.escape(key)} = .*\n", "", text, count=1)
+    assert n == 1, key
+    return new
+
+
+def _run(text: str, tmp_path, *args):
+    return CliRunner().invoke(main, ["run", "-", "--no-plots", "--out", str(tmp_path / "o"),
+                                     *args], input=text)
+
+
+# ---------------------------------------------------------------- crashes on decks check accepts
+
+def test_valve_train_without_cam_width_runs_with_the_load_free_film(tmp_path):
+    deck = _set(_drop(FLAT, "width"), "angle_points", "120")
+    assert CliRunner().invoke(main, ["check", "-", "-q"], input=deck).exit_code == 0
+    res = _run(deck, tmp_path)
+    assert res.exit_code == 0, res.output
+    assert "no cam.width" in res.output and "Blok" in res.output
+
+
+BEARING = (DECKS / "bearing_ocvirk_check.toml").read_text()
+
+
+@pytest.mark.parametrize("deck, key, value, field", [
+    (FLAT, "base_radius", "1e300", "cam.base_radius"),
+    (FLAT, "camshaft", "1e300", "speed.camshaft"),
+    (render_template("finger"), "follower_radius", "1e300", "mechanism.follower_radius"),
+    (BEARING, "clearance", "1e-300", "bearing.clearance"),
+    (BEARING, "length", "1e300", "bearing.length"),
+    (BEARING, "length", "-1e-300", "bearing.length"),
+])
+def test_absurd_magnitudes_are_input_errors_naming_the_field(deck, key, value, field, tmp_path):
+    res = _run(_set(deck, key, value), tmp_path)
+    assert res.exit_code == 2, res.output
+    assert field in res.output and "internal error" not in res.output
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("title", ["Intake [rev B]", "Intake [/x] test", "[bold]x[/bold] [/]"])
+def test_user_text_is_never_rich_markup(title, tmp_path):
+    deck = _set(_set(FLAT, "title", f'"{title}"'), "angle_points", "120")
+    checked = CliRunner().invoke(main, ["check", "-"], input=deck)
+    assert checked.exit_code == 0, checked.output
+    assert title in checked.output
+    assert "[camshaft] section" in checked.output and "[guides] section" in checked.output
+    res = _run(deck, tmp_path)
+    assert res.exit_code == 0, res.output
+    assert title in res.output
+
+
+# ---------------------------------------------------------------- wrong or silent results
+
+def test_non_finite_metric_is_named_in_a_warning():
+    from camtrain.result import Result
+    from camtrain.runner import warn_non_finite
+
+    res = Result()
+    res.add_metric("film_min_at_max_lift", math.nan, "m", "film at the nose")
+    res.add_metric("hertz_max", math.inf, "Pa", "largest Hertz pressure")
+    res.add_metric("load_max", 1.0, "N", "largest load")
+    warn_non_finite(res)
+    assert any("film_min_at_max_lift" in w for w in res.warnings)
+    assert any("hertz_max" in w for w in res.warnings)
+    assert not any("load_max" in w for w in res.warnings)
+
+
+def test_limit_check_fails_an_infinite_hertz_stress():
+    from camtrain.deck.schema_tribology import Limits
+    from camtrain.report.limits import evaluate
+    from camtrain.result import Result
+
+    res = Result()
+    theta = np.linspace(-np.pi, np.pi, 5)
+    res.add_axis("cam_angle", theta, "rad", "cam angle")
+    res.add_column("hertz_pmax", np.array([1e8, np.inf, 2e8, np.nan, 1e8]), "Pa", "p")
+    [check] = evaluate(Limits(max_hertz=650e6), res)
+    assert not check.ok and check.value == math.inf
+
+
+def test_friction_warns_where_an_infinite_hertz_stress_leaves_it_uncomputed(monkeypatch):
+    from camtrain import api
+    from camtrain.contact.model import CamContact
+
+    original = CamContact.hertz
+
+    def one_infinite(self, kin, load):
+        field = original(self, kin, load)
+        field.pmax[int(np.nanargmax(field.pmax))] = np.inf
+        return field
+
+    monkeypatch.setattr(CamContact, "hertz", one_infinite)
+    result = api.run(api.loads(_set(FLAT, "angle_points", "120")))
+    assert any("friction_force not computed" in w for w in result.warnings)
+    assert any("hertz_pmax is infinite" in w for w in result.warnings)
+
+
+def test_petroff_ratio_of_a_bush_turning_with_the_journal_is_named_in_a_warning(tmp_path):
+    deck = _set(BEARING, "bearing", "1500.0")
+    res = _run(deck + '\n', tmp_path, "-q")
+    assert res.exit_code == 0, res.output
+    import json
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["metrics"]["petroff_ratio"]["value"] is None
+    assert any("petroff_ratio" in w for w in summary["warnings"])
