@@ -13,6 +13,7 @@ import click
 
 from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
+from camtrain.interrupts import interruptible
 
 #: --units of the commands that write tables: the deck's units (default) or SI for pipelines
 UNITS_OPTION = dict(type=click.Choice(["deck", "si"]), default="deck", show_default=True,
@@ -177,7 +178,7 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
         from contextlib import nullcontext
 
         bars = nullcontext()
-    with bars as bar:
+    with interruptible(), bars as bar:
         overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
         for deck, out_dir in zip(decks, targets, strict=True):
             report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
@@ -320,16 +321,22 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
                  quiet: bool, units: str) -> None:
     """Lift, velocity, acceleration and jerk of DECK's lift law: lift.csv and a plot sheet."""
     from camtrain import api
+    from camtrain.report.outputs import write_staged
     from camtrain.report.tables import write_table
 
     loaded = api.load(deck)
     result = api.lift(loaded, points)
     out_dir = Path(out) if out else Path("out") / (Path(deck).stem if deck != "-" else "stdin")
-    written = [write_table(result, out_dir / "lift.csv", units)]
-    if not no_plots:
-        from camtrain.report.plots import lift_sheet
 
-        written += lift_sheet(result, f"{loaded.model.title}: lift law", out_dir / "lift")
+    def write(stage: Path) -> None:
+        write_table(result, stage / "lift.csv", units)
+        if not no_plots:
+            from camtrain.report.plots import lift_sheet
+
+            lift_sheet(result, f"{loaded.model.title}: lift law", stage / "lift")
+
+    with interruptible():
+        written = write_staged(out_dir, write)
     if not quiet:
         from camtrain.report.console import print_run
 

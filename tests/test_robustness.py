@@ -130,3 +130,46 @@ def test_petroff_ratio_of_a_bush_turning_with_the_journal_is_named_in_a_warning(
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert summary["metrics"]["petroff_ratio"]["value"] is None
     assert any("petroff_ratio" in w for w in summary["warnings"])
+
+
+# ---------------------------------------------------------------- interrupts and atomic outputs
+
+def _swallowed_ctrl_c(*args, **kwargs):
+    """A Ctrl-C arriving where something swallows it (a finalizer, a callback)."""
+    import signal
+
+    try:
+        signal.raise_signal(signal.SIGINT)
+    except BaseException:  # noqa: BLE001 - what matplotlib/PIL clean-up code does to it
+        pass
+    return []
+
+
+def test_ctrl_c_swallowed_while_plotting_still_interrupts_run(monkeypatch, tmp_path):
+    import camtrain.report.sheets as sheets
+
+    monkeypatch.setattr(sheets, "write_plots", _swallowed_ctrl_c)
+    deck = _set(FLAT, "angle_points", "120")
+    res = CliRunner().invoke(main, ["run", "-", "--out", str(tmp_path / "o")], input=deck)
+    assert res.exit_code == 130, res.output
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("plot", ["interrupt", "swallowed"])
+def test_interrupted_lift_leaves_no_lift_csv_without_plots(monkeypatch, tmp_path, plot):
+    import camtrain.report.plots as plots
+
+    def interrupt(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(plots, "lift_sheet", interrupt if plot == "interrupt" else _swallowed_ctrl_c)
+    res = CliRunner().invoke(main, ["lift", "-", "--out", str(tmp_path / "o")], input=FLAT)
+    assert res.exit_code == 130, res.output
+    assert not (tmp_path / "o").exists()
+    assert not list(tmp_path.iterdir())   # no staging directory left either
+
+
+def test_lift_writes_its_table_and_plots_together(tmp_path):
+    res = CliRunner().invoke(main, ["lift", "-", "--out", str(tmp_path / "o"), "-q"], input=FLAT)
+    assert res.exit_code == 0, res.output
+    assert {p.name for p in (tmp_path / "o").iterdir()} >= {"lift.csv", "lift.png"}

@@ -63,7 +63,23 @@ def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: floa
         shutil.rmtree(stage, ignore_errors=True)
 
 
+def write_staged(out_dir: Path, write: Callable[[Path], object]) -> list[Path]:
+    """Call ``write(stage)`` on a staging directory beside ``out_dir``; move what it wrote into
+    ``out_dir`` only when it returns (nothing is left behind on an error or Ctrl-C)."""
+    out_dir = Path(out_dir)
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.staging-", dir=out_dir.parent))
+    try:
+        write(stage)
+        return _move_in(stage, out_dir)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
 def _move_in(stage: Path, out_dir: Path) -> list[Path]:
+    from camtrain.interrupts import raise_if_interrupted
+
+    raise_if_interrupted()      # a Ctrl-C that something swallowed while the files were drawn
     files = sorted(p for p in stage.rglob("*") if p.is_file())
     files.sort(key=lambda p: p.name == "summary.json")      # the completion mark goes last
     out_dir.mkdir(parents=True, exist_ok=True)
