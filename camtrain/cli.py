@@ -256,7 +256,8 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
         written = write_run(result, loaded, out_dir, wall, checks=checks, plots=plots,
                             progress=step, units=units)
     except CamtrainError as exc:
-        message = str(exc) if deck in str(exc) else f"{deck}: {exc}"
+        shown = "<stdin>" if deck == "-" else deck
+        message = str(exc) if shown in str(exc) else f"{shown}: {exc}"
         report.error, report.exit_code = message, exc.exit_code
         report.seconds = time.perf_counter() - start
         click.echo(f"error: {report.error}", err=True)

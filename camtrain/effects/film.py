@@ -110,6 +110,10 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     met("film_min_at_max_lift", film.min[k], "m",
                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])
+    if not np.isfinite(film.min[k]):
+        why = ("the pair carries no load there" if load is not None and not load[k] > 0.0
+               else "the contact is not Hertzian there")
+        res.warn(f"film_min_at_max_lift is undefined (NaN){tag}: {why}")
     if load is None and not no_width:
         res.warn("film without contact loads: Blok rigid-piezoviscous film (Ball eq. 4.3)")
     if film.steady is not None:
