@@ -34,6 +34,12 @@ test-oldest: $(OLDEST)/.installed
 	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w)=='
 	$(OLDEST)/bin/python -m pytest -p no:cacheprovider
 
+# Thousands of fuzzed decks through `camtrain run` (make test runs the first 200 cases).
+FUZZ_CASES ?= 3000
+fuzz: $(STAMP)
+	CAMTRAIN_FUZZ_START=200 CAMTRAIN_FUZZ_CASES=$(FUZZ_CASES) $(BIN)/python -m pytest \
+		tests/test_fuzz_decks.py -k mutated_deck -p no:cacheprovider
+
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -p no:cacheprovider
 

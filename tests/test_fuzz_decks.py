@@ -7,8 +7,10 @@ from `check` or an uncaught exception.
 from __future__ import annotations
 
 import math
+import os
 import tomllib
 
+import pytest
 import tomli_w
 from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
@@ -16,8 +18,13 @@ from hypothesis import strategies as st
 
 from camtrain.cli import main
 from camtrain.deck.templates import render_template
+from tests.fuzz.mutate import ROOT, small_grid
+from tests.fuzz.mutate import case as fuzz_case
+from tests.fuzz.mutate import sources as fuzz_sources
+from tests.fuzz.verdict import assert_sane, run_deck
 
 TEMPLATES = {m: tomllib.loads(render_template(m)) for m in ("flat", "finger", "rocker", "domed")}
+TEMPLATE_TEXT = render_template("flat")
 
 junk_values = st.one_of(
     st.none(), st.booleans(), st.integers(-10**12, 10**12),
@@ -105,3 +112,113 @@ def test_base_radius_any_float(x):
         assert x < 13.6 and "cam.base_radius" in res.output and "must exceed" in res.output
     else:
         assert res.exit_code == 0 and x > 13.5, res.output
+
+
+# ------------------------------------------------------------------ `run` over mutated decks
+# Every shipped deck and template, mutated (tests/fuzz/mutate.py: wrong types, NaN/inf, 0,
+# +-1e300, 1e-300, unit strings, missing/unknown keys and sections, shuffled and duplicated table
+# rows, text damage), through `camtrain run`: exit 0-4 only, no traceback, no output directory
+# on failure, no non-finite metric without a warning naming it (tests/fuzz/verdict.py).
+# `make test` runs FUZZ_CASES cases; `make fuzz` runs thousands (CAMTRAIN_FUZZ_CASES).
+
+FUZZ_CASES = int(os.environ.get("CAMTRAIN_FUZZ_CASES", "200"))
+FUZZ_START = int(os.environ.get("CAMTRAIN_FUZZ_START", "0"))
+
+
+@pytest.mark.parametrize("seed", range(FUZZ_START, FUZZ_START + FUZZ_CASES))
+def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path):
+    name, text, done = fuzz_case(seed)
+    out = tmp_path / "out"
+    assert_sane(run_deck(text, out), out, f"fuzz case {seed}: {name}: {done}")
+
+
+def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path):
+    """The fuzz starts from every shipped deck and template, each valid as given."""
+    names = sorted(fuzz_sources())
+    assert {n.split(":")[1] for n in names if n.startswith("deck:")} == {
+        p.stem for p in (ROOT / "decks").glob("*.toml")}
+    assert len([n for n in names if n.startswith("template:")]) == 7
+    for i, name in enumerate(names):
+        out = tmp_path / str(i)
+        res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(fuzz_sources()[name]))), out)
+        assert_sane(res, out, name)
+        assert res.exit_code in (0, 1), (name, res.output[-500:])
+
+
+class _Crash(RuntimeError):
+    pass
+
+
+def _crash(*args, **kwargs):
+    raise _Crash("injected")
+
+
+def test_the_verdict_catches_an_internal_error(monkeypatch, tmp_path):
+    """An effect that crashes gives exit 70: the fuzz assertion must fail on it."""
+    import camtrain.effects.kinematics as kinematics
+
+    monkeypatch.setattr(kinematics, "run", _crash)
+    out = tmp_path / "out"
+    res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(TEMPLATE_TEXT))), out)
+    assert res.exit_code == 70
+    with pytest.raises(AssertionError, match="exit code 70"):
+        assert_sane(res, out)
+
+
+def test_the_verdict_catches_a_traceback(monkeypatch, tmp_path):
+    """A crash that escapes the CLI's last line of defence (a traceback for the user) fails
+    the fuzz assertion too, whether it escapes or is printed."""
+    import traceback
+
+    import click
+
+    import camtrain.cli as cli
+    import camtrain.effects.kinematics as kinematics
+
+    monkeypatch.setattr(kinematics, "run", _crash)
+    monkeypatch.setattr(cli._Group, "invoke", click.Group.invoke)   # no last line of defence
+    monkeypatch.setattr(cli, "_run_one", lambda deck, *a, **k: _crash())
+    out = tmp_path / "out"
+    res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(TEMPLATE_TEXT))), out)
+    with pytest.raises(AssertionError, match="exception escaped"):
+        assert_sane(res, out)
+
+    def printed(deck, *a, **k):
+        try:
+            _crash()
+        except _Crash:
+            click.echo(traceback.format_exc(), err=True)
+        raise SystemExit(2)
+
+    monkeypatch.setattr(cli, "_run_one", printed)
+    res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(TEMPLATE_TEXT))), out)
+    with pytest.raises(AssertionError, match="traceback printed"):
+        assert_sane(res, out)
+
+
+def test_the_verdict_catches_a_silent_non_finite_metric(monkeypatch, tmp_path):
+    import camtrain.runner as runner
+
+    from camtrain.result import Result
+
+    monkeypatch.setattr(runner, "warn_non_finite", lambda result: None)
+
+    add = Result.add_metric
+
+    def nan_max_lift(self, name, value, *a, **k):
+        add(self, name, float("nan") if name == "max_lift" else value, *a, **k)
+
+    monkeypatch.setattr(Result, "add_metric", nan_max_lift)
+    out = tmp_path / "out"
+    res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(TEMPLATE_TEXT))), out)
+    with pytest.raises(AssertionError, match="non-finite metrics without a warning"):
+        assert_sane(res, out)
+
+
+def test_the_verdict_catches_an_output_directory_left_by_a_failure(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    res = run_deck("title = 1\n", out)
+    assert res.exit_code == 2
+    with pytest.raises(AssertionError, match="output directory left"):
+        assert_sane(res, out)
