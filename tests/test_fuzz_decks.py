@@ -198,7 +198,6 @@ def test_the_verdict_catches_a_traceback(monkeypatch, tmp_path):
 
 def test_the_verdict_catches_a_silent_non_finite_metric(monkeypatch, tmp_path):
     import camtrain.runner as runner
-
     from camtrain.result import Result
 
     monkeypatch.setattr(runner, "warn_non_finite", lambda result: None)

@@ -173,3 +173,21 @@ def test_lift_writes_its_table_and_plots_together(tmp_path):
     res = CliRunner().invoke(main, ["lift", "-", "--out", str(tmp_path / "o"), "-q"], input=FLAT)
     assert res.exit_code == 0, res.output
     assert {p.name for p in (tmp_path / "o").iterdir()} >= {"lift.csv", "lift.png"}
+
+
+# ---------------------------------------------------------------- messages in the deck's words
+
+@pytest.mark.parametrize("method, code, fields", [
+    ("steady", 2, ("speed.journal, speed.bearing:", "the mean of speed.journal and speed.bearing")),
+    ("mobility", 4, ("solver.period_tolerance", "solver.max_cycles")),
+])
+def test_bearing_solver_errors_name_deck_fields_not_symbols(method, code, fields, tmp_path):
+    # a bush turning against the journal: half-speed whirl, the film carries no steady load
+    deck = _set(_set(BEARING, "bearing", "-1500.0"), "method", f'"{method}"')
+    res = _run(deck, tmp_path, "-q")
+    assert res.exit_code == code, res.output
+    for text in fields:
+        assert text in res.output
+    assert not re.search(r"\bomega\b|period_tol\b|\bmax_cycles\b(?! or)", res.output.replace(
+        "solver.max_cycles", ""))
+    assert not (tmp_path / "o").exists()

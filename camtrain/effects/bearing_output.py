@@ -2,6 +2,9 @@
 method, and the columns and metrics of an orbit."""
 from __future__ import annotations
 
+from contextlib import contextmanager
+from dataclasses import replace
+
 import numpy as np
 
 from camtrain.bearings import JournalBearing, bearing_orbit, steady_orbit
@@ -76,3 +79,47 @@ def add_orbit(res, orbit, component: str | None, what: str, model: str = "short"
                    f"{what}: cycle-mean friction power ({model} film model, {orbit.method}, "
         f"{orbit.film} film)")
     met("cycles", orbit.cycles, "-", f"{what}: load cycles marched")
+
+
+#: the symbols of the bearing physics, as a stand-alone bearing deck names them: problem paths
+#: (``omega``, ``load``) and the symbols in messages and hints
+BEARING_DECK_TERMS = {
+    "omega": "speed.journal, speed.bearing", "load": "load.load_x, load.load_y",
+    "angle_rate": "speed.journal",
+    "(omega_j + omega_b)/2": "the mean of speed.journal and speed.bearing",
+    "period_tol": "solver.period_tolerance", "max_cycles": "solver.max_cycles",
+    "loosen tol": "loosen solver.step_tolerance",
+}
+#: ... and as the [camshaft] section of a valve-train deck names them
+CAMSHAFT_DECK_TERMS = {
+    "omega": "speed", "angle_rate": "speed", "(omega_j + omega_b)/2": "the camshaft speed",
+    "period_tol": "camshaft.bearing_tolerance", "max_cycles": "camshaft.max_cycles",
+    "loosen tol": "loosen camshaft.bearing_tolerance",
+}
+#: symbols replaced inside messages (the others are only ever a problem's path)
+_IN_TEXT = ("(omega_j + omega_b)/2", "period_tol", "max_cycles", "loosen tol")
+
+
+def _in_deck_terms(text: str, terms: dict[str, str]) -> str:
+    for symbol in _IN_TEXT:
+        if symbol in terms:
+            text = text.replace(symbol, terms[symbol])
+    return text
+
+
+@contextmanager
+def deck_terms(terms: dict[str, str], load_path: str | None = None):
+    """Errors of the bearing physics re-raised in the deck's words: a problem named ``omega``
+    or ``load`` names the deck fields it came from, and a hint names the deck's solver knob."""
+    from camtrain.errors import ConvergenceError, InputError
+
+    fields = dict(terms, **({"load": load_path} if load_path else {}))
+    try:
+        yield
+    except InputError as exc:
+        problems = [replace(p, path=fields.get(p.path, p.path),
+                            message=_in_deck_terms(p.message, fields),
+                            hint=_in_deck_terms(p.hint, fields)) for p in exc.problems]
+        raise InputError(problems, source=exc.source) from None
+    except ConvergenceError as exc:
+        raise ConvergenceError(_in_deck_terms(str(exc), fields)) from None

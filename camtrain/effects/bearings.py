@@ -86,7 +86,13 @@ def run(deck, inputs, res):
     from camtrain.bearings.product import BearingOrbits
     from camtrain.camshaft.product import CamshaftLoads, ElasticCamshaft
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import add_orbit, model_reason, solve_bearing
+    from camtrain.effects.bearing_output import (
+        CAMSHAFT_DECK_TERMS,
+        add_orbit,
+        deck_terms,
+        model_reason,
+        solve_bearing,
+    )
     from camtrain.errors import ConvergenceError
 
     cs = deck.camshaft
@@ -115,11 +121,13 @@ def run(deck, inputs, res):
         petroff = float(bearing_petroff_power(brg, omega))
         met("petroff_power", petroff, "W", f"{what}: Petroff power (concentric journal)")
         try:
-            orbit = solve_bearing(brg, bx[i], by[i], theta, omega, 0.0, angle_rate=abs(omega),
-                                  period=TWO_PI, method=cs.method, film=cs.film,
-                                  mobility=cs.mobility, tol=min(1e-7, 1e-2 * cs.bearing_tolerance),
-                                  period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles,
-                                  options=options)
+            with deck_terms(CAMSHAFT_DECK_TERMS, f"camshaft.bearings[{i}] (its load)"):
+                orbit = solve_bearing(brg, bx[i], by[i], theta, omega, 0.0, angle_rate=abs(omega),
+                                      period=TWO_PI, method=cs.method, film=cs.film,
+                                      mobility=cs.mobility,
+                                      tol=min(1e-7, 1e-2 * cs.bearing_tolerance),
+                                      period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles,
+                                      options=options)
         except ConvergenceError as exc:
             res.warn(f"{what}: {exc}; no orbit reported")
             orbits.append(None)

@@ -54,7 +54,13 @@ def run(deck, inputs, result):
     from camtrain.bearings import bearing_petroff_power
     from camtrain.bearings.product import BearingOrbits
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import add_orbit, model_reason, solve_bearing
+    from camtrain.effects.bearing_output import (
+        BEARING_DECK_TERMS,
+        add_orbit,
+        deck_terms,
+        model_reason,
+        solve_bearing,
+    )
 
     s, ld, sol = deck.speed, deck.load, deck.solver
     brg = _journal(deck)
@@ -66,11 +72,12 @@ def run(deck, inputs, result):
     result.add_column("load_y", ly, "N", "load on the film, y")
     petroff = float(bearing_petroff_power(brg, s.journal, s.bearing))
     result.add_metric("petroff_power", petroff, "W", "Petroff power (concentric journal)")
-    orbit = solve_bearing(brg, lx, ly, angles, s.journal, s.bearing, angle_rate=abs(s.journal),
-                          period=ld.period, method=sol.method, film=sol.film,
-                          mobility=sol.mobility, terms=sol.terms, tol=sol.step_tolerance,
-                          period_tol=sol.period_tolerance, max_cycles=sol.max_cycles,
-                          start=sol.start, options=options)
+    with deck_terms(BEARING_DECK_TERMS):
+        orbit = solve_bearing(brg, lx, ly, angles, s.journal, s.bearing,
+                              angle_rate=abs(s.journal), period=ld.period, method=sol.method,
+                              film=sol.film, mobility=sol.mobility, terms=sol.terms,
+                              tol=sol.step_tolerance, period_tol=sol.period_tolerance,
+                              max_cycles=sol.max_cycles, start=sol.start, options=options)
     if orbit is None:
         result.add_metric("power_mean", petroff, "W", "Petroff power (method = petroff)")
         return BearingOrbits((None,))
