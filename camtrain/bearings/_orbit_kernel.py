@@ -17,6 +17,9 @@ from numba import njit
 
 EXACT, BOOKER, TABLE = 0, 1, 2
 OK, BUDGET, NOT_PERIODIC, OFF_MAP = 0, 1, 2, 3
+#: cycles without a new smallest cycle-to-cycle change after which the march gives up: a change
+#: that converges falls every cycle; one that sits at the step error never reaches period_tol
+STALL_CYCLES = 10
 
 _TWO_PI = 2.0 * math.pi
 _HALF_PI = 0.5 * math.pi
@@ -203,6 +206,7 @@ def march_orbit(fx, fy, wbar, t, dts, y0x, y0y, kind, gain, tol, period_tol, max
     h = dts[0]
     change = np.inf
     cycles = 0
+    best, best_cycle = np.inf, 0
     for cyc in range(1, max_cycles + 1):
         cycles = cyc
         budget = max_steps
@@ -262,6 +266,10 @@ def march_orbit(fx, fy, wbar, t, dts, y0x, y0y, kind, gain, tol, period_tol, max
                 change = max(change, math.hypot(cur[i, 0] - prev[i, 0], cur[i, 1] - prev[i, 1]))
             if change <= period_tol:
                 break
+            if change < best:
+                best, best_cycle = change, cyc
+            elif cyc - best_cycle >= STALL_CYCLES:
+                break   # the change stopped falling: it sits at the march's own error
         prev[:, :] = cur
     vel = np.empty((n, 3))
     for i in range(n):

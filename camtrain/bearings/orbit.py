@@ -147,6 +147,11 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         raise ConvergenceError(
             f"journal orbit left the mobility map at t = {t_fail:.6g} s: eps = {e_fail:.6f} "
             f"> {mobility.eps[-1]:.6f}, the map's largest eccentricity; extend the map")
+    if status == K.NOT_PERIODIC and cycles < max_cycles:
+        raise ConvergenceError(
+            f"journal orbit not periodic: the cycle-to-cycle change stopped falling at "
+            f"{change:.3g} after {cycles} cycles (the march's own error), above period_tol "
+            f"{period_tol:.3g}; raise period_tol above it or loosen tol")
     if status == K.NOT_PERIODIC:
         raise ConvergenceError(
             f"journal orbit not periodic after {cycles} cycles: change {change:.3g} > "
