@@ -24,7 +24,8 @@ from .lifts import event_lift, harrison_lift
 
 OMEGA = 2 * np.pi * 2500 / 60
 PROPS = settings(max_examples=12, deadline=None,
-                 suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+                 suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow,
+                                        HealthCheck.data_too_large])  # older hypothesis
 
 
 def _index(theta, degrees):
