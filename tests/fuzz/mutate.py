@@ -18,7 +18,10 @@ from pathlib import Path
 import tomli_w
 
 ROOT = Path(__file__).resolve().parents[2]
-MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic", "journal_bearing")
+def _template_kinds() -> tuple[str, ...]:
+    from camtrain.cli import MECHANISM_CHOICES
+
+    return MECHANISM_CHOICES
 
 JUNK = ("wrong_type", "nan", "inf", "-inf", "zero", "huge", "-huge", "tiny", "unit_string",
         "negative")
@@ -32,20 +35,21 @@ def sources() -> dict[str, str]:
     from camtrain.deck.templates import render_template
 
     out = {f"deck:{p.stem}": p.read_text() for p in sorted((ROOT / "decks").glob("*.toml"))}
-    out.update({f"template:{m}": render_template(m) for m in MECHANISMS})
+    out.update({f"template:{m}": render_template(m) for m in _template_kinds()})
     return out
 
 
 def small_grid(raw: dict) -> dict:
     """Fewer angles and cycles where the deck allows, so a case runs in about a second."""
     solver = raw.get("solver")
+    kind = raw.get("kind", "valve_train")
     if isinstance(solver, dict):
-        if "angle_points" in solver or raw.get("kind") != "journal_bearing":
+        if kind == "valve_train":
             solver["angle_points"] = 90
-        if raw.get("kind") == "journal_bearing":
-            solver["max_cycles"] = 4
-            solver["period_tolerance"] = 1e-2
-            solver["step_tolerance"] = 1e-4
+        elif kind == "journal_bearing":
+            solver.update(max_cycles=4, period_tolerance=1e-2, step_tolerance=1e-4)
+        elif kind == "engine":
+            solver["crank_step"] = 4.0
     return raw
 
 
