@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_path):
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(fast_flat), "-p", "speed",
-           "--range", "1000:3000:400", "-j", "3", "--no-plots", "-q", "--out", str(tmp_path / "s")]
+           "--range", "1000:3000:20000", "-j", "3", "--no-plots", "-q", "--out", str(tmp_path / "s")]
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     parent = psutil.Process(proc.pid)
     workers: list = []
@@ -30,7 +30,8 @@ def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_pat
             break
         time.sleep(0.2)
     assert len(workers) >= 2, f"the sweep never started its workers: {proc.poll()}"
-    time.sleep(1.0)
+    time.sleep(0.5)
+    assert proc.poll() is None, "the sweep ended before it could be terminated"
     proc.send_signal(signal.SIGTERM)
     proc.wait(timeout=30)
     _, alive = psutil.wait_procs(workers, timeout=10)
