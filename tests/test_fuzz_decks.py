@@ -126,14 +126,16 @@ FUZZ_START = int(os.environ.get("CAMTRAIN_FUZZ_START", "0"))
 
 
 @pytest.mark.parametrize("seed", range(FUZZ_START, FUZZ_START + FUZZ_CASES))
-def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path):
+def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path, monkeypatch):
+    monkeypatch.chdir(ROOT / "decks")   # standard input: decks name their files from here
     name, text, done = fuzz_case(seed)
     out = tmp_path / "out"
     assert_sane(run_deck(text, out), out, f"fuzz case {seed}: {name}: {done}")
 
 
-def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path):
+def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path, monkeypatch):
     """The fuzz starts from every shipped deck and template, each valid as given."""
+    monkeypatch.chdir(ROOT / "decks")   # standard input: decks name their files from here
     names = sorted(fuzz_sources())
     assert {n.split(":")[1] for n in names if n.startswith("deck:")} == {
         p.stem for p in (ROOT / "decks").glob("*.toml")}
