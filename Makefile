@@ -32,7 +32,7 @@ $(OLDEST)/.installed: pyproject.toml scripts/oldest_pins.py
 
 test-oldest: $(OLDEST)/.installed
 	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w)=='
-	$(OLDEST)/bin/python -m pytest -p no:cacheprovider
+	CAMTRAIN_GOLDEN_RTOL=1e-8 $(OLDEST)/bin/python -m pytest -p no:cacheprovider
 
 # Thousands of fuzzed decks through `camtrain run` (make test runs the first 200 cases).
 FUZZ_CASES ?= 3000

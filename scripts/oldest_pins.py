@@ -10,6 +10,10 @@ import sys
 import tomllib
 from pathlib import Path
 
+#: transitive dependencies held at the era of the minimums: matplotlib 3.9 (the minimum) calls
+#: pyparsing's camelCase API, which pyparsing 3.3 deprecates with a warning on every plot
+ERA_PINS = ("pyparsing<3.3",)
+
 _REQ = re.compile(r"^\s*([A-Za-z0-9_.-]+)(\[[^\]]*\])?\s*>=\s*([0-9][0-9A-Za-z.]*)\s*$")
 
 
@@ -30,4 +34,4 @@ def pins(pyproject: Path, extras: tuple[str, ...] = ("test",)) -> list[str]:
 
 if __name__ == "__main__":
     root = Path(sys.argv[1]) if len(sys.argv) > 1 else Path(__file__).resolve().parent.parent
-    print("\n".join(pins(root / "pyproject.toml")))
+    print("\n".join(pins(root / "pyproject.toml") + list(ERA_PINS)))
