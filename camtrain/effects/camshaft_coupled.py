@@ -118,7 +118,7 @@ def run(deck, inputs, res):
         return np.vstack([along / scale[0], twist / scale[1]])
 
     if f.coupling_solver == "monolithic":
-        return _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, turn,
+        return _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
                            contact, omega, theta)
     state = staggered(one_pass, np.vstack([along0 / scale[0], twist0 / scale[1]]),
                       tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
@@ -165,7 +165,7 @@ def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, ch
                  f"(last change {change:.3g} > {tolerance:g}); the results are the last pass's")
 
 
-def _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, turn, contact,
+def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, contact,
                 omega, theta):
     """Every train and the shaft marched together (camtrain.dynamics.monolithic)."""
     import numpy as np
@@ -193,7 +193,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, lobes, gammas, axes, ratio, tu
         return np.array(mu)
 
     sub = run_setup.settings.substeps
-    result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, np.radians(0) + axes,
+    result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, axes,
                            np.asarray(gammas), omega, substeps=sub, friction=friction,
                            friction_arm=kin.friction_arm, turn=turn,
                            cycles_max=run_setup.settings.cycles_max,

@@ -42,14 +42,18 @@ def _curves(ax, ctx, r, columns, label: str, ylabel: str, values=None) -> bool:
     return True
 
 
-def reactions(ax, r, ctx):
-    """Magnitude of the load the shaft puts on each bearing."""
-    columns = _numbered(r, r"bearing_(\d+)_reaction_x")
-
-    def magnitude(name):
+def _magnitude(r):
+    """Magnitude of an (x, y) column pair, given the x column's name."""
+    def of(name):
         return np.hypot(r.columns[name].values, r.columns[name[:-1] + "y"].values)
 
-    return _curves(ax, ctx, r, columns, "bearing", "bearing load from the shaft", magnitude)
+    return of
+
+
+def reactions(ax, r, ctx):
+    """Magnitude of the load the shaft puts on each bearing."""
+    return _curves(ax, ctx, r, _numbered(r, r"bearing_(\d+)_reaction_x"), "bearing",
+                   "bearing load from the shaft", _magnitude(r))
 
 
 def reaction_orders(ax, r, ctx):
@@ -82,12 +86,8 @@ def lobe_loads(ax, r, ctx):
 
 def lobe_motion(ax, r, ctx):
     """Each lobe's shaft deflection (magnitude) over the cycle."""
-    columns = _numbered(r, r"lobe_(\d+)_deflection_x")
-
-    def magnitude(name):
-        return np.hypot(r.columns[name].values, r.columns[name[:-1] + "y"].values)
-
-    return _curves(ax, ctx, r, columns, "lobe", "shaft deflection", magnitude)
+    return _curves(ax, ctx, r, _numbered(r, r"lobe_(\d+)_deflection_x"), "lobe",
+                   "shaft deflection", _magnitude(r))
 
 
 def lobe_twist(ax, r, ctx):
