@@ -85,6 +85,9 @@ def check(deck: LoadedDeck | Deck) -> tuple[str, list[str]]:
     Runs the plan's geometry effects (``GEOMETRY_EFFECTS``): a flat follower on too small a base
     circle, a mechanism that cannot assemble raise GeometryError here as in ``run``. For a deck
     kind without such an effect the first item says plainly that no geometry was checked."""
+    import importlib
+
+    from camtrain.effects.catalogue import kind_of
     from camtrain.runner import Inputs
     from camtrain.scene import effect_module
 
@@ -92,6 +95,10 @@ def check(deck: LoadedDeck | Deck) -> tuple[str, list[str]]:
     warnings: list[str] = []
     cheap = [s for s in resolve(model).effects if s.name in GEOMETRY_EFFECTS]
     if not cheap:
+        hook = kind_of(model).geometry
+        if hook:
+            module, name = hook.split(":")
+            return getattr(importlib.import_module(module), name)(model)
         return "geometry not checked (no kinematic check for this deck kind; run checks it)", \
             warnings
     result = Result()

@@ -42,6 +42,13 @@ def engine(deck: EngineDeck) -> Engine:
     return Engine(crank, tuple(e.bay_lengths), cyl, comps, e.flywheel_mass)
 
 
+def check_geometry(deck: EngineDeck) -> tuple[str, list[str]]:
+    """``camtrain check`` of an engine deck: the crank train assembles (rod longer than the
+    crank radius, exit 3 otherwise) and every cylinder has its bay and pressure table."""
+    engine(deck)
+    return "geometry checked (crank train)", []
+
+
 def bearing(deck: EngineDeck, which: str) -> BearingSpec:
     """``which`` = "big_end" or "main": the bearing with its viscosity at the run speed."""
     b = getattr(deck.bearings, which)

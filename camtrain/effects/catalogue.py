@@ -148,6 +148,10 @@ class DeckKind:
     #: "module:function" giving the header rows of report.txt and the sheets,
     #: ``rows(deck, result) -> [(label with unit, value)]``; "" = the valve-train header
     header: str = ""
+    #: "module:function" of the cheap geometry check ``camtrain check`` runs for this kind when
+    #: none of its effects is a geometry effect, ``check(deck) -> (what was checked, warnings)``;
+    #: it raises GeometryError (exit 3) as ``run`` would
+    geometry: str = ""
 
 
 #: every deck kind, by the name a deck gives in ``kind = "..."`` (valve_train is the default)
@@ -156,7 +160,8 @@ KINDS: dict[str, DeckKind] = {k.name: k for k in (
     DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING,
              header="camtrain.report.bearing_plots:bearing_header_rows"),
     DeckKind("engine", "camtrain.deck.schema_engine:EngineDeck", ENGINE,
-             header="camtrain.report.engine_report:engine_header_rows"),
+             header="camtrain.report.engine_report:engine_header_rows",
+             geometry="camtrain.build.engine:check_geometry"),
 )}
 DEFAULT_KIND = "valve_train"
 

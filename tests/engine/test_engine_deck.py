@@ -141,6 +141,15 @@ def test_a_rod_shorter_than_the_crank_is_physically_impossible(tmp_path):
     res = invoke("run", str(path), "--no-plots", "--out", str(tmp_path / "out"))
     assert res.exit_code == 3 and "engine.rod_length" in res.output
     assert "Traceback" not in res.output
+    assert not (tmp_path / "out").exists()
+    checked = invoke("check", str(path))
+    assert checked.exit_code == 3 and "engine.rod_length" in checked.output
+    assert "Traceback" not in checked.output
+
+
+def test_check_says_the_crank_train_geometry_was_checked():
+    res = invoke("check", str(RUSTON))
+    assert res.exit_code == 0 and "geometry checked (crank train)" in res.output
 
 
 def test_absolute_table_is_the_gauge_table_plus_the_crankcase():
