@@ -244,7 +244,12 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     task = bar.add_task(_escape(f"{name}: running"), total=None) if bar else None
     try:
         loaded = api.load(deck)
+        sizes = api.implausible(loaded)
+        for w in sizes:                   # before the run: it explains a geometry failure there
+            click.echo(f"warning: {w}", err=True)
         result = api.run(loaded)
+        for w in sizes:
+            result.warn(w)
         wall = time.perf_counter() - start
         checks = check_limits(result, loaded)
 

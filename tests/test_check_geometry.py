@@ -42,3 +42,13 @@ def test_check_says_what_it_checked(tmp_path):
     bearing = CliRunner().invoke(main, ["check", str(DECKS / "bearing_ocvirk_check.toml")])
     assert bearing.exit_code == 0, bearing.output
     assert "geometry not checked" in bearing.output
+
+
+def test_run_warns_on_a_deck_written_in_metres_and_reports_it(tmp_path):
+    deck = tmp_path / "deck.toml"
+    deck.write_text(HARRISON.replace("width = 12.0", "width = 0.012"), encoding="utf-8")
+    out = tmp_path / "out"
+    res = CliRunner().invoke(main, ["run", str(deck), "--no-plots", "--quiet", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    assert "cam.width = 0.012 mm" in res.output and "did you write metres?" in res.output
+    assert "did you write metres?" in (out / "report.txt").read_text(encoding="utf-8")
