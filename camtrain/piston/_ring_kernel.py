@@ -98,8 +98,11 @@ def _illinois(kind, lo, hi, f_lo, f_hi, tol, p0, p1, p2, p3, p4, p5, p6, p7):
 
 
 @njit(cache=True)
-def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated):
-    """(load, friction, flow, x_rupture, x_reform, cavitated, fallback) in the entrainment frame."""
+def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated, open_outlet=False):
+    """(load, friction, flow, x_rupture, x_reform, cavitated, fallback, inflow) in the entrainment
+    frame; ``flow`` leaves at the outlet, ``inflow`` enters at the inlet x1 (they differ by the
+    squeeze, dQ/dx = -V). ``open_outlet``: no oil at the outlet flank to reform the film from,
+    so past a rupture line the face is open to the outlet gas (a starved ring)."""
     p_in, p_out = max(p_in, 0.0), max(p_out, 0.0)
     c1, c2 = 6.0 * eta * u, 12.0 * eta * V
     h1, i2, i3, xx2, x3, xx3 = integrals(x1, b, h_m, x_c, radius)
@@ -122,7 +125,8 @@ def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated):
     if lowest >= -1e-9 * scale:
         load = b * p_out - x1 * p_in - (c1 * xx2 + c2 * xx3 + c3 * x3)
         friction = -2.0 * eta * u * h1 - 0.5 * (c2 * xx2 + c3 * i2)
-        return load, friction, -V * b - c3 / (12.0 * eta), b, b, False, False
+        q_in = -V * x1 - c3 / (12.0 * eta)
+        return load, friction, -V * b - c3 / (12.0 * eta), b, b, False, False, q_in
     # rupture line: first sign change of the residual past the inlet
     x2 = -1.0
     prev_x, prev_f = x1, p_in
@@ -147,7 +151,7 @@ def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated):
         f2 = -p_out
         if c1 > 0.0:
             f2 = _reform_residual(x2, b, p_out, c1, h2, h_m, x_c, radius)
-        if f2 <= 0.0:
+        if f2 <= 0.0 or open_outlet:
             # the diverging gap cannot build the flank pressure again: the outlet face past the
             # rupture line is open to the flank gas (Yang's x_4 < b of eq. 5.17)
             xr = x2
@@ -164,7 +168,7 @@ def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated):
     if striated and xr > x2:
         _, i2c, _, _, _, _ = integrals(x2, xr, h_m, x_c, radius)
         friction += eta * u * h2 * i2c
-    return load, friction, 0.5 * u * h2, x2, xr, True, False
+    return load, friction, 0.5 * u * h2, x2, xr, True, False, 0.5 * u * h2 + V * (x2 - x1)
 
 
 @njit(cache=True)
@@ -187,7 +191,8 @@ def _half_sommerfeld(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, c1, c2, c3
             load += 0.5 * dx * (p + prev_p)
             friction += 0.5 * dx * (tau + prev_t)
         prev_p, prev_t = p, tau
-    return load, friction, -V * b - c3 / (12.0 * eta), b, b, True, True
+    return (load, friction, -V * b - c3 / (12.0 * eta), b, b, True, True,
+            -V * x1 - c3 / (12.0 * eta))
 
 
 @njit(cache=True)
@@ -199,31 +204,41 @@ def _frame(U, x_min, height, p_above, p_below):
 
 @njit(cache=True)
 def state(h, V, U, eta, p_above, p_below, layer, height, radius, x_min, tension, striated):
-    """(film tuple, F_z, sign) of a ring at one instant; layer < 0 means flooded."""
+    """(film tuple, F_z, sign, gas) of a ring at one instant; layer < 0 means flooded.
+
+    F_z is Yang's radial load (5.17), the back-face gas and tension less the gas on the exposed
+    face at both flanks: the dry inlet 0..x_1 at p_in and, where the film does not reform, the
+    outlet past the rupture line at p_out (Yang's x_4 < b). ``gas`` is that outlet gas load,
+    which the film tuple's load includes; the film proper carries F_z = load - gas.
+    """
     sign, x_c, p_in, p_out = _frame(U, x_min, height, p_above, p_below)
     x1 = 0.0
     u = abs(U)
-    if layer >= 0.0:
+    starved = layer >= 0.0
+    if starved:
         x1 = inlet_position(2.0 * layer, h, x_c, radius)
-    f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated)
-    if layer >= 0.0 and u > 0.0 and f[2] > u * layer:
-        # continuity (Yang 5.34): the ring cannot pass more oil than the layer brings; move
-        # the inlet downstream (less inlet film) until the flows match
+    f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated, starved)
+    if starved and f[7] > u * layer:
+        # continuity (Yang 5.34): the ring cannot draw more oil through its inlet meniscus than
+        # the layer brings; move the inlet downstream (less inlet film) until the flows match
         lo, hi = x1, x_c
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, mid, striated)
-            if f[2] > u * layer:
+            f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, mid, striated, starved)
+            if f[7] > u * layer:
                 lo = mid
             else:
                 hi = mid
             if hi - lo < 1e-9 * height:
                 break
         x1 = hi
-        f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated)
+        f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated, starved)
+    gas = 0.0
+    if f[5] and f[4] == f[3] and f[3] < height:
+        gas = max(p_out, 0.0) * (height - f[3])
     p_back = max(max(p_above, p_below), 0.0)
-    f_z = (p_back + tension) * height - max(p_in, 0.0) * x1
-    return f, f_z, sign
+    f_z = (p_back + tension) * height - max(p_in, 0.0) * x1 - gas
+    return f, f_z, sign, gas
 
 
 @njit(cache=True)
@@ -234,9 +249,9 @@ def _residual(log_h, h0, g0, dth, w, trapezoid, U, eta, pa, pb, layer, height, r
         g = 2.0 * (h1 - h0) / dth - g0
     else:
         g = (h1 - h0) / dth
-    f, f_z, _ = state(h1, w * g, U, eta, pa, pb, layer, height, radius, x_min, tension,
-                      striated)
-    return f[0] - f_z
+    f, f_z, _, gas = state(h1, w * g, U, eta, pa, pb, layer, height, radius, x_min, tension,
+                           striated)
+    return f[0] - gas - f_z
 
 
 @njit(cache=True)
@@ -287,24 +302,62 @@ def step(h0, g0, dth, w, trapezoid, U, eta, pa, pb, layer, height, radius, x_min
 
 
 @njit(cache=True)
-def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, height, radius, x_min, tension,
-          striated, tolerance, max_cycles):
-    """Cycles of the film march until the start film repeats; returns (h, g, cycles, change)."""
+def _own_layer(f, U):
+    """The layer [m] a ring leaves on the liner behind it, Q_out/|U| (Yang eq. 5.35)."""
+    if U == 0.0:
+        return -1.0
+    return max(f[2], 0.0) / abs(U)
+
+
+@njit(cache=True)
+def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, own_from, own_to, own_weight,
+          own_start, height, radius, x_min, tension, striated, tolerance, max_cycles):
+    """Cycles of the film march until the start film repeats; returns (h, g, supply, cycles,
+    change), ``supply`` the layer each angle's inlet was given on the last cycle.
+
+    Where ``own_from[i] >= 0`` the ring is fed by the layer it left itself on its previous
+    stroke at the same liner position (Yang eq. 5.36 and his dead-centre assumption): the layer
+    interpolated between angles ``own_from`` and ``own_to`` of this march (``own_start`` before
+    the march has been there). Elsewhere ``layer`` (< 0: flooded).
+    """
     n = U.size
     h = np.empty(n)
     g = np.empty(n)
+    own = own_start.copy()
+    used = layer.copy()
+    self_fed = np.any(own_from >= 0)
     h_prev, g_prev = h_start, 0.0
     change = np.inf
     cycles = 0
     while cycles < max_cycles:
         cycles += 1
         start = h_prev
+        own_diff = 0.0
+        own_top = 0.0
         for i in range(n):
+            lay = layer[i]
+            if own_from[i] >= 0:
+                a, b = own[own_from[i]], own[own_to[i]]
+                if a < 0.0:
+                    a = b
+                if b < 0.0:
+                    b = a
+                lay = max((1.0 - own_weight[i]) * a + own_weight[i] * b, 0.0)
+            used[i] = lay
             h_prev, g_prev = step(h_prev, g_prev, dth, w, trapezoid, U[i], eta[i], pa[i], pb[i],
-                                  layer[i], height, radius, x_min, tension, striated)
+                                  lay, height, radius, x_min, tension, striated)
             h[i] = h_prev
             g[i] = g_prev
+            f, _, _, _ = state(h_prev, w * g_prev, U[i], eta[i], pa[i], pb[i], lay, height, radius,
+                            x_min, tension, striated)
+            left = _own_layer(f, U[i])
+            if left >= 0.0 and own[i] >= 0.0:
+                own_diff = max(own_diff, abs(left - own[i]))
+            own_top = max(own_top, left)
+            own[i] = left
         change = abs(h_prev - start) / start
+        if self_fed and own_top > 0.0:
+            change = max(change, own_diff / own_top)
         if change < tolerance and cycles > 1:
             break
-    return h, g, cycles, change
+    return h, g, used, cycles, change

@@ -49,61 +49,120 @@ def _strokes(theta: np.ndarray) -> np.ndarray:
     return np.minimum((np.mod(theta, 4.0 * np.pi) // np.pi).astype(int), 3)
 
 
-def _layer_on_stroke(target_s, stroke, travel, strokes, layer):
-    """Layer a ring left at travel ``target_s`` on ``stroke`` (interpolated in travel)."""
-    on = strokes == stroke
-    s, lay = travel[on], np.nan_to_num(np.maximum(layer[on], 0.0))
-    order = np.argsort(s)
-    return np.interp(target_s, s[order], lay[order])
+def _on_stroke(target_s, stroke, travel, strokes):
+    """Where on ``stroke`` the ring was at travel ``target_s``: the two bracketing angle
+    indices and the linear weight of the second (interpolation in travel)."""
+    idx = np.flatnonzero(strokes == stroke)
+    order = np.argsort(travel[idx], kind="stable")
+    s, idx = travel[idx][order], idx[order]
+    k = int(np.clip(np.searchsorted(s, target_s), 1, s.size - 1))
+    span = s[k] - s[k - 1]
+    weight = 0.0 if span <= 0.0 else float(np.clip((target_s - s[k - 1]) / span, 0.0, 1.0))
+    return int(idx[k - 1]), int(idx[k]), weight
 
 
-def available_layer(index: int, pack: list[PackRing], results: list[RingCycle], travel,
-                    U) -> np.ndarray:
-    """Oil layer [m] at ring ``index``'s inlet at every angle (-1 where it is flooded)."""
-    theta = results[index].theta
-    strokes = _strokes(theta)
+@dataclass(frozen=True)
+class Feed:
+    """Where ring ``index``'s inlet oil comes from at every angle: ``source`` -1 flooded, the
+    index of the ring whose layer it meets, and ``angle_from``, ``angle_to``, ``weight``: the
+    angles at which that ring laid it (interpolated in liner position)."""
+
+    source: np.ndarray
+    angle_from: np.ndarray
+    angle_to: np.ndarray
+    weight: np.ndarray
+
+
+def feed(index: int, pack: list[PackRing], theta, travel, U) -> Feed:
+    """The oil each angle of ring ``index`` meets on the liner (Yang §5.4, §6.2.3).
+
+    The liner position under a ring is its depth below the top ring plus the piston travel, so
+    a ring meets, at each liner position, the layer left by whichever ring swept that position
+    last: on the downstroke the ring below on the same stroke (the bottom ring is flooded:
+    splash, Yang §5.4), on the upstroke the ring above on the same stroke (the top ring: the
+    layer it left itself on its previous downstroke, eq. 5.36). Where the ring has not yet
+    travelled the ring spacing past a dead centre, no other ring has been there since its own
+    previous stroke: it meets its own layer (Yang's dead-centre assumption, §6.2.3).
+    """
+    n = travel.size
+    theta_strokes = _strokes(np.asarray(theta, dtype=float))
     full = travel.max()
-    out = np.empty(theta.size)
     last = len(pack) - 1
-    for i in range(theta.size):
-        k = strokes[i]
-        previous = (k - 1) % 4
+    source = np.full(n, -1, dtype=np.int64)
+    a_from = np.full(n, -1, dtype=np.int64)
+    a_to = np.full(n, -1, dtype=np.int64)
+    weight = np.zeros(n)
+    for i in range(n):
+        k = theta_strokes[i]
         s = travel[i]
+        src, stroke, target = index, (k - 1) % 4, s
         if U[i] < 0.0:                                # downstroke: oil comes from below
             if index == last:
-                out[i] = -1.0
                 continue
             lag = pack[index + 1].depth - pack[index].depth
             if s - lag >= 0.0:
-                out[i] = _layer_on_stroke(s - lag, k, travel, strokes, results[index + 1].layer)
-            else:
-                out[i] = _layer_on_stroke(s, previous, travel, strokes, results[index].layer)
-        else:                                         # upstroke: oil comes from above
-            if index > 0:
-                lag = pack[index].depth - pack[index - 1].depth
-                if s + lag <= full:
-                    out[i] = _layer_on_stroke(s + lag, k, travel, strokes,
-                                              results[index - 1].layer)
-                    continue
-            out[i] = _layer_on_stroke(s, previous, travel, strokes, results[index].layer)
-    return np.where(np.isfinite(out), out, -1.0)
+                src, stroke, target = index + 1, k, s - lag
+        elif index > 0:                               # upstroke: oil comes from above
+            lag = pack[index].depth - pack[index - 1].depth
+            if s + lag <= full:
+                src, stroke, target = index - 1, k, s + lag
+        source[i] = src
+        a_from[i], a_to[i], weight[i] = _on_stroke(target, stroke, travel, theta_strokes)
+    return Feed(source, a_from, a_to, weight)
+
+
+def _interpolate(values, fd: Feed, mask):
+    v = np.nan_to_num(np.maximum(values, 0.0))
+    out = (1.0 - fd.weight) * v[np.maximum(fd.angle_from, 0)] \
+        + fd.weight * v[np.maximum(fd.angle_to, 0)]
+    return np.where(mask, out, -1.0)
+
+
+#: Starved marches: a ring's supply steps where it first meets its leader's oil, and the
+#: trapezoid (not L-stable) rings there, step to step; backward Euler damps it.
+STARVED_SCHEME = "backward_euler"
+#: Cycles a starved march may take: the ring's own layer must repeat as well as its film.
+STARVED_CYCLES = 40
 
 
 def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: int = 2,
-               scheme: str = "trapezoid", tolerance: float = 1e-4) -> PackSolution:
-    """Flooded rings, then ``passes`` starved passes alternating bottom-up and top-down."""
-    def march(pr: PackRing, layer):
-        return march_ring(pr.ring, theta, U, pr.eta, pr.p_above, pr.p_below, omega,
-                          layer=layer, scheme=scheme, tolerance=tolerance,
-                          boundary_roughness=pr.boundary_roughness)
+               scheme: str = "trapezoid", tolerance: float = 1e-4,
+               starved_scheme: str = STARVED_SCHEME) -> PackSolution:
+    """Flooded rings (march ``scheme``), then ``passes`` starved passes alternating bottom-up and
+    top-down (march ``starved_scheme``).
 
-    flooded = [march(pr, None) for pr in pack]
+    In each pass a ring meets the layers the other rings left in the latest pass (Table 6.1);
+    where it meets its own layer (eq. 5.36, dead centres) that layer is the one it lays in the
+    same cyclic march, so a ring's own strokes agree with each other at its cyclic solution.
+    """
+    feeds = [feed(n, pack, theta, travel, U) for n in range(len(pack))]
+
+    def march(n: int, layer, own):
+        pr = pack[n]
+        fd = feeds[n]
+        mine = fd.source == n
+        if layer is None:
+            return march_ring(pr.ring, theta, U, pr.eta, pr.p_above, pr.p_below, omega,
+                              scheme=scheme, tolerance=tolerance,
+                              boundary_roughness=pr.boundary_roughness)
+        return march_ring(pr.ring, theta, U, pr.eta, pr.p_above, pr.p_below, omega,
+                          layer=layer, own_feed=(np.where(mine, fd.angle_from, -1),
+                                                 fd.angle_to, fd.weight),
+                          own_start=own, scheme=starved_scheme, tolerance=tolerance,
+                          max_cycles=STARVED_CYCLES, boundary_roughness=pr.boundary_roughness)
+
+    flooded = [march(n, None, None) for n in range(len(pack))]
     results = list(flooded)
     layers = [np.full(len(theta), np.nan) for _ in pack]
     order = list(range(len(pack)))
     for p in range(passes):
         for n in (order[::-1] if p % 2 == 0 else order):
-            lay = available_layer(n, pack, results, travel, U)
-            layers[n] = np.where(lay < 0.0, np.nan, lay)
-            results[n] = march(pack[n], lay)
+            fd = feeds[n]
+            other = (fd.source >= 0) & (fd.source != n)
+            lay = np.full(len(theta), -1.0)
+            for m in set(fd.source[other].tolist()):
+                on = fd.source == m
+                lay = np.where(on, _interpolate(results[m].layer, fd, on), lay)
+            results[n] = march(n, lay, results[n].layer)
+            layers[n] = results[n].supply
     return PackSolution(flooded, results, layers)

@@ -78,8 +78,11 @@ class RingCycle:
 
     ``theta`` [rad]; ``h_min`` [m]; ``load`` F_z [N/m]; ``friction`` [N/m] on the ring, +x
     towards the crankcase (boundary where ``boundary``); ``flow`` [m^2/s] through the ring, +x;
-    ``layer`` [m] oil left on the liner behind the ring (Yang 5.35); ``boundary`` mask;
-    ``cycles`` marched and the relative ``cyclic_change`` of the start film.
+    ``layer`` [m] oil left on the liner behind the ring (Yang 5.35); ``inflow`` [m^2/s] drawn
+    through the inlet meniscus, +x (equal to ``flow`` but for the squeeze); ``supply`` [m] the
+    layer the inlet was given (NaN where flooded); ``boundary`` mask; ``cycles`` marched and the
+    relative ``cyclic_change`` of the start film (and of the own layer where the ring feeds on
+    it).
     """
 
     theta: np.ndarray
@@ -88,13 +91,16 @@ class RingCycle:
     friction: np.ndarray
     flow: np.ndarray
     layer: np.ndarray
+    inflow: np.ndarray
+    supply: np.ndarray
     boundary: np.ndarray
     cycles: int
     cyclic_change: float
 
 
 def march_ring(ring: Ring, theta, U, eta, p_above, p_below, omega: float, *,
-               layer=None, scheme: str = "trapezoid", h_start: float = 1e-6,
+               layer=None, own_feed=None, own_start=None, scheme: str = "trapezoid",
+               h_start: float = 1e-6,
                tolerance: float = 1e-4, max_cycles: int = 12, boundary_roughness: float = 0.0,
                boundary_friction: float = RING_BOUNDARY_FRICTION) -> RingCycle:
     """March a ring's minimum film around the cycle until it repeats (Yang §5.3, §6.2.2).
@@ -103,7 +109,12 @@ def march_ring(ring: Ring, theta, U, eta, p_above, p_below, omega: float, *,
         theta: uniform crank-angle grid over one cycle [rad], without the end point.
         U, eta, p_above, p_below: liner speed [m/s], viscosity [Pa s] and gauge gas pressures
             above and below the ring [Pa] on that grid.
-        layer: oil layer on the liner available to the inlet [m] per angle (None: flooded).
+        layer: oil layer on the liner available to the inlet [m] per angle (None: flooded;
+            negative entries flooded).
+        own_feed: (from, to, weight) per angle: where ``from >= 0`` the inlet is fed by the layer
+            the ring itself left at angles from/to of the same march, linearly weighted (its
+            previous stroke at the same liner position; Yang eq. 5.36 and the dead centres).
+        own_start: the ring's own layer [m] per angle before the march has laid it (-1: none).
         scheme: ``"trapezoid"`` (Yang 5.29, order 2) or ``"backward_euler"`` (order 1).
         tolerance: relative cyclic-convergence tolerance on h at the start angle.
         boundary_roughness: composite roughness [m]: at or below it the friction is
@@ -122,16 +133,25 @@ def march_ring(ring: Ring, theta, U, eta, p_above, p_below, omega: float, *,
                                 for a in (U, eta, p_above, p_below))
     lay = np.full(n, -1.0) if layer is None else np.ascontiguousarray(
         np.broadcast_to(np.asarray(layer, float), (n,)))
+    if own_feed is None:
+        own_from = np.full(n, -1, dtype=np.int64)
+        own_to, own_weight = own_from.copy(), np.zeros(n)
+    else:
+        own_from, own_to = (np.ascontiguousarray(a, dtype=np.int64) for a in own_feed[:2])
+        own_weight = np.ascontiguousarray(own_feed[2], dtype=float)
+    start = np.full(n, -1.0) if own_start is None else np.ascontiguousarray(
+        np.nan_to_num(np.asarray(own_start, float), nan=-1.0))
     geometry = (ring.height, ring.radius, ring.x_min, ring.tension, True)
-    h, g, cycles, change = K.march(h_start, dth, w, scheme == "trapezoid", U, eta, p_above,
-                                   p_below, lay, *geometry, tolerance, max_cycles)
-    load, friction, flow, layer_out = (np.empty(n) for _ in range(4))
+    h, g, supply, cycles, change = K.march(h_start, dth, w, scheme == "trapezoid", U, eta, p_above,
+                                        p_below, lay, own_from, own_to, own_weight, start,
+                                        *geometry, tolerance, max_cycles)
+    load, friction, flow, inflow, layer_out = (np.empty(n) for _ in range(5))
     for i in range(n):
-        f, f_z, sign = K.state(h[i], w * g[i], U[i], eta[i], p_above[i], p_below[i], lay[i],
+        f, f_z, sign, _ = K.state(h[i], w * g[i], U[i], eta[i], p_above[i], p_below[i], supply[i],
                                *geometry)
-        load[i], friction[i], flow[i] = f_z, sign * f[1], sign * f[2]
+        load[i], friction[i], flow[i], inflow[i] = f_z, sign * f[1], sign * f[2], sign * f[7]
         layer_out[i] = f[2] / abs(U[i]) if U[i] != 0.0 else np.nan
     boundary = h <= boundary_roughness
     friction = np.where(boundary, boundary_friction * load * np.sign(U), friction)
-    return RingCycle(theta, h, load, friction, flow, layer_out, boundary, int(cycles),
-                     float(change))
+    return RingCycle(theta, h, load, friction, flow, layer_out, inflow,
+                     np.where(supply < 0.0, np.nan, supply), boundary, int(cycles), float(change))
