@@ -206,9 +206,8 @@ PUBLISHED = {
                          "flame_valve_train"),
                         ("piston assemblies", 2080.0, "W", "Yang 1992 Table 7.1",
                          "flame_piston",
-                         "the skirt is not modelled (its geometry is not in the source) and "
-                         "the starved top ring is not load-relieved; rings and oil-control "
-                         "ring only"),
+                         "the skirt is not modelled (its geometry is not in the source); "
+                         "rings and oil-control ring only"),
                         ("accessories (25 % of the components)", 825.0, "W",
                          "Yang 1992 Table 7.1", "flame_accessories",
                          "25 % of the components, which lack the skirt"),
@@ -222,10 +221,10 @@ PUBLISHED = {
                          "Yang 1992 Fig. 6.6", "ring_2_min_film_flooded"),
                         ("starved top ring, peak friction", 140.0, "N", "Yang 1992 Fig. 6.11",
                          "ring_1_peak_friction",
-                         "unexplained: camtrain's starved top ring peaks as high as the flooded "
-                         "one (~207 N against Yang's ~210 N flooded); the load relief of the "
-                         "exposed inlet face is not reproduced (strict xfail in "
-                         "tests/piston/test_pack.py)"),
+                         "relieved below the flooded ring (~206 N) but further than Yang's: "
+                         "with no oil above it the face past the rupture line is open to the "
+                         "chamber gas (eq. 5.17's x_4), and Yang prints no outlet rule for a "
+                         "starved ring (strict xfail in tests/piston/test_pack.py)"),
                     ]),
     "bearing_ocvirk_check": ("A stand-alone short journal bearing under a constant 500 N load: "
                              "a check against Ocvirk's closed-form short-bearing solution "

@@ -2,15 +2,18 @@
 
 Each ring leaves an oil layer h_l = Q/|U| on the liner behind it (eq. 5.35; h_m/2 when the film
 ruptures). The ring that follows meets that layer with its inlet where the face gap equals twice
-the layer ('elementary geometry'), and never passes more oil than the layer brings (continuity,
-eq. 5.34; enforced in the film kernel by moving the inlet downstream). On the downstroke the
-bottom ring is flooded (splash); on the upstroke the top ring has only what it left on the liner
-on its previous downstroke (eq. 5.36). Just after a dead centre a following ring has not yet
-reached its leader's oil (it must travel the ring spacing): it meets what it left there itself on
-its previous stroke (Yang's assumption, which he notes over-estimates films near TDC).
+the layer ('elementary geometry'), and never draws more oil through its inlet than the layer
+brings (continuity, eq. 5.34; enforced in the film kernel by moving the inlet downstream). On
+the downstroke the bottom ring is flooded (splash); on the upstroke the top ring has only what it
+left on the liner on its previous downstroke (eq. 5.36). Just after a dead centre a following
+ring has not yet reached its leader's oil (it must travel the ring spacing): it meets what it
+left there itself on its previous stroke (Yang's assumption, which he notes over-estimates films
+near TDC). Layers are mapped by liner position (depth below the top ring plus piston travel).
 
 Passes (Table 6.1): every ring flooded; starved pass 1 from the bottom ring up; starved pass 2
-from the top ring down. Two starved passes reach the fixed point for any number of rings.
+from the top ring down. Yang states two starved passes reach the fixed point for any number of
+rings; that holds for every ring but the top one, whose zone within one ring spacing of TDC is
+fed only by itself and drains under continuity pass after pass (docs/piston.md).
 """
 from __future__ import annotations
 
