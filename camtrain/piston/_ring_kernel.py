@@ -13,6 +13,9 @@ import numpy as np
 from numba import njit
 
 RUPTURE_SCAN = 16
+#: Films below this [m] count as equal in the cyclic convergence of a self-fed ring: a dry ring
+#: (the march's floor is 0.1 nm), three orders below any ring's roughness.
+FILM_SCALE = 1e-9
 #: Bounds of the film march [ln m]: 0.1 nm (a dry ring, all boundary) to 1 mm.
 LOG_H_MIN = math.log(1e-10)
 LOG_H_MAX = math.log(1e-3)
@@ -218,21 +221,37 @@ def state(h, V, U, eta, p_above, p_below, layer, height, radius, x_min, tension,
     if starved:
         x1 = inlet_position(2.0 * layer, h, x_c, radius)
     f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated, starved)
-    if starved and f[7] > u * layer:
+    if starved and f[7] > u * layer and x1 < x_c:
         # continuity (Yang 5.34): the ring cannot draw more oil through its inlet meniscus than
         # the layer brings; move the inlet downstream (less inlet film) until the flows match
-        lo, hi = x1, x_c
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, mid, striated, starved)
-            if f[7] > u * layer:
-                lo = mid
-            else:
-                hi = mid
-            if hi - lo < 1e-9 * height:
-                break
-        x1 = hi
-        f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated, starved)
+        # (Illinois regula falsi on the excess inflow; at the minimum gap if even there it draws
+        # more)
+        supply = u * layer
+        lo, r_lo = x1, f[7] - supply
+        f_hi = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x_c, striated, starved)
+        hi, r_hi = x_c, f_hi[7] - supply
+        x1 = x_c
+        f = f_hi
+        if r_hi <= 0.0:
+            side = 0
+            for _ in range(60):
+                mid = (lo * r_hi - hi * r_lo) / (r_hi - r_lo)
+                f_mid = film(h, V, u, eta, p_in, p_out, height, x_c, radius, mid, striated,
+                             starved)
+                r_mid = f_mid[7] - supply
+                if r_mid > 0.0:
+                    lo, r_lo = mid, r_mid
+                    if side == -1:
+                        r_hi *= 0.5
+                    side = -1
+                else:
+                    hi, r_hi = mid, r_mid
+                    x1, f = mid, f_mid
+                    if side == 1:
+                        r_lo *= 0.5
+                    side = 1
+                if hi - lo < 1e-9 * height or r_mid == 0.0:
+                    break
     gas = 0.0
     if f[5] and f[4] == f[3] and f[3] < height:
         gas = max(p_out, 0.0) * (height - f[3])
@@ -301,10 +320,16 @@ def step(h0, g0, dth, w, trapezoid, U, eta, pa, pb, layer, height, radius, x_min
     return h1, g
 
 
+#: Liner speeds below this fraction of the cycle's largest are a dead centre, where the layer a
+#: ring leaves (flow / speed) is undefined.
+DEAD_CENTRE = 1e-9
+
+
 @njit(cache=True)
-def _own_layer(f, U):
-    """The layer [m] a ring leaves on the liner behind it, Q_out/|U| (Yang eq. 5.35)."""
-    if U == 0.0:
+def _own_layer(f, U, u_dead):
+    """The layer [m] a ring leaves on the liner behind it, Q_out/|U| (Yang eq. 5.35); -1 at a
+    dead centre (|U| <= u_dead)."""
+    if abs(U) <= u_dead:
         return -1.0
     return max(f[2], 0.0) / abs(U)
 
@@ -326,6 +351,7 @@ def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, own_from, own_to, o
     own = own_start.copy()
     used = layer.copy()
     self_fed = np.any(own_from >= 0)
+    u_dead = DEAD_CENTRE * np.max(np.abs(U))
     h_prev, g_prev = h_start, 0.0
     change = np.inf
     cycles = 0
@@ -348,16 +374,21 @@ def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, own_from, own_to, o
                                   lay, height, radius, x_min, tension, striated)
             h[i] = h_prev
             g[i] = g_prev
-            f, _, _, _ = state(h_prev, w * g_prev, U[i], eta[i], pa[i], pb[i], lay, height, radius,
-                            x_min, tension, striated)
-            left = _own_layer(f, U[i])
-            if left >= 0.0 and own[i] >= 0.0:
-                own_diff = max(own_diff, abs(left - own[i]))
-            own_top = max(own_top, left)
-            own[i] = left
+            if self_fed:
+                f, _, _, _ = state(h_prev, w * g_prev, U[i], eta[i], pa[i], pb[i], lay, height,
+                                   radius, x_min, tension, striated)
+                left = _own_layer(f, U[i], u_dead)
+                if left >= 0.0 and own[i] >= 0.0:
+                    own_diff = max(own_diff, abs(left - own[i]))
+                own_top = max(own_top, left)
+                own[i] = left
         change = abs(h_prev - start) / start
-        if self_fed and own_top > 0.0:
-            change = max(change, own_diff / own_top)
+        if self_fed:
+            # a self-fed ring may run dry (at the march's floor) at the start angle: films below
+            # FILM_SCALE count as equal there
+            change = abs(h_prev - start) / max(start, FILM_SCALE)
+            if own_top > 0.0:
+                change = max(change, own_diff / own_top)
         if change < tolerance and cycles > 1:
             break
     return h, g, used, cycles, change

@@ -140,7 +140,7 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
     """
     feeds = [feed(n, pack, theta, travel, U) for n in range(len(pack))]
 
-    def march(n: int, layer, own):
+    def march(n: int, layer, own, h_start: float = 1e-6):
         pr = pack[n]
         fd = feeds[n]
         mine = fd.source == n
@@ -151,7 +151,8 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
         return march_ring(pr.ring, theta, U, pr.eta, pr.p_above, pr.p_below, omega,
                           layer=layer, own_feed=(np.where(mine, fd.angle_from, -1),
                                                  fd.angle_to, fd.weight),
-                          own_start=own, scheme=starved_scheme, tolerance=tolerance,
+                          own_start=own, h_start=h_start, scheme=starved_scheme,
+                          tolerance=tolerance,
                           max_cycles=STARVED_CYCLES, boundary_roughness=pr.boundary_roughness)
 
     flooded = [march(n, None, None) for n in range(len(pack))]
@@ -166,6 +167,7 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
             for m in set(fd.source[other].tolist()):
                 on = fd.source == m
                 lay = np.where(on, _interpolate(results[m].layer, fd, on), lay)
-            results[n] = march(n, lay, results[n].layer)
+            # each pass starts where the ring's latest cycle ended (its film and its own layer)
+            results[n] = march(n, lay, results[n].layer, results[n].h_min[-1])
             layers[n] = results[n].supply
     return PackSolution(flooded, results, layers)

@@ -145,12 +145,13 @@ def march_ring(ring: Ring, theta, U, eta, p_above, p_below, omega: float, *,
     h, g, supply, cycles, change = K.march(h_start, dth, w, scheme == "trapezoid", U, eta, p_above,
                                         p_below, lay, own_from, own_to, own_weight, start,
                                         *geometry, tolerance, max_cycles)
+    u_dead = K.DEAD_CENTRE * float(np.max(np.abs(U)))
     load, friction, flow, inflow, layer_out = (np.empty(n) for _ in range(5))
     for i in range(n):
         f, f_z, sign, _ = K.state(h[i], w * g[i], U[i], eta[i], p_above[i], p_below[i], supply[i],
                                *geometry)
         load[i], friction[i], flow[i], inflow[i] = f_z, sign * f[1], sign * f[2], sign * f[7]
-        layer_out[i] = f[2] / abs(U[i]) if U[i] != 0.0 else np.nan
+        layer_out[i] = f[2] / abs(U[i]) if abs(U[i]) > u_dead else np.nan
     boundary = h <= boundary_roughness
     friction = np.where(boundary, boundary_friction * load * np.sign(U), friction)
     return RingCycle(theta, h, load, friction, flow, layer_out, inflow,

@@ -31,10 +31,10 @@ def zeta_pack():
     return _pack(2)
 
 
-@pytest.mark.xfail(strict=True, reason="continuity fails at 4 (top) and 4 (second) of 720 "
+@pytest.mark.xfail(strict=True, reason="continuity fails at 3 (top) and 4 (second) of 720 "
                    "angles: where the supplied layer is thinner than half the minimum gap (the "
                    "second ring first meeting the top ring's thin layer at 215 and 575 deg; the "
-                   "top ring near 337 and 695 deg) even an inlet at the minimum gap draws more "
+                   "top ring at 337, 695 and 719 deg) even an inlet at the minimum gap draws more "
                    "than the layer brings; Yang's inlet rule has no position past the minimum gap")
 def test_continuity_holds_at_every_angle(zeta_pack):
     """Yang eq. 5.34: a starved ring never draws more oil through its inlet than the layer it is
@@ -75,7 +75,7 @@ def test_starved_net_transport_is_upward_and_far_below_flooded(zeta_pack, ring, 
 @pytest.mark.xfail(strict=True, reason="within one ring spacing of TDC the top ring meets only "
                    "the oil it left itself on its previous stroke (Yang's dead-centre assumption, "
                    "§6.2.3); under continuity that oil can only decrease, so every pass drains "
-                   "the zone further towards a dry ring (film 3.1 nm -> 0.8 nm at 22 deg from "
+                   "the zone further towards a dry ring (film 3.2 nm -> 0.7 nm at 22 deg from "
                    "pass 2 to pass 3). Yang's two passes end because his dead-centre data are the "
                    "previous pass's; the oil that would refill the zone is not in the source")
 def test_a_third_pass_changes_nothing(zeta_pack):
