@@ -44,30 +44,37 @@ def _remainder(x, y):
 
 
 @njit(cache=True, error_model="numpy")
-def _sommerfeld(beta, eps, k):
-    """Sommerfeld angle gamma(beta) (mobility._sommerfeld) with its sine and cosine, formed from
-    the half-angle vector (k sin(beta/2), cos(beta/2)) without further trigonometry."""
-    m = np.rint(beta / _TWO_PI)
-    b0 = beta - _TWO_PI * m
-    s, c = k * math.sin(0.5 * b0), math.cos(0.5 * b0)
+def _sommerfeld(s, c, m):
+    """Sommerfeld angle gamma (mobility._sommerfeld) with its sine and cosine, from the scaled
+    half-angle vector (s, c) = (k sin(b0/2), cos(b0/2)), b0 = beta - 2 pi m in [-pi, pi]."""
     r2 = s * s + c * c
     return 2.0 * math.atan2(s, c) + _TWO_PI * m, 2.0 * s * c / r2, (c * c - s * s) / r2
 
 
 @njit(cache=True, error_model="numpy")
-def _kd(eps, delta):
-    """K d and det K in the line-of-centres frame (mobility._kd, pi film)."""
+def _kd(eps, delta, k, q25, q2, q15):
+    """K d and det K in the line-of-centres frame (mobility._kd, pi film).
+
+    The film window runs from beta0 = delta + pi/2 to beta0 + pi. One sine and one cosine of
+    the wrapped half angle h0 = beta0/2 - pi m0 give everything else: the half angle of the
+    window's end is h0 + pi/2 (less pi when it wraps one more turn), and cos(delta) = sin(2 h0),
+    sin(delta) = -cos(2 h0) (the march spends its time in this function). ``k`` =
+    sqrt((1 - eps)/(1 + eps)) and ``q25``, ``q2``, ``q15`` = (1 - eps^2)^(5/2, 2, 3/2) depend on
+    eps only: the Newton iteration of one mobility forms them once."""
     a = delta + _HALF_PI
-    k = math.sqrt((1.0 - eps) / (1.0 + eps))
-    g0, s0, c0 = _sommerfeld(a, eps, k)
-    g1, s1, c1 = _sommerfeld(a + math.pi, eps, k)
-    q = 1.0 - eps * eps
+    m0 = np.rint(a / _TWO_PI)
+    m1 = np.rint((a + math.pi) / _TWO_PI)
+    h0 = 0.5 * (a - _TWO_PI * m0)
+    sh, ch = math.sin(h0), math.cos(h0)
+    flip = 1.0 if m1 == m0 else -1.0    # h1 = h0 + pi/2 - pi (m1 - m0)
+    g0, s0, c0 = _sommerfeld(k * sh, ch, m0)
+    g1, s1, c1 = _sommerfeld(flip * k * ch, -flip * sh, m1)
     dg = g1 - g0
     d2 = 0.5 * (s1 * c1 - s0 * c0)
-    icc = (0.5 * dg + d2 - 2.0 * eps * (s1 - s0) + eps * eps * dg) / q ** 2.5
-    ics = (0.5 * (s1 * s1 - s0 * s0) + eps * (c1 - c0)) / q ** 2
-    iss = (0.5 * dg - d2) / q ** 1.5
-    cd, sd = math.cos(delta), math.sin(delta)
+    icc = (0.5 * dg + d2 - 2.0 * eps * (s1 - s0) + eps * eps * dg) / q25
+    ics = (0.5 * (s1 * s1 - s0 * s0) + eps * (c1 - c0)) / q2
+    iss = (0.5 * dg - d2) / q15
+    cd, sd = 2.0 * sh * ch, sh * sh - ch * ch
     return icc * cd + ics * sd, ics * cd + iss * sd, icc * iss - ics * ics
 
 
@@ -78,8 +85,11 @@ def _mobility_exact(eps, tau, delta0, warm):
     lo, hi = tau - _HALF_PI, tau + _HALF_PI
     x = delta0 if (warm and lo < delta0 < hi) else tau
     ct, st = math.cos(tau), math.sin(tau)
+    k = math.sqrt((1.0 - eps) / (1.0 + eps))
+    q = 1.0 - eps * eps
+    q25, q2, q15 = q ** 2.5, q ** 2, q ** 1.5
     for _ in range(100):
-        fx, fy, det = _kd(eps, x)
+        fx, fy, det = _kd(eps, x, k, q25, q2, q15)
         g = math.atan2(ct * fy - st * fx, ct * fx + st * fy)
         if g > 0.0:
             hi = x
@@ -91,7 +101,7 @@ def _mobility_exact(eps, tau, delta0, warm):
         x = xn if lo < xn < hi else 0.5 * (lo + hi)
         if hi - lo < tol:
             break
-    fx, fy, _ = _kd(eps, x)
+    fx, fy, _ = _kd(eps, x, k, q25, q2, q15)
     return x, 1.0 / math.hypot(fx, fy)
 
 

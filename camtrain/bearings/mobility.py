@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 
 __all__ = ["film_window_integrals", "squeeze_force", "mobility_exact", "mobility_booker",
-           "film_factor"]
+           "film_factor", "film_factors"]
 
 _TWO_PI = 2.0 * math.pi
 
@@ -148,3 +148,22 @@ def film_factor(eps: float, delta: float, film: str) -> float:
     if film == "2pi":
         return _TWO_PI / math.sqrt(1.0 - eps * eps)
     return film_window_integrals(eps, delta + 0.5 * math.pi)[3]
+
+
+def film_factors(eps, delta, film: str):
+    """:func:`film_factor` over arrays of ``eps`` and ``delta`` (same formulas, vectorised: an
+    orbit has one value per load-diagram angle)."""
+    import numpy as np
+
+    eps = np.asarray(eps, dtype=float)
+    if film == "2pi":
+        return _TWO_PI / np.sqrt(1.0 - eps * eps)
+    k = np.sqrt((1.0 - eps) / (1.0 + eps))
+
+    def gamma(beta):   # _sommerfeld, elementwise
+        m = np.round(beta / _TWO_PI)
+        b0 = beta - _TWO_PI * m
+        return 2.0 * np.arctan2(k * np.sin(0.5 * b0), np.cos(0.5 * b0)) + _TWO_PI * m
+
+    a = np.asarray(delta, dtype=float) + 0.5 * math.pi
+    return (gamma(a + math.pi) - gamma(a)) / np.sqrt(1.0 - eps * eps)

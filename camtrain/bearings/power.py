@@ -22,7 +22,7 @@ from camtrain.errors import field_error
 from camtrain.formulas.bearings import petroff_power
 
 from .geometry import JournalBearing
-from .mobility import film_factor
+from .mobility import film_factors
 
 __all__ = ["FILMS", "TERMS", "bearing_petroff_power", "shear_power", "check_film", "check_terms"]
 
@@ -68,5 +68,5 @@ def shear_power(bearing: JournalBearing, eps, delta, omega_rel, film: str = "2pi
     """
     eps = np.atleast_1d(np.asarray(eps, dtype=float))
     delta = np.broadcast_to(np.asarray(delta, dtype=float), eps.shape)
-    j = np.array([film_factor(float(e), float(d), film) for e, d in zip(eps, delta, strict=True)])
+    j = film_factors(eps, delta, film)
     return bearing.shear_coefficient * j * np.asarray(omega_rel, dtype=float) ** 2
