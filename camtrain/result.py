@@ -33,6 +33,19 @@ def flat_name(name: str, component: str | None) -> str:
     return name if component is None else f"{component}_{name}"
 
 
+_FLOAT = np.dtype(float)
+_new, _set = object.__new__, object.__setattr__
+
+
+def _built(cls, fields: dict):
+    """An instance of the frozen dataclass ``cls`` with these (complete, checked) fields,
+    without the field-by-field frozen ``__init__``: a run adds some 70 columns and metrics,
+    and their construction was a measurable share of a short run."""
+    obj = _new(cls)
+    _set(obj, "__dict__", fields)
+    return obj
+
+
 @dataclass(frozen=True)
 class Column:
     """One per-angle (or per-time) quantity on the grid of its axis."""
@@ -111,15 +124,18 @@ class Result:
             axis = self.axes[0]
         elif axis not in self.axes:
             raise KeyError(f"no axis {axis!r} in this result (axes: {self.axes})")
-        key = flat_name(name, component)
-        self.columns[key] = Column(np.asarray(values, dtype=float), unit, description, axis,
-                                   name, component)
+        if type(values) is not np.ndarray or values.dtype != _FLOAT:
+            values = np.asarray(values, dtype=float)
+        self.columns[name if component is None else f"{component}_{name}"] = _built(
+            Column, {"values": values, "unit": unit, "description": description, "axis": axis,
+                     "name": name, "component": component})
 
     def add_metric(self, name: str, value: float, unit: str, description: str,
                    angle: float | None = None, *, component: str | None = None) -> None:
-        self.metrics[flat_name(name, component)] = Metric(
-            float(value), unit, description, None if angle is None else float(angle), name,
-            component)
+        self.metrics[name if component is None else f"{component}_{name}"] = _built(
+            Metric, {"value": float(value), "unit": unit, "description": description,
+                     "angle": None if angle is None else float(angle), "name": name,
+                     "component": component})
 
     def add_event(self, kind: str, at: float, description: str, *,
                   component: str | None = None, axis: str | None = None) -> None:

@@ -60,32 +60,55 @@ def lift_columns(deck, result, points: int | None = None):
 
     Returns the LiftLaw and the LiftCurve for later effects.
     """
+    points = points or deck.solver.angle_points
+    columns, metrics, warnings = _lift_outputs(deck.lift, points)
+    add_column, add_metric = result.add_column, result.add_metric
+    result.add_axis(*columns[0])
+    for args in columns[1:]:
+        add_column(*args)
+    for args in metrics:
+        add_metric(*args)
+    for message in warnings:
+        result.warn(message)
+    return _cached_law(deck.lift), _cached_curve(deck.lift, points)
+
+
+@lru_cache(maxsize=32)
+def _lift_outputs(lift_model, points: int):
+    """The lift law's columns, metrics and warnings on the grid, as argument tuples for
+    ``add_column`` / ``add_metric``: they depend only on the [lift] model and the grid, like
+    the curve they come from, so a sweep (or a second run of a deck) forms them once."""
     import numpy as np
 
-    law = _cached_law(deck.lift)
-    curve = _cached_curve(deck.lift, points or deck.solver.angle_points)
+    law = _cached_law(lift_model)
+    curve = _cached_curve(lift_model, points)
     theta = curve.theta
-    where = "valve" if deck.lift.measured_at == "valve" else "cam (inspection follower)"
-    result.add_axis("cam_angle", theta, "rad", "cam angle from the maximum-lift position")
-    result.add_column("lift", curve.lift, "m", f"lift at the {where}")
-    result.add_column("velocity", curve.d1, "m/rad", "dl/dtheta")
-    result.add_column("acceleration", curve.d2, "m/rad^2", "d2l/dtheta2")
-    result.add_column("jerk", curve.d3, "m/rad^3", "d3l/dtheta3")
-    result.add_metric("max_lift", _cached_max_lift(deck.lift), "m", "maximum lift", 0.0)
-    result.add_metric("opening_angle", law.opening_angle, "rad",
-                      "cam angle where the event (ramp included) starts")
-    result.add_metric("closing_angle", law.closing_angle, "rad",
-                      "cam angle where the event (ramp included) ends")
+    where = "valve" if lift_model.measured_at == "valve" else "cam (inspection follower)"
+    columns = (
+        ("cam_angle", theta, "rad", "cam angle from the maximum-lift position"),
+        ("lift", curve.lift, "m", f"lift at the {where}"),
+        ("velocity", curve.d1, "m/rad", "dl/dtheta"),
+        ("acceleration", curve.d2, "m/rad^2", "d2l/dtheta2"),
+        ("jerk", curve.d3, "m/rad^3", "d3l/dtheta3"),
+    )
+    metrics = [
+        ("max_lift", _cached_max_lift(lift_model), "m", "maximum lift", 0.0),
+        ("opening_angle", law.opening_angle, "rad",
+         "cam angle where the event (ramp included) starts"),
+        ("closing_angle", law.closing_angle, "rad",
+         "cam angle where the event (ramp included) ends"),
+    ]
     i = int(np.argmax(curve.d1))
-    result.add_metric("max_velocity", curve.d1[i], "m/rad", "largest dl/dtheta", theta[i])
+    metrics.append(("max_velocity", curve.d1[i], "m/rad", "largest dl/dtheta", theta[i]))
     i = int(np.argmin(curve.d2))
-    result.add_metric("min_acceleration", curve.d2[i], "m/rad^2",
-                      "most negative d2l/dtheta2 (nose deceleration)", theta[i])
+    metrics.append(("min_acceleration", curve.d2[i], "m/rad^2",
+                    "most negative d2l/dtheta2 (nose deceleration)", theta[i]))
     i = int(np.argmax(curve.d2))
-    result.add_metric("max_acceleration", curve.d2[i], "m/rad^2", "largest d2l/dtheta2",
-                      theta[i])
-    _report_law_quality(deck.lift, result, float(np.max(np.abs(curve.d1))))
-    return law, curve
+    metrics.append(("max_acceleration", curve.d2[i], "m/rad^2", "largest d2l/dtheta2",
+                    theta[i]))
+    warnings: list[str] = []
+    _report_law_quality(lift_model, metrics, warnings, float(np.max(np.abs(curve.d1))))
+    return columns, tuple(metrics), tuple(warnings)
 
 
 #: A joint of a piecewise law is warned about when lift steps by more than 1 µm or velocity by
@@ -104,25 +127,28 @@ def _worth_warning(j, peak_velocity: float) -> bool:
     return j.label not in _RAMP_ENDS and abs(j.d1) > _VELOCITY_STEP_FRACTION * peak_velocity
 
 
-def _report_law_quality(lift_model, result, peak_velocity: float) -> None:
-    """Joint jumps of piecewise laws and the derivative noise of tables, as metrics/warnings
-    (both computed once per lift model, see the caches above)."""
+def _report_law_quality(lift_model, metrics: list, warnings: list,
+                        peak_velocity: float) -> None:
+    """Joint jumps of piecewise laws and the derivative noise of tables, as metric argument
+    tuples and warnings (both computed once per lift model, see the caches above)."""
     jumps = _cached_jumps(lift_model)
     if jumps:
         for name, unit, what in (("lift", "m", "lift"), ("d1", "m/rad", "velocity"),
                                  ("d2", "m/rad^2", "acceleration"), ("d3", "m/rad^3", "jerk")):
             worst = max(jumps, key=lambda j, n=name: abs(getattr(j, n)))
-            result.add_metric(f"joint_jump_{what}", abs(getattr(worst, name)), unit,
-                              f"largest {what} jump at a joint of the lift law", worst.angle)
+            metrics.append((f"joint_jump_{what}", abs(getattr(worst, name)), unit,
+                            f"largest {what} jump at a joint of the lift law", worst.angle))
         for j in jumps:
             if _worth_warning(j, peak_velocity):
-                result.warn(f"lift law is discontinuous: {j.describe()}")
+                message = f"lift law is discontinuous: {j.describe()}"
+                if message not in warnings:
+                    warnings.append(message)
     if callable(getattr(_cached_law(lift_model), "noise_estimate", None)):
         est = _cached_noise(lift_model)
-        result.add_metric("table_noise_velocity", est.d1, "m/rad",
-                          "estimated RMS noise of the table-derived velocity")
-        result.add_metric("table_noise_acceleration", est.d2, "m/rad^2",
-                          "estimated RMS noise of the table-derived acceleration")
+        metrics.append(("table_noise_velocity", est.d1, "m/rad",
+                        "estimated RMS noise of the table-derived velocity"))
+        metrics.append(("table_noise_acceleration", est.d2, "m/rad^2",
+                        "estimated RMS noise of the table-derived acceleration"))
 
 
 #: Kinematics fields written to the result: name in the result, field, unit, description
@@ -212,24 +238,25 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
 
 
 def zero_crossings(theta, values) -> list[float]:
-    """Angles where a periodic per-angle quantity changes sign (linear interpolation)."""
+    """Angles where a periodic per-angle quantity changes sign (linear interpolation); a run of
+    exact zeros is reported once, at its start."""
     import numpy as np
 
     v = np.asarray(values, dtype=float)
-    v_next = np.roll(v, -1)
-    t_next = np.roll(theta, -1).copy()
-    t_next[-1] += 2.0 * np.pi
-    idx = np.nonzero((v == 0.0) | (np.sign(v) * np.sign(v_next) < 0))[0]
-    out = []
-    for i in idx:
-        if v[i] == 0.0:
-            if v[i - 1] != 0.0:  # a run of exact zeros is reported once, at its start
-                out.append(float(theta[i]))
-            continue
-        frac = v[i] / (v[i] - v_next[i])
-        angle = theta[i] + frac * (t_next[i] - theta[i])
-        out.append(float((angle + np.pi) % (2.0 * np.pi) - np.pi))
-    return out
+    v_next = np.concatenate((v[1:], v[:1]))
+    zero = v == 0.0
+    idx = np.flatnonzero(zero | (np.sign(v) * np.sign(v_next) < 0))
+    if idx.size == 0:
+        return []
+    t = theta[idx]
+    t_next = theta[(idx + 1) % v.size] + np.where(idx == v.size - 1, 2.0 * np.pi, 0.0)
+    vi, vn = v[idx], v_next[idx]
+    on_zero = zero[idx]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        angle = t + vi / (vi - vn) * (t_next - t)
+    angle = np.where(on_zero, t, (angle + np.pi) % (2.0 * np.pi) - np.pi)
+    keep = ~on_zero | (v[idx - 1] != 0.0)
+    return angle[keep].tolist()
 
 
 @lru_cache(maxsize=32)

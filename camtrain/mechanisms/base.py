@@ -66,6 +66,13 @@ def _frozen(values: np.ndarray) -> np.ndarray:
     return values
 
 
+def kept(values: np.ndarray) -> np.ndarray:
+    """An input array a Kinematics keeps: itself when already read-only (a lift curve cached
+    and shared between runs), else a copy, which the Kinematics freezes without touching the
+    caller's array."""
+    return values if not values.flags.writeable else values.copy()
+
+
 def check_speed(omega: float) -> None:
     """The camshaft speed must be a positive number of rad/s."""
     if not (np.isfinite(omega) and omega > 0.0):

@@ -13,7 +13,7 @@ import numpy as np
 from camtrain.errors import field_error
 from camtrain.lift.base import LiftCurve
 from camtrain.mechanisms._contact import contact_arms
-from camtrain.mechanisms.base import Kinematics, analyse, check_speed, equivalent_radius
+from camtrain.mechanisms.base import Kinematics, analyse, check_speed, equivalent_radius, kept
 from camtrain.mechanisms.checks import check_curved_follower, check_face, check_flat_follower_convex
 
 FOLLOWER_SHAPES = ("spherical", "cylindrical")
@@ -177,13 +177,13 @@ def _translating(lift: LiftCurve, name: str, *, base_radius, follower_radius, of
                                      omega=omega, shape=shape, taper_angle=taper_angle)
         with np.errstate(divide="ignore"):
             ratio = 1.0 / fields["arm_normal"]
+        # the valve, cam and follower coordinates of a direct-acting follower are one lift
+        lift, d1, d2 = kept(lc.lift), kept(lc.d1), kept(lc.d2)
         return Kinematics(
-            mechanism=name, rotation="clockwise", omega=float(omega), theta=lc.theta.copy(),
-            valve_lift=lc.lift.copy(), valve_d1=lc.d1.copy(), valve_d2=lc.d2.copy(),
-            valve_d3=lc.d3.copy(), cam_lift=lc.lift.copy(), cam_d1=lc.d1.copy(),
-            cam_d2=lc.d2.copy(), rocker_ratio=ratio, arm_valve=np.ones_like(lc.lift),
-            q=lc.lift.copy(), q_d1=lc.d1.copy(), q_d2=lc.d2.copy(),
-            inertia={"follower_mass": lc.d2.copy()}, **fields)
+            mechanism=name, rotation="clockwise", omega=float(omega), theta=kept(lc.theta),
+            valve_lift=lift, valve_d1=d1, valve_d2=d2, valve_d3=kept(lc.d3), cam_lift=lift,
+            cam_d1=d1, cam_d2=d2, rocker_ratio=ratio, arm_valve=np.ones_like(lc.lift),
+            q=lift, q_d1=d1, q_d2=d2, inertia={"follower_mass": d2}, **fields)
 
     return analyse(lift, rotation, kernel)
 
