@@ -13,7 +13,7 @@ import numpy as np
 
 from camtrain.contact.hertz import is_line
 from camtrain.contact.products import FilmField
-from camtrain.formulas import film_thickness
+from camtrain.formulas import film_thickness, film_thicknesses
 
 _CENTRAL = {"dowson_higginson_1977": "dowson_toyoda_1979",
             "dowson_higginson_1966": "dowson_toyoda_1979",
@@ -64,11 +64,10 @@ def steady_film(contact, kin, load=None) -> FilmField:
         inputs = dict(common, W=np.asarray(load)[ok], Rx=R[ok], Ry=Ry[ok], R_e=R[ok],
                       R_s=Ry[ok])
     h_min = np.full(u.shape, np.nan)
-    if np.any(ok):
-        h_min[ok] = film_thickness(method=m_min, **inputs)
-    h_cen = None
-    if m_cen is not None:
-        h_cen = np.full(u.shape, np.nan)
-        if np.any(ok):
-            h_cen[ok] = film_thickness(method=m_cen, **inputs)
+    h_cen = None if m_cen is None else np.full(u.shape, np.nan)
+    if ok.any():
+        if m_cen is None:
+            h_min[ok] = film_thickness(method=m_min, **inputs)
+        else:
+            h_min[ok], h_cen[ok] = film_thicknesses((m_min, m_cen), **inputs)
     return FilmField(min=h_min, central=h_cen, method=m_min, central_method=m_cen)

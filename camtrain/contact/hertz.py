@@ -17,7 +17,9 @@ from camtrain.identity_cache import by_identity
 
 
 def is_line(kin) -> bool:
-    return bool(np.all(np.isinf(kin.radius_y)))
+    """A line contact: no finite transverse radius anywhere (known once per Kinematics)."""
+    line = getattr(kin, "line_contact", None)
+    return bool(np.isinf(kin.radius_y).all()) if line is None else line
 
 
 @by_identity
@@ -47,11 +49,13 @@ def hertz_field(contact, kin, load) -> HertzField:
     width = contact.width
     R, Ry = kin.radius_x, kin.radius_y
     line = is_line(kin)
-    good_r = (R > 0.0) & np.isfinite(R) & (line | ((Ry > 0.0) & np.isfinite(Ry)))
-    use = good_r & (load > 0.0)
-    pmax, bx = np.zeros_like(load), np.zeros_like(load)
-    by = np.zeros_like(load)
-    if np.any(use):
+    good_r = (R > 0.0) & np.isfinite(R)
+    if not line:
+        good_r &= (Ry > 0.0) & np.isfinite(Ry)
+    loaded = load > 0.0
+    use = good_r & loaded
+    pmax, bx, by = np.zeros(load.shape), np.zeros(load.shape), np.zeros(load.shape)
+    if use.any():
         if line:
             h = hertz_line(load[use], R[use], E_r, L=width)
             pmax[use], bx[use] = h.max_pressure, h.half_width
@@ -63,6 +67,7 @@ def hertz_field(contact, kin, load) -> HertzField:
             if contact.tribology.hertz == "ball_1988":
                 pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], E_r,
                                                      method="ball_1988")
-    bad = ~good_r & (load > 0.0)
-    pmax[bad] = bx[bad] = by[bad] = np.nan
+    bad = ~good_r & loaded
+    if bad.any():
+        pmax[bad] = bx[bad] = by[bad] = np.nan
     return HertzField(pmax=pmax, half_width=bx, half_length=by, bad=bad, line=line)

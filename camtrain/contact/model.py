@@ -75,11 +75,12 @@ class CamContact:
         load = np.asarray(load, dtype=float)
         h = film.for_shear
         use = (load > 0.0) & np.isfinite(h) & np.isfinite(hertz.pmax)
-        force = np.zeros_like(load)
-        if np.any(use) and film.friction is not None:   # the film law solved the contact
-            force[use] = film.friction[use]
-        elif np.any(use):
-            force[use] = FRICTION_LAWS[self.friction_law](self, kin, load, hertz, h, use)
+        force = np.zeros(load.shape)
+        if use.any():
+            if film.friction is not None:   # the film law solved the contact
+                force[use] = film.friction[use]
+            else:
+                force[use] = FRICTION_LAWS[self.friction_law](self, kin, load, hertz, h, use)
         return FrictionField(force=force, hertz=hertz, film=film, used=use)
 
     def solve(self, kin, load) -> FrictionField:

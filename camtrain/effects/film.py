@@ -101,12 +101,12 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
     col("lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
-    if np.any(fin):
+    if fin.any():
         h = np.where(fin, film.min, np.inf)
-        i = int(np.argmin(h))
+        i = int(h.argmin())
         met("film_min", h[i], "m",
                        "smallest minimum film over the cycle" + tag, kin.theta[i])
-    k = int(np.argmax(kin.valve_lift))
+    k = kin.nose
     met("film_min_at_max_lift", film.min[k], "m",
                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                    kin.theta[k])

@@ -40,7 +40,7 @@ def run(deck, inputs, res):
         fields.append((component, field))
         force = field.force
         pos = load > 0.0
-        mu = np.zeros_like(load)
+        mu = np.zeros(load.shape)
         mu[pos] = force[pos] / load[pos]
         col("friction_force", force, "N",
                        f"cam/follower friction force ({contact.friction_law} model)"
@@ -51,10 +51,10 @@ def run(deck, inputs, res):
         met("boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
         skipped = pos & ~field.used & ~np.isnan(hertz[component].pmax)
-        if np.any(skipped):
+        if skipped.any():
             res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "
                      "where the Hertz stress or the film is not finite: friction, torque and "
                      "power_loss_mean count 0 there and understate the loss")
-        if not np.all(np.isfinite(force)):
+        if not np.isfinite(force).all():
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")
     return ContactFriction(tuple(fields), model=CamContact.from_deck(deck).friction_law)

@@ -41,18 +41,20 @@ def run(deck, inputs, res):
         if not hz.line:
             col("hertz_half_length", hz.half_length, "m",
                            "Hertz semi-axis across the rolling direction" + tag)
-        if np.any(hz.bad):
+        if hz.bad.any():
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
-        if np.any(np.isposinf(hz.pmax)):
-            res.warn(f"hertz_pmax is infinite{tag} at {int(np.isposinf(hz.pmax).sum())} loaded "
+        infinite = np.isposinf(hz.pmax)
+        if infinite.any():
+            res.warn(f"hertz_pmax is infinite{tag} at {int(infinite.sum())} loaded "
                      "angles (a vanishing contact radius or width): the contact cannot carry "
                      "the load there")
-        p = np.where(np.isnan(hz.pmax), -np.inf, hz.pmax)
-        i = int(np.argmax(p))
+        undefined = np.isnan(hz.pmax)
+        p = np.where(undefined, -np.inf, hz.pmax) if undefined.any() else hz.pmax
+        i = int(p.argmax())
         met("hertz_max", hz.pmax[i], "Pa",
                        "largest Hertz pressure over the cycle" + tag, kin.theta[i])
-        k = int(np.argmax(kin.valve_lift))
+        k = kin.nose
         met("hertz_at_max_lift", hz.pmax[k], "Pa",
                        "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                        kin.theta[k])

@@ -182,22 +182,22 @@ def kinematics_columns(k, result, component: str | None = None) -> None:
     desmodromic train)."""
     import numpy as np
 
+    add = result.add_column
     for name, attr, unit, description in _COLUMNS:
-        values = getattr(k, attr)
-        if name == "radius_y" and not np.any(np.isfinite(values)):
+        if name == "radius_y" and not np.isfinite(k.radius_y).any():
             continue  # line contact: nothing to tabulate
-        result.add_column(name, values, unit,
-                          description + (f" ({component} pair)" if component else ""),
-                          component=component)
+        add(name, getattr(k, attr), unit,
+            description + (f" ({component} pair)" if component else ""), component=component)
 
 
 def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
     """Scalar results a valve-train engineer looks for first."""
+    from functools import partial
+
     import numpy as np
 
     theta = k.theta
-    nose = int(np.argmax(k.valve_lift))
-    from functools import partial
+    nose = k.nose
 
     label = f" of the {component} pair" if component else ""
     add = partial(result.add_metric, component=component)
@@ -207,19 +207,19 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
         "cam radius of curvature at maximum lift" + label, theta[nose])
     add("equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
         "equivalent radius at maximum lift" + label, theta[nose])
-    i = int(np.argmin(k.cam_radius))
+    i = int(k.cam_radius.argmin())
     add("cam_radius_min", k.cam_radius[i], "m",
         "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
         theta[i])
-    i = int(np.argmax(np.abs(k.eccentricity)))
+    i = int(np.abs(k.eccentricity).argmax())
     add("eccentricity_max", abs(k.eccentricity[i]), "m",
         "largest distance of the contact from the face centre" + label, theta[i])
-    i = int(np.argmax(np.abs(k.pressure_angle)))
+    i = int(np.abs(k.pressure_angle).argmax())
     add("pressure_angle_max", abs(k.pressure_angle[i]), "rad",
         "largest pressure angle" + label, theta[i])
     if deck.mechanism.type == "flat" and component is None:
         # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
-        add("min_base_radius_convex", float(np.max(-(k.valve_lift + k.valve_d2))), "m",
+        add("min_base_radius_convex", float((-(k.valve_lift + k.valve_d2)).max()), "m",
             "smallest base radius for which the cam stays convex under a flat follower")
     zeros = zero_crossings(theta, k.entrainment)
     model = deck.tribology.film_model
@@ -252,8 +252,7 @@ def zero_crossings(theta, values) -> list[float]:
     t_next = theta[(idx + 1) % v.size] + np.where(idx == v.size - 1, 2.0 * np.pi, 0.0)
     vi, vn = v[idx], v_next[idx]
     on_zero = zero[idx]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        angle = t + vi / (vi - vn) * (t_next - t)
+    angle = t + vi / np.where(on_zero, 1.0, vi - vn) * (t_next - t)   # no 0/0 on a zero
     angle = np.where(on_zero, t, (angle + np.pi) % (2.0 * np.pi) - np.pi)
     keep = ~on_zero | (v[idx - 1] != 0.0)
     return angle[keep].tolist()

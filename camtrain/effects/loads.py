@@ -55,17 +55,18 @@ def _friction_callback(deck, kin):
     return lambda load: contact.solve(kin, load).force
 
 
-def solve_loads(deck, kin):
+def solve_loads(deck, kin, kw: dict | None = None, parts=None, depends: bool | None = None):
     """LoadSolution for the deck: one pass for followers without a friction arm, otherwise
-    Ball's friction/load iteration (§4.2.3.2) started at the boundary coefficient."""
-    import numpy as np
-
+    Ball's friction/load iteration (§4.2.3.2) started at the boundary coefficient. ``kw``
+    (:func:`load_inputs`), ``parts`` (its :func:`camtrain.loads.forces.load_parts`) and
+    ``depends`` (the follower has a friction arm) are formed here unless given."""
     from camtrain.loads import contact_load, iterate_load
 
-    kw = load_inputs(deck)
+    kw = load_inputs(deck) if kw is None else kw
     trib = deck.tribology
-    depends = bool(np.any(kin.arm_friction != 0.0))
-    return iterate_load(lambda mu: contact_load(kin, mu, **kw),
+    if depends is None:
+        depends = bool((kin.arm_friction != 0.0).any())
+    return iterate_load(lambda mu: contact_load(kin, mu, parts=parts, **kw),
                         _friction_callback(deck, kin) if depends else None,
                         mu0=trib.boundary_friction, tolerance=deck.solver.friction_tolerance,
                         max_iterations=deck.solver.friction_max_iterations,
@@ -119,7 +120,7 @@ def run_desmodromic(deck, train, res):
 def run(deck, inputs, res):
     import numpy as np
 
-    from camtrain.loads import ContactLoad, bounce_speed, contact_mask, valve_force
+    from camtrain.loads import ContactLoad, bounce_speed, contact_mask, load_parts, valve_force
     from camtrain.loads.product import runs
     from camtrain.mechanisms import TrainKinematics
     from camtrain.units import rad_s_to_rpm
@@ -128,8 +129,14 @@ def run(deck, inputs, res):
     if deck.mechanism.type == "desmodromic":
         return run_desmodromic(deck, train, res)
     kin = train.main
-    sol = solve_loads(deck, kin)
     kw = load_inputs(deck)
+    # the speed-independent and omega^2 parts of the load balance serve the load (every pass of
+    # the iteration) and the bounce speed alike: formed once
+    spring = {k: kw[k] for k in ("rate", "preload_compression", "valve_mass", "body_inertia",
+                                 "progressive")}
+    parts = load_parts(kin, **spring)
+    depends = bool((kin.arm_friction != 0.0).any())
+    sol = solve_loads(deck, kin, kw, parts, depends)
     load = sol.load
     inside = contact_mask(kin.valve_lift, kw["clearance"])
     fv = valve_force(kin.valve_lift, kin.valve_d2, kin.omega, rate=kw["rate"],
@@ -139,30 +146,31 @@ def run(deck, inputs, res):
                    "valve-side force, spring + valve-side inertia (0 while the valve is seated)")
     res.add_column("load", load, "N", "normal cam/follower contact load (rigid train; 0 before "
                    "the cam takes up the valve clearance; negative = loss of contact)")
-    i, j = int(np.argmax(load)), int(np.argmin(np.where(inside, load, np.inf)))
+    i, j = int(load.argmax()), int(np.where(inside, load, np.inf).argmin())
     res.add_metric("load_max", load[i], "N", "largest contact load", kin.theta[i])
-    if np.any(inside):
+    if inside.any():
         res.add_metric("load_min", load[j], "N", "smallest contact load while the cam drives "
                        "the valve", kin.theta[j])
     res.add_metric("load_iterations", sol.iterations, "-",
                    f"friction/load iterations (tolerance {sol.tolerance:g})")
     mu = sol.mu if sol.friction is not None else deck.tribology.boundary_friction
-    b = bounce_speed(kin, mu, **{k: v for k, v in kw.items() if k != "base_load"})
+    b = bounce_speed(kin, mu, clearance=kw["clearance"], parts=parts, **spring)
     if np.isfinite(b.omega):
         res.add_metric("bounce_speed", rad_s_to_rpm(b.omega), "rpm",
                        "camshaft speed at which the rigid train first loses contact",
                        b.angle)
     lost = inside & (load <= 0.0)
-    for start, end in runs(lost, kin.theta):
-        res.add_event("contact_loss", start, "the cam loses contact with the follower (W <= 0)")
-        res.add_event("contact_regained", end, "last angle without contact before the cam "
-                      "carries the follower again")
-    if np.any(lost):
+    if lost.any():
+        for start, end in runs(lost, kin.theta):
+            res.add_event("contact_loss", start,
+                          "the cam loses contact with the follower (W <= 0)")
+            res.add_event("contact_regained", end, "last angle without contact before the "
+                          "cam carries the follower again")
         deg = np.degrees(kin.theta[lost])
         res.warn(f"valve bounce: the cam loses contact (W <= 0) at {int(lost.sum())} angles "
                  f"between {deg.min():.1f} and {deg.max():.1f} deg; the rigid-train results "
                  "there are not physical")
-    if sol.friction is None and np.any(kin.arm_friction != 0.0):
+    if sol.friction is None and depends:
         res.warn("friction/load iteration skipped (no lubricant or cam width): loads use the "
                  f"boundary coefficient {deck.tribology.boundary_friction:g} everywhere")
     return ContactLoad(load=load, in_contact=inside, model=RIGID,

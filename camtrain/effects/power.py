@@ -61,7 +61,7 @@ def run_pair(kin, load, force, res, component: str | None = None):
     col("cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag)
     col("power_loss", power, "W",
                    "friction power F r omega (Ball eq. 4.8)" + tag)
-    i = int(np.argmax(np.abs(tf)))
+    i = int(np.abs(tf).argmax())
     met("friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag,
                    kin.theta[i])
     mean = float(cycle_mean(power))

@@ -36,7 +36,13 @@ from .elastic import (
     reduced_radius,
     sliding_speed,
 )
-from .film import FILM_METHODS, film_groups, film_thickness, film_thickness_methods
+from .film import (
+    FILM_METHODS,
+    film_groups,
+    film_thickness,
+    film_thickness_methods,
+    film_thicknesses,
+)
 from .film_line import (
     dowson_dunn_taylor_1983,
     dowson_higginson_1966,
@@ -113,7 +119,7 @@ __all__ = [
     "couette_guide_power", "curvature_sum", "cycle_mean", "dowson_dunn_taylor_1983",
     "dowson_higginson_1966", "dowson_higginson_1977", "dowson_toyoda_1979", "ellipticity_exact",
     "entrainment_radii", "entrainment_speed", "evans_johnson_shear_stress", "film_groups",
-    "FILM_METHODS", "film_parameter", "film_thickness", "film_thickness_methods",
+    "FILM_METHODS", "film_parameter", "film_thickness", "film_thickness_methods", "film_thicknesses",
     "friction_coefficient", "FRICTION_MODELS", "friction_power", "friction_torque",
     "greenwood_tripp_1970_area", "greenwood_tripp_1970_load", "greenwood_tripp_f52_fit",
     "greenwood_tripp_function", "hamrock_dowson_1977_cen", "hamrock_dowson_1977_min",

@@ -57,6 +57,11 @@ def trusted_inputs() -> Iterator[None]:
         _TRUSTED.reset(token)
 
 
+def checking() -> bool:
+    """False inside :func:`trusted_inputs` (the chain's inputs were validated at the deck)."""
+    return not _TRUSTED.get()
+
+
 def check(name: str, x, ok, expected: str, hint: str = "") -> np.ndarray:
     """Raise a field error if any element of ``x`` fails ``ok`` (a boolean array or callable);
     inside :func:`trusted_inputs` only convert ``x``."""
@@ -95,6 +100,14 @@ def radius(name: str, x) -> np.ndarray:
     return positive(name, x, _RADIUS_HINT)
 
 
+def _broadcast(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
+    """np.broadcast_arrays, skipped when the shapes already agree (the chain's common case)."""
+    shape = arrays[0].shape
+    if all(a.shape == shape for a in arrays[1:]):
+        return arrays
+    return tuple(np.broadcast_arrays(*arrays))
+
+
 def safe_exp(x) -> np.ndarray:
     """exp(x) returning +inf above the float range and 0 below the normal range, silently.
 
@@ -102,7 +115,7 @@ def safe_exp(x) -> np.ndarray:
     function is quiet under ``np.errstate(all="raise")``.
     """
     x = arr(x)
-    res = np.exp(np.clip(x, LOG_FLOAT_TINY, LOG_FLOAT_MAX))
+    res = np.exp(np.minimum(np.maximum(x, LOG_FLOAT_TINY), LOG_FLOAT_MAX))   # clip, NaN kept
     return np.where(x > LOG_FLOAT_MAX, np.inf, np.where(x < LOG_FLOAT_TINY, 0.0, res))
 
 
@@ -113,7 +126,7 @@ def capped_exp_product(prefactor, log_factor, cap) -> np.ndarray:
     product is formed in log space only where both sides are positive and finite; the result is
     inf-free whenever ``cap`` is finite.
     """
-    prefactor, log_factor, cap = np.broadcast_arrays(arr(prefactor), arr(log_factor), arr(cap))
+    prefactor, log_factor, cap = _broadcast(arr(prefactor), arr(log_factor), arr(cap))
     pos = (prefactor > 0) & np.isfinite(prefactor)
     logp = np.log(np.where(pos, prefactor, 1.0)) + log_factor
     uncapped = np.where(pos, safe_exp(logp), np.where(prefactor > 0, np.inf, 0.0))
@@ -122,7 +135,7 @@ def capped_exp_product(prefactor, log_factor, cap) -> np.ndarray:
 
 def safe_divide(num, den, zero_den=np.inf) -> np.ndarray:
     """num/den, with ``zero_den`` where den == 0 and num != 0, and 0 where both are 0."""
-    num, den = np.broadcast_arrays(arr(num), arr(den))
+    num, den = _broadcast(arr(num), arr(den))
     nz = den != 0
     res = np.divide(num, np.where(nz, den, 1.0))
     return np.where(nz, res, np.where(num == 0, 0.0, zero_den))

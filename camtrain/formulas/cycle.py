@@ -68,7 +68,12 @@ def cycle_mean(values, axis: int = -1, method: str = "trapezoid", closed: bool =
     Returns:
         the mean (float or array).
     """
-    v = np.moveaxis(arr(values), axis, -1)
+    v = arr(values)
+    if v.ndim == 1 and method == "trapezoid" and not closed and axis in (0, -1):
+        if v.size < 2:   # the plain mean of one periodic curve (the chain's case), as below
+            raise ValueError("need at least two samples per period")
+        return float(np.add.reduce(v) / v.size)
+    v = np.moveaxis(v, axis, -1)
     if v.shape[-1] < 2:
         raise ValueError("need at least two samples per period")
     if method == "trapezoid":

@@ -28,7 +28,8 @@ from . import film_point as fp
 from ._util import out
 from .registry import Method, Registry
 
-__all__ = ["FILM_METHODS", "film_thickness", "film_thickness_methods", "film_groups"]
+__all__ = ["FILM_METHODS", "film_thickness", "film_thicknesses", "film_thickness_methods",
+           "film_groups"]
 
 _LINE = ("w", "R", "u", "eta0", "alpha", "E_r")
 _POINT = ("W", "Rx", "Ry", "u", "eta0", "alpha", "E_r")
@@ -144,6 +145,21 @@ def film_thickness(method: str | None = None, **inputs):
         raise ValueError(f"method {m.name!r} needs {', '.join(missing)}")
     params = _parameters(m.func)
     return out(m.func(**{k: v for k, v in inputs.items() if k in params and v is not None}))
+
+
+def film_thicknesses(methods: tuple[str, ...], **inputs) -> tuple:
+    """:func:`film_thickness` of several methods on the same inputs (e.g. the minimum and the
+    central film of one contact). Power-law line fits share one evaluation of their
+    dimensionless groups, as the formulas are written; other methods run one by one."""
+    chosen = [FILM_METHODS.get_method(name) for name in methods]
+    laws = [getattr(m.func, "power_law", None) for m in chosen]
+    if len(chosen) < 2 or None in laws or any(inputs.get(k) is None for k in _LINE):
+        return tuple(film_thickness(method=name, **inputs) for name in methods)
+    R = inputs["R"]
+    groups = fl.line_groups(inputs["w"], R, inputs["u"], inputs["eta0"], inputs["alpha"],
+                            inputs["E_r"])
+    R = np.asarray(R, dtype=float)
+    return tuple(fl.power_film_of_groups(law, R, *groups) for law in laws)
 
 
 @functools.cache

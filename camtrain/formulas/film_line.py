@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._util import arr, non_negative, out, positive, radius, safe_exp
+from ._util import arr, checking, non_negative, out, positive, radius, safe_exp
 
 __all__ = ["line_groups", "dowson_higginson_1977", "dowson_higginson_1966",
            "dowson_toyoda_1979", "pan_hamrock_1989_min", "pan_hamrock_1989_cen", "moes_1992",
@@ -34,7 +34,7 @@ __all__ = ["line_groups", "dowson_higginson_1977", "dowson_higginson_1966",
 def speed_material_groups(R, u, eta0, alpha, E_r):
     """U = eta0 |u| / (E' R) and G = alpha E' (Dowson-Higginson groups), for validated R, E'."""
     U = positive("eta0", eta0) * np.abs(arr(u)) / (E_r * R)
-    if not np.all(np.isfinite(U)):
+    if checking() and not np.all(np.isfinite(U)):
         raise ValueError("u must be finite")
     return U, non_negative("alpha", alpha) * E_r
 
@@ -48,11 +48,28 @@ def line_groups(w, R, u, eta0, alpha, E_r):
 
 
 def _power_film(C, a_u, a_g, a_w, w, R, u, eta0, alpha, E_r):
-    U, G, W = line_groups(w, R, u, eta0, alpha, E_r)
-    h = R * C * U**a_u * G**a_g * np.where(W > 0, W, 1.0) ** a_w
-    return out(np.where(W > 0, h, np.inf))  # unloaded: +inf even when u = 0
+    return power_film_of_groups((C, a_u, a_g, a_w), arr(R), *line_groups(w, R, u, eta0, alpha,
+                                                                          E_r))
 
 
+def power_film_of_groups(power_law, R, U, G, W):
+    """h = R C U^a_u G^a_g W^a_w of a power-law fit ``power_law`` = (C, a_u, a_g, a_w) from
+    validated groups (:func:`line_groups`); several fits of one contact share the groups."""
+    C, a_u, a_g, a_w = power_law
+    loaded = W > 0
+    h = R * C * U**a_u * G**a_g * np.where(loaded, W, 1.0) ** a_w
+    return out(np.where(loaded, h, np.inf))  # unloaded: +inf even when u = 0
+
+
+def _power_law(*coefficients):
+    """Mark a formula as the power-law fit h/R = C U^a_u G^a_g W^a_w with these coefficients."""
+    def mark(fn):
+        fn.power_law = coefficients
+        return fn
+    return mark
+
+
+@_power_law(2.65, 0.70, 0.54, -0.13)
 def dowson_higginson_1977(w, R, u, eta0, alpha, E_r):
     r"""Dowson & Higginson minimum film thickness, line contact.
 
@@ -67,9 +84,10 @@ def dowson_higginson_1977(w, R, u, eta0, alpha, E_r):
     eq. 4.1 (coefficient set as commonly quoted). Benchmarks (formulas_and_anchors §4.1):
     case A 336.5 nm, B 34.9 nm, C 429.4 nm.
     """
-    return _power_film(2.65, 0.70, 0.54, -0.13, w, R, u, eta0, alpha, E_r)
+    return _power_film(*dowson_higginson_1977.power_law, w, R, u, eta0, alpha, E_r)
 
 
+@_power_law(1.6, 0.70, 0.60, -0.13)
 def dowson_higginson_1966(w, R, u, eta0, alpha, E_r):
     r"""Earlier Dowson & Higginson minimum film formula (coefficient 1.6), line contact.
 
@@ -84,9 +102,10 @@ def dowson_higginson_1966(w, R, u, eta0, alpha, E_r):
         h_min [m]. Reference: Dowson & Higginson (1966) *Elasto-hydrodynamic Lubrication*,
         Pergamon; Göçmen (2013) eq. 2.1.
     """
-    return _power_film(1.6, 0.70, 0.60, -0.13, w, R, u, eta0, alpha, E_r)
+    return _power_film(*dowson_higginson_1966.power_law, w, R, u, eta0, alpha, E_r)
 
 
+@_power_law(3.06, 0.69, 0.56, -0.10)
 def dowson_toyoda_1979(w, R, u, eta0, alpha, E_r):
     r"""Dowson & Toyoda central film thickness, line contact.
 
@@ -99,9 +118,10 @@ def dowson_toyoda_1979(w, R, u, eta0, alpha, E_r):
     Ball (1988) eq. 4.2 (cited there as 1978). Benchmarks (formulas_and_anchors §4.1): case A
     439.0 nm, B 47.8 nm, C 557.0 nm.
     """
-    return _power_film(3.06, 0.69, 0.56, -0.10, w, R, u, eta0, alpha, E_r)
+    return _power_film(*dowson_toyoda_1979.power_law, w, R, u, eta0, alpha, E_r)
 
 
+@_power_law(1.714, 0.694, 0.568, -0.128)
 def pan_hamrock_1989_min(w, R, u, eta0, alpha, E_r):
     r"""Pan & Hamrock minimum film thickness, line contact.
 
@@ -110,9 +130,10 @@ def pan_hamrock_1989_min(w, R, u, eta0, alpha, E_r):
     Reference: Pan & Hamrock (1989) ASME J. Tribol. 111:246 (coefficients as quoted in
     formulas_and_anchors §4.1, tag [K]). Benchmarks: A 314.5, B 32.8, C 400.8 nm.
     """
-    return _power_film(1.714, 0.694, 0.568, -0.128, w, R, u, eta0, alpha, E_r)
+    return _power_film(*pan_hamrock_1989_min.power_law, w, R, u, eta0, alpha, E_r)
 
 
+@_power_law(2.922, 0.692, 0.470, -0.166)
 def pan_hamrock_1989_cen(w, R, u, eta0, alpha, E_r):
     r"""Pan & Hamrock central film thickness, line contact.
 
@@ -121,7 +142,7 @@ def pan_hamrock_1989_cen(w, R, u, eta0, alpha, E_r):
     Reference: Pan & Hamrock (1989) (coefficients tag [K]). Benchmarks: A 362.0, B 36.2,
     C 468.9 nm.
     """
-    return _power_film(2.922, 0.692, 0.470, -0.166, w, R, u, eta0, alpha, E_r)
+    return _power_film(*pan_hamrock_1989_cen.power_law, w, R, u, eta0, alpha, E_r)
 
 
 def moes_groups(w, R, u, eta0, alpha, E_r):

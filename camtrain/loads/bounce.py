@@ -32,14 +32,16 @@ def loss_of_contact(load, in_contact) -> np.ndarray:
 
 def bounce_speed(kin, mu=0.0, *, rate: float, preload_compression: float, valve_mass: float,
                  body_inertia=None, progressive: tuple[float, ...] = (),
-                 clearance: float = 0.0) -> Bounce:
+                 clearance: float = 0.0, parts=None) -> Bounce:
     """Closed-form lowest camshaft speed of loss of contact, min over angles of sqrt(-a/b).
 
     Angles already without load at zero speed (a <= 0) are excluded; they are a spring problem,
     not a speed limit. ``mu`` (fixed) enters the denominator only for followers with a friction arm.
+    ``parts``: (G0, G2) of :func:`~camtrain.loads.forces.load_parts` when already formed.
     """
-    g0, g2 = load_parts(kin, rate=rate, preload_compression=preload_compression,
-                        valve_mass=valve_mass, body_inertia=body_inertia, progressive=progressive)
+    g0, g2 = parts if parts is not None else load_parts(
+        kin, rate=rate, preload_compression=preload_compression, valve_mass=valve_mass,
+        body_inertia=body_inertia, progressive=progressive)
     denom = kin.arm_normal + np.asarray(mu, dtype=float) * kin.arm_friction
     ok = contact_mask(kin.valve_lift, clearance) & (denom > 0.0)
     safe = np.where(ok, denom, 1.0)

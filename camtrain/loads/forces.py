@@ -85,7 +85,7 @@ def contact_mask(valve_lift, clearance: float = 0.0):
 def contact_load(kin, mu=0.0, *, rate: float, preload_compression: float, valve_mass: float,
                  body_inertia: Mapping[str, float] | None = None,
                  progressive: tuple[float, ...] = (), clearance: float = 0.0,
-                 base_load: float = 0.0, omega: float | None = None):
+                 base_load: float = 0.0, omega: float | None = None, parts=None):
     """Normal cam/follower load W [N] at every cam angle (rigid train, no loss of contact).
 
     Args:
@@ -97,13 +97,16 @@ def contact_load(kin, mu=0.0, *, rate: float, preload_compression: float, valve_
         clearance: valve clearance [m]; W = ``base_load`` where l_v <= clearance.
         base_load: load while the valve is seated (a hydraulic lash adjuster's load) [N].
         omega: camshaft speed [rad/s]; default ``kin.omega``.
+        parts: (G0, G2) of :func:`load_parts` for these data when already formed (the load
+            iteration forms them once for all its passes).
 
     Returns W, which may be negative where the spring cannot hold the train on the cam (loss of
     contact; see :mod:`camtrain.loads.bounce`). Ball (1988) eqs. B.1-B.4, C.9, C.18.
     """
     w = kin.omega if omega is None else float(omega)
-    g0, g2 = load_parts(kin, rate=rate, preload_compression=preload_compression,
-                        valve_mass=valve_mass, body_inertia=body_inertia, progressive=progressive)
+    g0, g2 = parts if parts is not None else load_parts(
+        kin, rate=rate, preload_compression=preload_compression, valve_mass=valve_mass,
+        body_inertia=body_inertia, progressive=progressive)
     denom = kin.arm_normal + np.asarray(mu, dtype=float) * kin.arm_friction
     inside = contact_mask(kin.valve_lift, clearance)
     safe = np.where(inside & (denom != 0.0), denom, 1.0)

@@ -137,12 +137,14 @@ class Kinematics:
 
     def __post_init__(self) -> None:
         shape = np.shape(self.theta)
-        for name, value in vars(self).items():   # the fields (nothing else is set yet)
-            if isinstance(value, np.ndarray):
+        ndarray = np.ndarray
+        for name, value in self.__dict__.items():   # the fields (nothing else is set yet)
+            if type(value) is ndarray or isinstance(value, ndarray):
                 if value.shape != shape:
                     raise ValueError(f"Kinematics.{name} has shape {value.shape}, "
                                      f"theta has {shape}")
-                value.flags.writeable = False
+                if value.flags.writeable:
+                    value.flags.writeable = False
         for name, value in self.inertia.items():
             if np.shape(value) != shape:
                 raise ValueError(f"Kinematics.inertia[{name!r}] has the wrong shape")
@@ -164,6 +166,16 @@ class Kinematics:
     def sliding(self) -> np.ndarray:
         """Sliding velocity V_s = V_c - V_f [m/s]."""
         return _frozen(self.v_cam - self.v_follower)
+
+    @cached_property
+    def line_contact(self) -> bool:
+        """No finite transverse radius anywhere: a line contact (flat or cylindrical faces)."""
+        return bool(np.isinf(self.radius_y).all())
+
+    @cached_property
+    def nose(self) -> int:
+        """Index of the largest valve lift (the first, if it repeats)."""
+        return int(self.valve_lift.argmax())
 
     @property
     def profile_x(self) -> np.ndarray:

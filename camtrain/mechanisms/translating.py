@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from camtrain.errors import field_error
+from camtrain.identity_cache import by_identity
 from camtrain.lift.base import LiftCurve
 from camtrain.mechanisms._contact import contact_arms
 from camtrain.mechanisms.base import Kinematics, analyse, check_speed, equivalent_radius, kept
@@ -93,6 +94,20 @@ def yang_load_factor(beta, taper_angle):
     return 1.0 / np.sqrt(1.0 + np.tan(beta) ** 2 + np.tan(taper_angle) ** 2)
 
 
+@by_identity
+def _cached_unit_circle(theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    c, s = np.cos(theta), np.sin(theta)
+    c.flags.writeable = s.flags.writeable = False
+    return c, s
+
+
+def unit_circle(theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """cos(theta), sin(theta); formed once per read-only grid (the run's cached angle grid)."""
+    if isinstance(theta, np.ndarray) and not theta.flags.writeable:
+        return _cached_unit_circle(theta)
+    return np.cos(theta), np.sin(theta)
+
+
 # ---------------------------------------------------------------- kernel shared with push rods
 def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offset, omega,
                         shape="spherical", taper_angle=None):
@@ -101,7 +116,7 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
     ``follower_radius`` = inf selects the flat face; ``taper_angle`` (rad, or None) selects Yang's
     tapered-cam model for a radial spherical follower. Returns a dict of Kinematics fields.
     """
-    c, sn = np.cos(theta), np.sin(theta)
+    c, sn = unit_circle(theta)
     ax, ay, bx, by = -sn, c, c, sn       # follower axis and offset directions in the cam frame
     rb, e = base_radius, offset
     if np.isinf(follower_radius):
@@ -114,7 +129,7 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
         R = rc.copy()
         rx, ry = R, np.full_like(s, np.inf)
         rf_arr = np.full_like(s, np.inf)
-        load_factor = np.ones_like(s)
+        load_factor = None   # the whole normal load acts in the plane
     else:
         rf = follower_radius
         d = offset_base_height(rb, rf, e)
@@ -132,7 +147,7 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
             R = rf - rf * rf * np.cos(beta) * (1.0 - beta1) / (d + s)   # Ball eq. 3.3 form
             rx = R
             ry = np.full_like(s, rf if shape == "spherical" else np.inf)
-            load_factor = np.ones_like(s)
+            load_factor = None
         cb, sb = np.cos(beta), np.sin(beta)
         nx, ny = cb * ax + sb * bx, cb * ay + sb * by
         qx, qy = e * bx + (d + s) * ax, e * by + (d + s) * ay
@@ -140,10 +155,11 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
         ecc = rf * beta
         rf_arr = np.full_like(s, rf)
     arms = contact_arms(px, py, nx, ny, ax, ay, ax, ay, vc - vf)
-    # A taper tilts the normal out of the plane: only the in-plane share loads the follower axis
-    # and the camshaft (Yang eq. 3.11); friction stays in the plane.
-    arms["arm_normal"] = arms["arm_normal"] * load_factor
-    arms["torque_arm_normal"] = arms["torque_arm_normal"] * load_factor
+    if load_factor is not None:
+        # A taper tilts the normal out of the plane: only the in-plane share loads the follower
+        # axis and the camshaft (Yang eq. 3.11); friction stays in the plane.
+        arms["arm_normal"] = arms["arm_normal"] * load_factor
+        arms["torque_arm_normal"] = arms["torque_arm_normal"] * load_factor
     return dict(contact_x=px, contact_y=py, eccentricity=ecc, cam_radius=rc,
                 follower_radius=rf_arr, equivalent_radius=R, radius_x=rx, radius_y=ry,
                 v_cam=vc, v_follower=vf, **arms)
