@@ -96,9 +96,12 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     if film.central is not None:
         col("film_central", film.central, "m",
                        f"central film thickness, {film.central_method}{tag}")
-    lam = np.full(film.min.shape, np.nan)
     fin = np.isfinite(film.min)
-    lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
+    lam = np.full(film.min.shape, np.nan)
+    if fin.all():
+        lam = film_parameter(film.min, contact.lubricant.roughness)
+    elif fin.any():
+        lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
     col("lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
     if fin.any():

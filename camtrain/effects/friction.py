@@ -40,17 +40,16 @@ def run(deck, inputs, res):
         fields.append((component, field))
         force = field.force
         pos = load > 0.0
-        mu = np.zeros(load.shape)
-        mu[pos] = force[pos] / load[pos]
+        mu = np.divide(force, load, out=np.zeros(load.shape), where=pos)
         col("friction_force", force, "N",
                        f"cam/follower friction force ({contact.friction_law} model)"
                        f"{tag}")
         col("friction_coefficient", mu, "-",
                        "friction coefficient F/W (0 unloaded)" + tag)
         capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
-        met("boundary_fraction", capped.sum() / max(int(pos.sum()), 1), "-",
+        met("boundary_fraction", np.count_nonzero(capped) / max(np.count_nonzero(pos), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
-        skipped = pos & ~field.used & ~np.isnan(hertz[component].pmax)
+        skipped = pos & ~(field.used | np.isnan(hertz[component].pmax))
         if skipped.any():
             res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "
                      "where the Hertz stress or the film is not finite: friction, torque and "

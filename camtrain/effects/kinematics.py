@@ -6,6 +6,7 @@ physics are imported where they are used, so that resolving a plan stays light.
 """
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 
@@ -243,19 +244,22 @@ def zero_crossings(theta, values) -> list[float]:
     import numpy as np
 
     v = np.asarray(values, dtype=float)
-    v_next = np.concatenate((v[1:], v[:1]))
-    zero = v == 0.0
-    idx = np.flatnonzero(zero | (np.sign(v) * np.sign(v_next) < 0))
-    if idx.size == 0:
-        return []
-    t = theta[idx]
-    t_next = theta[(idx + 1) % v.size] + np.where(idx == v.size - 1, 2.0 * np.pi, 0.0)
-    vi, vn = v[idx], v_next[idx]
-    on_zero = zero[idx]
-    angle = t + vi / np.where(on_zero, 1.0, vi - vn) * (t_next - t)   # no 0/0 on a zero
-    angle = np.where(on_zero, t, (angle + np.pi) % (2.0 * np.pi) - np.pi)
-    keep = ~on_zero | (v[idx - 1] != 0.0)
-    return angle[keep].tolist()
+    sign = np.sign(v)
+    idx = np.flatnonzero((sign == 0.0) | (sign * np.concatenate((sign[1:], sign[:1])) < 0))
+    out = []
+    n = v.size
+    two_pi = 2.0 * math.pi
+    for i in idx.tolist():   # a few angles per cycle
+        vi = float(v[i])
+        if vi == 0.0:
+            if v[i - 1] != 0.0:
+                out.append(float(theta[i]))
+            continue
+        j = (i + 1) % n
+        t, t_next = float(theta[i]), float(theta[j]) + (two_pi if j == 0 else 0.0)
+        angle = t + vi / (vi - float(v[j])) * (t_next - t)
+        out.append((angle + math.pi) % two_pi - math.pi)
+    return out
 
 
 @lru_cache(maxsize=32)

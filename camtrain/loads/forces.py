@@ -30,7 +30,8 @@ def spring_force(valve_lift, rate: float, preload_compression: float,
     x = np.asarray(valve_lift, dtype=float) + preload_compression
     force = rate * x
     for power, c in enumerate(progressive, start=2):
-        force = force + c * x ** power
+        if c:   # a linear spring's zero terms add nothing
+            force = force + c * x ** power
     return force
 
 

@@ -33,10 +33,14 @@ def contact_arms(px, py, nx, ny, dispx, dispy, mx, my, sliding):
     """
     tx, ty = -ny, nx
     s = np.sign(sliding)
+    if mx is nx and my is ny:   # the face moves along its own normal (flat face): no angle
+        pressure_angle = np.zeros(np.shape(nx))
+    else:
+        pressure_angle = np.arctan2(-cross(mx, my, nx, ny), mx * nx + my * ny)
     return {
         "arm_normal": nx * dispx + ny * dispy,
         "arm_friction": -s * (tx * dispx + ty * dispy),
         "torque_arm_normal": -cross(px, py, nx, ny),
         "friction_arm": s * cross(px, py, tx, ty),
-        "pressure_angle": np.arctan2(-cross(mx, my, nx, ny), mx * nx + my * ny),
+        "pressure_angle": pressure_angle,
     }
