@@ -287,3 +287,17 @@ def march_orbit(fx, fy, wbar, t, dts, y0x, y0y, kind, gain, tol, period_tol, max
                                                    kind, gain, state, t_eps, t_mxi, t_mmu)
     status = OK if change <= period_tol else NOT_PERIODIC
     return cur, vel, cycles, change, status, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def squeeze_velocities(ex, ey, fx, fy, wbar, kind, gain, t_eps, t_mxi, t_mmu):
+    """Mobility velocity [vx, vy, delta] at each point of a given eccentricity path (the orbit
+    marched on a coarser load grid, interpolated onto the run's grid): as the end of
+    :func:`march_orbit`, with the load and speed of each point."""
+    n = ex.size
+    state = np.zeros(3)
+    vel = np.empty((n, 3))
+    for i in range(n):
+        vel[i, 0], vel[i, 1], vel[i, 2] = _squeeze(ex[i], ey[i], fx[i], fy[i], wbar[i], kind,
+                                                   gain, state, t_eps, t_mxi, t_mmu)
+    return vel

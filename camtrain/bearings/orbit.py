@@ -81,7 +81,8 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
                   film: str = "pi", terms: str = "shear", mobility: str | MobilityMap = "exact",
                   mobility_scale: float = 1.0, tol: float = 1e-7, period_tol: float = 1e-5,
                   max_cycles: int = 20, start: str = "steady",
-                  max_steps_per_cycle: int = 200_000) -> JournalOrbit:
+                  max_steps_per_cycle: int = 200_000,
+                  march_points: int | None = None) -> JournalOrbit:
     """Periodic journal orbit of ``bearing`` under a load diagram (Booker's mobility method).
 
     Args:
@@ -101,6 +102,12 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
         period_tol: cycle-to-cycle change on eps that counts as periodic.
         max_cycles: give up (ConvergenceError) after this many cycles.
         start: "steady" (quasi-static eps at the first angle) or "centre" (eps = 0, Yang).
+        march_points: march on the load diagram resampled (periodic linear) to this many equally
+            spaced angles per period when the diagram has more (resolution knob: the orbit's own
+            grid, independent of the grid the loads come on); the orbit is reported on the
+            diagram's own grid (eps interpolated linearly, its squeeze velocity, film and power
+            from the mobility under the diagram's load there). None or 0: march on the
+            diagram's grid.
     """
     film, terms = check_film(film), check_terms(terms)
     if not isinstance(mobility, MobilityMap) and mobility not in MOBILITIES:
@@ -117,6 +124,12 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
     th, fx, fy, (wj, wb) = load_diagram(load_x, load_y, angle_grid, period,
                                         omega_journal, omega_bearing)
     angle_rate = diagram_rate(angle_rate, omega_journal)
+    if march_points and 2 <= march_points < th.size:
+        return _resampled_orbit(bearing, th, fx, fy, wj, wb, int(march_points), period,
+                                angle_rate=angle_rate, film=film, terms=terms, mobility=mobility,
+                                mobility_scale=mobility_scale, tol=tol, period_tol=period_tol,
+                                max_cycles=max_cycles, start=start,
+                                max_steps_per_cycle=max_steps_per_cycle)
     wbar = 0.5 * (wj + wb)
     t = (th - th[0]) / angle_rate
     T = period / angle_rate
@@ -158,6 +171,48 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
             f"period_tol {period_tol:.3g}; raise max_cycles or period_tol")
     return assemble_orbit(bearing, th, t, T, fx, fy, cur[:, 0], cur[:, 1], vel, wj - wb, film, terms,
                    f"mobility-{label}", cycles, change, True)
+
+
+def periodic_linear(x, xp, fp, period: float) -> np.ndarray:
+    """fp (samples at increasing xp within one period) at x, linear and periodic."""
+    return np.interp(x, xp, fp, period=period)
+
+
+def _resampled_orbit(bearing, th, fx, fy, wj, wb, points, period, *, angle_rate, film, terms,
+                     mobility, **march) -> JournalOrbit:
+    """The orbit marched on ``points`` equally spaced angles (loads and speeds resampled,
+    periodic linear), reported on the grid ``th`` (see :func:`bearing_orbit`)."""
+    step = period / points
+    grid = th[0] + step * np.arange(points)
+    coarse = bearing_orbit(
+        bearing, periodic_linear(grid, th, fx, period), periodic_linear(grid, th, fy, period),
+        grid, periodic_linear(grid, th, wj, period), periodic_linear(grid, th, wb, period),
+        angle_rate=angle_rate, period=period, film=film, terms=terms, mobility=mobility,
+        **march)
+    from . import _orbit_kernel as K
+
+    # linear between the marched angles: no overshoot past them (a cubic overshoots where the
+    # orbit turns sharply, e.g. onto a plateau of constant load), and inside the clearance
+    ex = periodic_linear(th, grid, coarse.eps_x, period)
+    ey = periodic_linear(th, grid, coarse.eps_y, period)
+    kind, gain, table = _mobility_kernel(bearing, mobility, march["mobility_scale"])
+    vel = K.squeeze_velocities(ex, ey, fx, fy, 0.5 * (wj + wb), kind, float(gain), *table)
+    t = (th - th[0]) / angle_rate
+    return assemble_orbit(bearing, th, t, period / angle_rate, fx, fy, ex, ey, vel, wj - wb,
+                          film, terms, coarse.method, coarse.cycles, coarse.periodicity_error,
+                          coarse.converged)
+
+
+def _mobility_kernel(bearing, mobility, mobility_scale: float):
+    """(kind, gain, table arrays) of the compiled mobility for ``mobility``."""
+    from . import _orbit_kernel as K
+
+    if isinstance(mobility, MobilityMap):
+        return K.TABLE, mobility_scale * mobility.gain(bearing), (mobility.eps, mobility.m_xi,
+                                                                  mobility.m_mu)
+    kind = K.EXACT if mobility == "exact" else K.BOOKER
+    return kind, mobility_scale * (1.0 if mobility == "exact" else 2.0) / bearing.stiffness, \
+        _NO_TABLE
 
 
 def assemble_orbit(bearing, th, t, T, fx, fy, ex, ey, vel, wrel, film, terms, method, cycles,

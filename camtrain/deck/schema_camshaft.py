@@ -148,6 +148,11 @@ class Camshaft:
         default=1e-5, gt=0, lt=0.1)
     max_cycles: int = quantity("Most load cycles marched before giving up", "-", default=20,
                                ge=2, le=1000)
+    orbit_points: int = quantity(
+        "Load-diagram angles per revolution the bearing orbits are marched on: a finer run grid "
+        "is resampled onto them and the orbit interpolated back (0: march on the run's grid; "
+        "check a coarser grid with camtrain accuracy --knob orbit_points)",
+        "-", default=0, ge=0, le=100000)
 
     schema_rules = (WhenItem("lobes", "bank", (2,), require=("v_angle",)),)
 
@@ -160,6 +165,9 @@ class Camshaft:
             if not pos[i] > pos[i - 1]:
                 out.append(Problem(f"{path}.bearings[{i}].position", "is not after the previous "
                                    "bearing", mm_text(pos[i]), "bearings in increasing axial order"))
+        if 0 < self.orbit_points < 36:
+            out.append(Problem(f"{path}.orbit_points", "is too few angles for an orbit",
+                               self.orbit_points, "0 (the run's grid) or at least 36"))
         if self.v_angle is None and any(lobe.bank == 2 for lobe in self.lobes):
             out.append(Problem(f"{path}.v_angle", "is required when a lobe has bank = 2", None,
                                "the V angle in crank degrees"))

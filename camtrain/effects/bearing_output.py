@@ -23,12 +23,14 @@ def model_reason(brg: JournalBearing, options, sommerfeld=None) -> tuple[str, st
 
 def solve_bearing(brg: JournalBearing, lx, ly, angles, omega_journal, omega_bearing, *,
                   angle_rate, period, method, film, mobility="exact", terms="shear",
-                  tol=1e-7, period_tol=1e-5, max_cycles=20, start="steady", options=None):
+                  tol=1e-7, period_tol=1e-5, max_cycles=20, start="steady", options=None,
+                  march_points=None):
     """JournalOrbit for ``method`` mobility or steady; None for petroff (no orbit).
 
     ``options`` (a FilmModelOptions; None = the short model) picks the film through
     :func:`camtrain.bearings.models.choose_model`: the short pi film or the finite-length
-    Reynolds film (its mobility map, or its steady curve)."""
+    Reynolds film (its mobility map, or its steady curve). ``march_points``: the orbit's own
+    load grid (:func:`camtrain.bearings.bearing_orbit`), None: the diagram's."""
     from camtrain.bearings.models import finite_steady_orbit, orbit_mobility
 
     used = "short" if options is None else model_reason(brg, options)[0]
@@ -39,7 +41,7 @@ def solve_bearing(brg: JournalBearing, lx, ly, angles, omega_journal, omega_bear
         return bearing_orbit(brg, lx, ly, angles, omega_journal, omega_bearing,
                              angle_rate=angle_rate, period=period, film=film, terms=terms,
                              mobility=mobility, tol=tol, period_tol=period_tol,
-                             max_cycles=max_cycles, start=start)
+                             max_cycles=max_cycles, start=start, march_points=march_points)
     if method == "steady":
         if used == "finite":
             return finite_steady_orbit(brg, lx, ly, angles, omega_journal, omega_bearing,

@@ -41,6 +41,9 @@ def reason(deck, planned) -> str:
     split = ("loads from the elastic camshaft" if "ElasticCamshaft" in planned
              else "loads split as simply supported bays")
     head = f"{len(cs.bearings)} bearings given; {split}; {cs.method} method"
+    if cs.method == "mobility" and cs.orbit_points:
+        head += (f", orbits marched on {cs.orbit_points} load angles per revolution "
+                 "(camshaft.orbit_points)")
     if cs.method == "petroff":
         return head + " (concentric power, no film model)"
     from camtrain.deck.schema_bearing_model import film_model_options
@@ -127,7 +130,7 @@ def run(deck, inputs, res):
                                       mobility=cs.mobility,
                                       tol=min(1e-7, 1e-2 * cs.bearing_tolerance),
                                       period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles,
-                                      options=options)
+                                      options=options, march_points=cs.orbit_points)
         except ConvergenceError as exc:
             res.warn(f"{what}: {exc}; no orbit reported")
             orbits.append(None)

@@ -127,6 +127,12 @@ def _bearing_section(raw: dict) -> tuple[str, str] | None:
     return None if node.get("method", "mobility") == "petroff" else where
 
 
+def _camshaft_orbits(raw: dict) -> bool:
+    """The deck marches camshaft-bearing orbits (the mobility method)."""
+    cs = raw.get("camshaft", {})
+    return bool(cs.get("bearings")) and cs.get("method", "mobility") == "mobility"
+
+
 def _set_film(raw: dict, **fields) -> dict:
     section, prefix = _bearing_section(raw)
     out = copy.deepcopy(raw)
@@ -205,6 +211,10 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda raw: _bearing_section(raw) is not None,
          "journal-bearing film model: short (Ocvirk) and finite at the deck's mesh against "
          "the finite film at 288 x 24", setter=_model_rung, warm=True),
+    Knob("orbit_points", "camshaft.orbit_points", (90, 180, 360, 720, 1440), lambda v: 1.0 / v,
+         _camshaft_orbits, "load-diagram angles per revolution the camshaft-bearing orbits are "
+         "marched on (the run's grid resampled; a rung at or above the run's grid marches on "
+         "it)", integer=True),
     Knob("crank_step", "solver.crank_step", (4.0, 2.0, 1.0, 0.5, 0.25), lambda v: v, _engine,
          "crank-angle step of the load diagrams and orbits [deg]"),
     Knob("period_tolerance", "solver.period_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
