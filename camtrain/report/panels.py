@@ -69,6 +69,11 @@ def _finite(y: np.ndarray) -> np.ndarray:
     return np.where(np.isfinite(y), y, np.nan)
 
 
+def _plain(value: float, _pos=None) -> str:
+    """A tick label as a plain number with a true minus sign (no typeset mathematics)."""
+    return f"{value:g}".replace("-", "\N{MINUS SIGN}")
+
+
 def _zero_line(ax) -> None:
     ax.axhline(0.0, color=COLORS["grey"], lw=0.6, zorder=1)
 
@@ -159,6 +164,7 @@ def radii(ax, r, ctx):
         lo, hi = float(min(vals.min(), 0.0)), float(max(vals.max(), 0.0))
         scale = float(np.median(np.abs(vals[vals != 0]))) if np.any(vals) else 1.0
         ax.set_yscale("symlog", linthresh=scale, linscale=1.0)
+        ax.yaxis.set_major_formatter(_plain)    # 10, 100 rather than typeset powers
         ax.set_ylim(lo * 1.3 if lo < 0 else -0.05 * scale, hi * 1.3 if hi > 0 else scale)
     _zero_line(ax)
     ax.set_ylabel(f"radius of curvature [{unit}] (symlog)")
