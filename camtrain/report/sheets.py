@@ -164,12 +164,9 @@ def _panel(fig, result: Result, deck, pname: str, ctx: Ctx) -> bool:
 
 def _figure(size):
     """A bare Agg figure (no pyplot figure manager: nothing to close, nothing kept)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
+    from camtrain.report.canvas import figure
 
-    fig = Figure(figsize=size)
-    FigureCanvasAgg(fig)
-    return fig
+    return figure(size)
 
 
 #: --plots: which files a run draws (sheet formats, and whether every panel also goes alone)
