@@ -10,37 +10,50 @@ bitmaps. Mathematical text and anything unusual go through matplotlib's own path
 from __future__ import annotations
 
 import math
+import struct
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg, get_hinting_flag
 from matplotlib.figure import Figure
 
-#: (string, font properties, dpi, antialiased) -> (alpha bitmap, x offset, y offset, descent)
+#: (string, font properties, dpi, antialiased) -> bitmap, its offsets and the string's extent
 _STRINGS: dict[tuple, tuple] = {}
 _MAX_STRINGS = 4096
 
 
 class _Renderer(RendererAgg):
+    def get_text_width_height_descent(self, s, prop, ismath):
+        if ismath:
+            return super().get_text_width_height_descent(s, prop, ismath)
+        return self._string(s, prop, True)[4]
+
     def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
         if ismath or (mtext is not None and _shaped(mtext)):
             return super().draw_text(gc, x, y, s, prop, angle, ismath, mtext)
-        antialiased = bool(gc.get_antialiased())
-        key = (s, prop, self.dpi, antialiased)
-        hit = _STRINGS.get(key)
-        if hit is None:
-            font = self._prepare_font(prop)
-            font.set_text(s, 0.0, flags=get_hinting_flag())
-            font.draw_glyphs_to_bitmap(antialiased=antialiased)
-            xo, yo = font.get_bitmap_offset()
-            hit = (font.get_image().copy(), xo / 64.0, yo / 64.0, font.get_descent() / 64.0)
-            if len(_STRINGS) >= _MAX_STRINGS:
-                _STRINGS.clear()
-            _STRINGS[(s, prop.copy(), self.dpi, antialiased)] = hit    # a key nobody mutates
-        image, xo, yo, descent = hit
+        image, xo, yo, descent, _ = self._string(s, prop, bool(gc.get_antialiased()))
         rad = math.radians(angle)
         # (x, y) is the baseline's start, y downwards; the bitmap's bottom goes a descent below
         xi = round(x + xo + descent * math.sin(rad))
         yi = round(y + yo + descent * math.cos(rad))
         self._renderer.draw_text_image(image, xi, yi + 1, angle, gc)
+
+    def _string(self, s, prop, antialiased: bool) -> tuple:
+        """(bitmap, x offset, y offset, descent, (width, height, descent)) of a string, laid
+        out and rendered once: the layout that measures it also draws it."""
+        key = (s, prop, self.dpi, antialiased)
+        hit = _STRINGS.get(key)
+        if hit is None:
+            font = self._prepare_font(prop)
+            font.set_text(s, 0.0, flags=get_hinting_flag())
+            w, h = font.get_width_height()
+            descent = font.get_descent() / 64.0
+            font.draw_glyphs_to_bitmap(antialiased=antialiased)
+            xo, yo = font.get_bitmap_offset()
+            hit = (font.get_image().copy(), xo / 64.0, yo / 64.0, descent,
+                   (w / 64.0, h / 64.0, descent))
+            if len(_STRINGS) >= _MAX_STRINGS:
+                _STRINGS.clear()
+            _STRINGS[(s, prop.copy(), self.dpi, antialiased)] = hit   # a key nobody mutates
+        return hit
 
 
 def _shaped(mtext) -> bool:
@@ -67,3 +80,38 @@ def figure(size) -> Figure:
     fig = Figure(figsize=size)
     Canvas(fig)
     return fig
+
+
+def save_png(fig: Figure, path, software: str = "") -> None:
+    """Draw ``fig`` at rcParams["savefig.dpi"] and write it as an RGBA PNG.
+
+    The rows go through PNG's "up" filter (one numpy subtraction) and zlib at its fastest
+    level: a third of the time of Pillow's adaptive per-row filtering for a file ~10 % larger
+    (an A4 sheet at 150 dpi: ~25 ms against ~60 ms, ~300 kB)."""
+    import zlib
+
+    import matplotlib as mpl
+    import numpy as np
+
+    dpi = mpl.rcParams["savefig.dpi"]
+    if dpi != "figure" and dpi != fig.dpi:
+        fig.set_dpi(dpi)
+    fig.canvas.draw()
+    pixels = np.asarray(fig.canvas.buffer_rgba())
+    h, w, c = pixels.shape
+    flat = pixels.reshape(h, w * c)
+    rows = np.empty((h, 1 + w * c), np.uint8)
+    rows[:, 0] = 2                                   # filter type "up" on every row
+    rows[0, 1:] = flat[0]                            # (the row above the first is zeros)
+    np.subtract(flat[1:], flat[:-1], out=rows[1:, 1:])   # uint8 wraps: modulo 256 as PNG says
+    per_metre = round(fig.dpi / 0.0254)
+    chunks = [(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)),
+              (b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1))]
+    if software:
+        chunks.append((b"tEXt", b"Software\0" + software.encode("latin-1")))
+    chunks += [(b"IDAT", zlib.compress(rows, 1)), (b"IEND", b"")]
+    with open(path, "wb") as out:
+        out.write(b"\x89PNG\r\n\x1a\n")
+        for tag, data in chunks:
+            out.write(struct.pack(">I", len(data)) + tag + data
+                      + struct.pack(">I", zlib.crc32(tag + data)))

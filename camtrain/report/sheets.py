@@ -244,11 +244,13 @@ def kinematics_sheet(result: Result, deck, title: str, stem: Path,
 
 
 def _save(fig, stem: Path, formats) -> list[Path]:
+    from camtrain.report.canvas import save_png
+
     paths = []
     for ext in formats:
         path = stem.with_suffix(f".{ext}")
-        if ext == "png":   # fast zlib level: encoding at the default level costs a third of a
-            fig.savefig(path, pil_kwargs={"compress_level": 1})    # sheet; files ~5 % larger
+        if ext == "png":
+            save_png(fig, path, software=f"camtrain {__version__}")
         else:
             fig.savefig(path, metadata={"Creator": f"camtrain {__version__}"} if ext == "pdf"
                         else None)
