@@ -201,6 +201,8 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
         return orbits
     import matplotlib
 
+    from camtrain.report.canvas import wipe
+
     out_dir.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     with matplotlib.rc_context({**RC, **({"savefig.dpi": dpi} if dpi else {})}):
@@ -210,7 +212,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
         total = len(SHEETS) + (len(panels) if single_panels else 0)
         done, drawn = 0, set()
         for name in SHEETS:
-            fig.clear()
+            wipe(fig)
             if _sheet(fig, result, deck, name, ctx, sha):
                 written += _save(fig, out_dir / f"sheet_{name}", formats)
                 drawn.add(name)
@@ -222,7 +224,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
             panel_fig, square_fig = _figure(PANEL_SIZE), _figure((6.4, 6.4))
             for sheet, pname in panels:
                 f = square_fig if pname == "profile" else panel_fig
-                f.clear()
+                wipe(f)
                 if sheet in drawn and _panel(f, result, deck, pname, ctx):
                     written += _save(f, out_dir / "panels" / pname, formats)
                 done += 1
