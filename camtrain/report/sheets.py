@@ -15,6 +15,7 @@ from camtrain import __version__
 from camtrain.report import profile
 from camtrain.report.findings import Findings, find
 from camtrain.report.header import header_rows, title_line
+from camtrain.report.page import Page
 from camtrain.report.panels import PANELS as CYCLE_PANELS
 from camtrain.report.panels import Ctx
 from camtrain.report.panels_shaft import SHAFT_PANELS
@@ -47,18 +48,22 @@ def _ctx(result: Result) -> Ctx:
     return Ctx(np.degrees(result["cam_angle"]), find(result))
 
 
-def _header(ax, deck, result: Result, heading: str, sha: str | None,
+def _header(fig, rect, deck, result: Result, heading: str, sha: str | None,
             title: str | None = None) -> None:
-    """Title across the page; sheet name and provenance left; key inputs boxed right (Ball)."""
-    ax.set_axis_off()
-    ax.text(0.0, 1.0, title or title_line(deck), fontsize=11, fontweight="bold", va="top",
-            transform=ax.transAxes)
-    ax.text(0.0, 0.72, "CAM OPERATING CHARACTERISTICS", fontsize=7.5, color="#595959",
-            va="top", transform=ax.transAxes)
-    ax.text(0.0, 0.58, heading, fontsize=10, va="top", transform=ax.transAxes)
+    """Title across the page; sheet name and provenance left; key inputs boxed right (Ball).
+    Figure text placed in the header band ``rect`` (figure fractions), not an axes."""
+    from matplotlib.transforms import Bbox, BboxTransformTo, TransformedBbox
+
+    band = BboxTransformTo(TransformedBbox(Bbox.from_bounds(*rect), fig.transFigure))
+
+    def text(x, y, s, **kw):
+        fig.text(x, y, s, transform=band, **kw)
+
+    text(0.0, 1.0, title or title_line(deck), fontsize=11, fontweight="bold", va="top")
+    text(0.0, 0.72, "CAM OPERATING CHARACTERISTICS", fontsize=7.5, color="#595959", va="top")
+    text(0.0, 0.58, heading, fontsize=10, va="top")
     foot = f"camtrain {__version__}" + (f"\ndeck sha256 {sha[:16]}" if sha else "")
-    ax.text(0.0, 0.0, foot, fontsize=6.5, color="#7f7f7f", va="bottom", transform=ax.transAxes,
-            linespacing=1.4)
+    text(0.0, 0.0, foot, fontsize=6.5, color="#7f7f7f", va="bottom", linespacing=1.4)
     rows = header_rows(deck, result)
     if not rows:
         return
@@ -70,9 +75,9 @@ def _header(ax, deck, result: Result, heading: str, sha: str | None,
     cols = [lines[:half], lines[half:]] if half < len(lines) else [lines]
     x = 0.385 if len(cols) == 2 else 0.62
     for col in cols:
-        ax.text(x, 0.72, "\n".join(col), family="DejaVu Sans Mono", fontsize=6.5, va="top",
-                transform=ax.transAxes, linespacing=1.35,
-                bbox={"boxstyle": "square,pad=0.5", "fc": "#f7f7f7", "ec": "#bfbfbf", "lw": 0.6})
+        text(x, 0.72, "\n".join(col), family="DejaVu Sans Mono", fontsize=6.5, va="top",
+             linespacing=1.35,
+             bbox={"boxstyle": "square,pad=0.5", "fc": "#f7f7f7", "ec": "#bfbfbf", "lw": 0.6})
         x += 0.315
 
 
@@ -110,37 +115,37 @@ def _panel_rects(count: int, size=A4_PORTRAIT) -> list[list[float]]:
     return rects
 
 
-def _sheet(fig, result: Result, deck, name: str, ctx: Ctx, sha: str | None,
+def _sheet(page: Page, result: Result, deck, name: str, ctx: Ctx, sha: str | None,
            title: str | None = None) -> int:
-    """Draw sheet ``name`` on the (cleared) A4 figure ``fig``; the number of panels drawn.
+    """Draw sheet ``name`` on the A4 ``page``; the number of panels drawn.
 
-    Each panel is drawn into its own axes and dropped if it has nothing to show; the survivors
-    are then placed on a fixed grid (no layout solver: the page is always the same A4 frame)."""
+    Each panel is drawn into the page's next panel axes and given back if it has nothing to
+    show; the survivors are then placed on a fixed grid (no layout solver: the page is always
+    the same A4 frame)."""
+    page.new_sheet()
     heading = SHEETS[name][0]
-    size = A4_PORTRAIT
-    header = fig.add_axes(_frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
-                                HEADER_IN - 0.1, size))
-    _header(header, deck, result, heading, sha, title)
+    size = page.size
+    _header(page.fig, _frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
+                            HEADER_IN - 0.1, size), deck, result, heading, sha, title)
     if name == "profile":
         if not profile.can_draw(result):
             return 0
         side = size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN
-        ax = fig.add_axes(_frac(PAGE_IN + LEFT_IN, size[1] - PAGE_IN - HEADER_IN - TITLE_IN - side,
-                                side, side, size))
+        ax = page.panel()
+        ax.set_position(_frac(PAGE_IN + LEFT_IN, size[1] - PAGE_IN - HEADER_IN - TITLE_IN - side,
+                              side, side, size))
         profile.draw(ax, result, ctx.findings, deck.cam.base_radius if deck else None)
         ax.set_title("Cam profile to scale, film thickness laid around it")
         return 1
     drawn = []
     for pname in SHEETS[name][1]:
-        before = len(fig.axes)
-        ax = fig.add_axes([0.0, 0.0, 0.1, 0.1])
+        ax = page.panel()
         panel_title, func = PANELS[pname]
         if func(ax, result, ctx):
             ax.set_title(panel_title)
             drawn.append(ax)
-        else:   # nothing to show: drop the axes and any twin the panel made
-            for added in fig.axes[before:]:
-                fig.delaxes(added)
+        else:   # nothing to show: the axes (and any twin the panel made) go back
+            page.give_back()
     for ax, rect in zip(drawn, _panel_rects(len(drawn), size), strict=True):
         ax.set_position(rect)   # twin axes follow their host
     return len(drawn)
@@ -207,14 +212,13 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
     written: list[Path] = []
     with matplotlib.rc_context({**RC, **({"savefig.dpi": dpi} if dpi else {})}):
         ctx = _ctx(result)
-        fig = _figure(A4_PORTRAIT)
+        page = Page(A4_PORTRAIT)
         panels = [(sheet, p) for sheet, (_, names) in SHEETS.items() for p in names]
         total = len(SHEETS) + (len(panels) if single_panels else 0)
         done, drawn = 0, set()
         for name in SHEETS:
-            wipe(fig)
-            if _sheet(fig, result, deck, name, ctx, sha):
-                written += _save(fig, out_dir / f"sheet_{name}", formats)
+            if _sheet(page, result, deck, name, ctx, sha):
+                written += _save(page.fig, out_dir / f"sheet_{name}", formats)
                 drawn.add(name)
             done += 1
             if progress:
@@ -239,10 +243,10 @@ def kinematics_sheet(result: Result, deck, title: str, stem: Path,
     import matplotlib
 
     with matplotlib.rc_context(RC):
-        fig = _figure(A4_PORTRAIT)
-        _sheet(fig, result, deck, "kinematics", _ctx(result), None, title)
+        page = Page(A4_PORTRAIT)
+        _sheet(page, result, deck, "kinematics", _ctx(result), None, title)
         stem.parent.mkdir(parents=True, exist_ok=True)
-        return _save(fig, stem, formats)
+        return _save(page.fig, stem, formats)
 
 
 def _save(fig, stem: Path, formats) -> list[Path]:

@@ -111,5 +111,6 @@ def headroom(ax, fraction: float = 0.32) -> None:
 
 
 def _has_twin(ax) -> bool:
-    return any(other is not ax and other.bbox.bounds == ax.bbox.bounds
-               for other in ax.figure.axes)
+    """A second y scale on the right (a twin sharing x, or a secondary axis): the host's own
+    right-hand ticks would stand among its ticks."""
+    return bool(ax.child_axes) or len(ax.get_shared_x_axes().get_siblings(ax)) > 1
