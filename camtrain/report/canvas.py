@@ -20,7 +20,33 @@ _STRINGS: dict[tuple, tuple] = {}
 _MAX_STRINGS = 4096
 
 
+#: (font properties, dpi) -> (ascent, descent, line gap) [px] of the font Text lays lines out by
+_HEIGHTS: dict[tuple, tuple] = {}
+
+
 class _Renderer(RendererAgg):
+    def _get_font_height_metrics(self, prop):
+        """matplotlib >= 3.11 asks the renderer for a font's line metrics before it reads the
+        font's OS/2 or hhea table itself, on every layout of every Text: read them once."""
+        key = (prop, self.dpi)
+        hit = _HEIGHTS.get(key)
+        if hit is None:
+            from matplotlib.font_manager import fontManager, get_font
+
+            font = get_font(fontManager._find_fonts_by_props(prop))
+            hit = (None, None, None)
+            for table_name, gap, ascent, descent in (
+                    ("OS/2", "sTypoLineGap", "sTypoAscender", "sTypoDescender"),
+                    ("hhea", "lineGap", "ascent", "descent")):
+                table = font.get_sfnt_table(table_name)
+                if table is not None:
+                    scale = (prop.get_size_in_points() * self.dpi / 72
+                             / font.get_sfnt_table("head")["unitsPerEm"])
+                    hit = (table[ascent] * scale, -table[descent] * scale, table[gap] * scale)
+                    break
+            _HEIGHTS[(prop.copy(), self.dpi)] = hit
+        return hit
+
     def get_text_width_height_descent(self, s, prop, ismath):
         if ismath:
             return super().get_text_width_height_descent(s, prop, ismath)
