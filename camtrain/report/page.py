@@ -45,14 +45,16 @@ class Page:
 
 def _empty(ax) -> None:
     """What a fresh axes would be for a panel: no artists, twins, legend, labels; linear
-    scales with their default ticks; autoscaling on; free aspect. Tick styling (inward, on
-    all four sides) is not reset: every panel sets it (style.finish_axes)."""
+    scales with their default ticks; autoscaling on; free aspect; ticks on all four sides
+    (style.RC)."""
     fig = ax.figure
-    for child in tuple(ax.child_axes):          # secondary axes (a second scale)
-        child.remove()
-    for other in ax._twinned_axes.get_siblings(ax):
-        if other is not ax:
+    twins = [other for other in ax._twinned_axes.get_siblings(ax) if other is not ax]
+    if twins or ax.child_axes:                  # a second y scale took the right-hand side
+        for child in tuple(ax.child_axes):
+            child.remove()
+        for other in twins:
             fig.delaxes(other)
+        ax.tick_params(which="both", right=True)
     for container in tuple(ax.containers):      # bars: their patches and the legend entry
         container.remove()
     for artist in (*ax.lines, *ax.patches, *ax.collections, *ax.texts, *ax.images,

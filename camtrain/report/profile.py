@@ -87,7 +87,6 @@ def draw(ax, r: Result, findings: Findings, base_radius: float | None = None) ->
                     mec=COLORS["second"], ms=8, mew=1.4, zorder=5,
                     label="loss of contact (start, end)" if (k == 0 and ang == a) else None)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.tick_params(which="both", direction="in", top=True, right=True)   # as every panel
     ax.set_xlabel("x in the cam frame [mm]")
     ax.set_ylabel("y in the cam frame [mm]")
     if scale_text:

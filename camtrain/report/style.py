@@ -31,6 +31,12 @@ RC = {
     "axes.axisbelow": True,
     "grid.color": "#d9d9d9",
     "grid.linewidth": 0.5,
+    # ticks inward on all four sides, as they are born (setting them on every panel re-makes
+    # the marks of every existing tick); a panel with a second y scale drops its right ones
+    "xtick.direction": "in",
+    "ytick.direction": "in",
+    "xtick.top": True,
+    "ytick.right": True,
     "xtick.labelsize": 7.5,
     "ytick.labelsize": 7.5,
     "legend.fontsize": 7.0,
@@ -93,7 +99,8 @@ def minor_ticks(ax, positions) -> None:
 
 
 def finish_axes(ax, legend: bool = False, handles=None) -> None:
-    ax.tick_params(which="both", direction="in", top=True, right=not _has_twin(ax))
+    if _has_twin(ax):
+        ax.tick_params(which="both", right=False)
     handles = handles or ax.get_legend_handles_labels()
     if legend and handles[0]:
         headroom(ax)
