@@ -87,15 +87,15 @@ def minor_ticks(ax, positions) -> None:
     marker lines (the marks matplotlib's own ticks are made of): a Tick object per position
     costs five artists each, and these are a third of all the ticks on a sheet."""
     import matplotlib as mpl
-    from matplotlib.lines import TICKDOWN, TICKUP
+    from matplotlib.lines import TICKDOWN, TICKUP, Line2D
 
     x = list(positions)
     style = {"ls": "none", "ms": mpl.rcParams["xtick.minor.size"],
              "mew": mpl.rcParams["xtick.minor.width"], "color": mpl.rcParams["xtick.color"],
              "transform": ax.get_xaxis_transform(), "clip_on": False, "zorder": 2.5,
              "label": "_minor ticks"}
-    ax.plot(x, [0.0] * len(x), marker=TICKUP, **style)
-    ax.plot(x, [1.0] * len(x), marker=TICKDOWN, **style)
+    for y, marker in ((0.0, TICKUP), (1.0, TICKDOWN)):   # add_line: none of plot()'s parsing
+        ax.add_line(Line2D(x, [y] * len(x), marker=marker, **style))
 
 
 def finish_axes(ax, legend: bool = False, handles=None) -> None:
