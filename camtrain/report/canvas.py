@@ -10,7 +10,6 @@ bitmaps. Mathematical text and anything unusual go through matplotlib's own path
 from __future__ import annotations
 
 import math
-import struct
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg, get_hinting_flag
 from matplotlib.figure import Figure
@@ -117,35 +116,19 @@ def wipe(fig: Figure) -> None:
 
 
 def save_png(fig: Figure, path, software: str = "") -> None:
-    """Draw ``fig`` at rcParams["savefig.dpi"] and write it as an RGBA PNG.
-
-    The rows go through PNG's "up" filter (one numpy subtraction) and zlib at its fastest
-    level: a third of the time of Pillow's adaptive per-row filtering for a file ~10 % larger
-    (an A4 sheet at 150 dpi: ~25 ms against ~60 ms, ~300 kB)."""
-    import zlib
-
+    """Draw ``fig`` at rcParams["savefig.dpi"] and write it as an RGBA PNG with Pillow (which
+    matplotlib itself writes PNGs with) at zlib's fastest level: lossless, ~10 % larger than
+    Pillow's default level 6 and written in well under half its time (an A4 sheet at 150 dpi)."""
     import matplotlib as mpl
-    import numpy as np
+    from PIL import Image, PngImagePlugin
 
     dpi = mpl.rcParams["savefig.dpi"]
     if dpi != "figure" and dpi != fig.dpi:
         fig.set_dpi(dpi)
     fig.canvas.draw()
-    pixels = np.asarray(fig.canvas.buffer_rgba())
-    h, w, c = pixels.shape
-    flat = pixels.reshape(h, w * c)
-    rows = np.empty((h, 1 + w * c), np.uint8)
-    rows[:, 0] = 2                                   # filter type "up" on every row
-    rows[0, 1:] = flat[0]                            # (the row above the first is zeros)
-    np.subtract(flat[1:], flat[:-1], out=rows[1:, 1:])   # uint8 wraps: modulo 256 as PNG says
-    per_metre = round(fig.dpi / 0.0254)
-    chunks = [(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)),
-              (b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1))]
+    info = PngImagePlugin.PngInfo()
     if software:
-        chunks.append((b"tEXt", b"Software\0" + software.encode("latin-1")))
-    chunks += [(b"IDAT", zlib.compress(rows, 1)), (b"IEND", b"")]
-    with open(path, "wb") as out:
-        out.write(b"\x89PNG\r\n\x1a\n")
-        for tag, data in chunks:
-            out.write(struct.pack(">I", len(data)) + tag + data
-                      + struct.pack(">I", zlib.crc32(tag + data)))
+        info.add_text("Software", software)
+    Image.frombuffer("RGBA", fig.canvas.get_width_height(physical=True),
+                     fig.canvas.buffer_rgba(), "raw", "RGBA", 0, 1).save(
+        path, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi), pnginfo=info)
