@@ -204,6 +204,36 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings) 
                          steps=steps, integrator=settings.integrator, cut_switches=cut)
 
 
+def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: int,
+                    u0, v0, active, theta0: float = 0.0):
+    """One Newmark revolution from a given state (displacements ``u0`` [m], velocities ``v0``
+    [m/s], contact states ``active`` (cam, seat)) at cam angle ``theta0`` [rad]: the test of an
+    undamped periodic cycle starts from a known periodic state instead of rest.
+
+    Returns (u, v, a, contact forces) at the grid samples, the events and the cam work [J]."""
+    grid = cam.theta.size
+    steps = grid * int(substeps)
+    dt = base.period / steps
+    t = np.arange(steps + 1) * dt
+    b, bd, _ = cam.in_time(t, base, theta0)
+    inputs = np.zeros((2, steps + 1))
+    rates = np.zeros((2, steps + 1))
+    inputs[CAM], rates[CAM] = b, bd
+    runner = _FixedStep(model, inputs, rates, dt, int(substeps), "newmark")
+    runner.u = np.array(u0, dtype=float)
+    runner.v = np.array(v0, dtype=float)
+    runner.act = np.array(active, dtype=np.bool_)
+    force = model.preload - model.stiffness @ runner.u - model.damping @ runner.v
+    for j in range(2):
+        if runner.act[j]:
+            i = model.uni_node[j]
+            force[i] += (model.uni_k[j] * (inputs[j, 0] - runner.u[i] + model.uni_offset[j])
+                         + model.uni_c[j] * (rates[j, 0] - runner.v[i]))
+    runner.a = force / model.mass
+    u, v, a, f, events, work, _ = runner.revolution()
+    return u, v, a, f, events, work
+
+
 def _to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarray:
     """Rows sampled at increasing ``angle`` (one revolution) interpolated (linear, periodic) at
     the grid angles ``theta``."""
