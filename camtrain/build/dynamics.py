@@ -100,7 +100,15 @@ def build_model(deck, *, stiffness_scale: float = 1.0) -> TrainModel:
         spring_preload=s.rate * s.preload_compression, lash=lash_of(deck),
         damping_ratio=d.damping_ratio, seat_damping_ratio=d.seat_damping_ratio,
         spring_mass=d.spring_mass or 0.0, spring_elements=d.spring_elements,
-        spring_damping_ratio=d.spring_damping_ratio, adjuster_load=adjuster)
+        spring_damping_ratio=d.spring_damping_ratio, adjuster_load=adjuster,
+        damping=damping_values(d))
+
+
+def damping_values(d) -> dict[str, float]:
+    """The damping the deck gives as values [N s/m] (referred to the valve), by element."""
+    given = {"contact": d.contact_damping, "link": d.link_damping, "seat": d.seat_damping,
+             "spring": d.spring_damping}
+    return {key: value for key, value in given.items() if value is not None}
 
 
 def time_base(deck, omega: float | None = None) -> TimeBase:

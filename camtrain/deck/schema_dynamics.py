@@ -55,6 +55,18 @@ class Dynamics:
     spring_damping_ratio: float = quantity(
         "Damping ratio of the valve spring (single rate: on the valve node; chain: modal, "
         "first surge mode)", "-", default=0.02, ge=0, lt=1)
+    contact_damping: float | None = quantity(
+        "Viscous damping of the cam contact as a value (with the train in series when "
+        "follower_mass = 0); replaces damping_ratio there", "N·s/m", default=None, ge=0)
+    link_damping: float | None = quantity(
+        "Viscous damping of the follower-valve link (push rod, rocker, stem in series) as a "
+        "value; replaces damping_ratio there", "N·s/m", default=None, ge=0)
+    seat_damping: float | None = quantity(
+        "Viscous damping of the valve seat as a value; replaces seat_damping_ratio", "N·s/m",
+        default=None, ge=0)
+    spring_damping: float | None = quantity(
+        "Viscous damping of the valve spring as a value (chain: end to end, each element N "
+        "times it); replaces spring_damping_ratio", "N·s/m", default=None, ge=0)
     spring_elements: int = quantity(
         "Elements of the valve-spring chain (spring surge); 0: a single rate with a third of "
         "the spring mass in masses.valve_side", "-", default=0, ge=0, le=256)
@@ -98,6 +110,10 @@ class Dynamics:
         if self.spring_elements == 1:
             out.append(Problem(f"{path}.spring_elements", "a chain needs at least 2 elements",
                                1, "0 (single rate) or 2 or more"))
+        if self.link_damping is not None and self.follower_mass == 0:
+            out.append(Problem(f"{path}.link_damping", "needs a follower node (without one the "
+                               "link is in series with the contact: use contact_damping)",
+                               self.link_damping, "no value, or follower_mass > 0"))
         if self.spring_elements > 0 and self.spring_mass is None:
             out.append(Problem(f"{path}.spring_mass", "is required with spring_elements > 0",
                                None, "the spring's mass in kg"))

@@ -18,6 +18,7 @@ from camtrain.dynamics.train import (
     TrainModel,
     assemble_train,
     chain_end_mass,
+    damping_from_ratio,
     rocker_equivalent_mass,
     series,
     surge_frequency,
@@ -26,5 +27,6 @@ from camtrain.dynamics.train import (
 
 __all__ = ["cam_input", "CamInput", "TimeBase", "INTEGRATORS", "DynamicEvent", "Settings", "StepTooLarge",
            "TrainResponse", "auto_steps", "march", "stability_limit", "CAM", "SEAT", "Element",
-           "TrainModel", "assemble_train", "chain_end_mass", "rocker_equivalent_mass", "series",
+           "TrainModel", "assemble_train", "chain_end_mass", "damping_from_ratio",
+           "rocker_equivalent_mass", "series",
            "surge_frequency", "surge_frequency_discrete"]

@@ -196,7 +196,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
                    damping_ratio: float = 0.05, seat_damping_ratio: float | None = None,
                    spring_mass: float = 0.0, spring_elements: int = 0,
                    spring_damping_ratio: float = 0.02,
-                   adjuster_load: float = 0.0) -> TrainModel:
+                   adjuster_load: float = 0.0,
+                   damping: dict[str, float] | None = None) -> TrainModel:
     """Build the lumped train (all values referred to the valve, SI).
 
     ``links``: named stiffnesses between the follower and the valve node (push rod, rocker,
@@ -208,8 +209,16 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     ``adjuster_load``: a hydraulic lash adjuster between follower and valve pushes them apart
     with a constant force (the follower onto the cam, the valve off its seat: the seat carries
     the spring preload less the adjuster's load); it needs a follower node.
+    ``damping``: viscous coefficients [N s/m] given as values, which replace the ratios:
+    ``contact`` (cam contact, with the series train when there is no follower node), ``link``
+    (follower-valve link), ``seat``, ``spring`` (single rate: on the valve node; chain: the
+    whole spring's end-to-end coefficient, each of the N elements N times it).
     """
     links = dict(links or {})
+    given = dict(damping or {})
+    unknown = set(given) - {"contact", "link", "seat", "spring"}
+    if unknown:
+        raise ValueError(f"unknown damping element(s) {sorted(unknown)}")
     has_follower = follower_mass > 0.0
     nodes = 2 if has_follower else 1
     interior = np.zeros(0)
@@ -217,6 +226,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     if spring_elements > 0:
         interior, k_el, c_el, end_mass = surge_chain(spring_rate, spring_mass, spring_elements,
                                                      spring_damping_ratio)
+        if "spring" in given:
+            c_el = spring_elements * given["spring"]
     n = nodes + interior.size
     mass = np.zeros(n)
     follower, valve = 0, nodes - 1
@@ -232,7 +243,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
         cam_k = series(contact_stiffness, follower_stiffness)
         if math.isfinite(link_k):
             m_red = mass[0] * mass[1] / (mass[0] + mass[1])
-            _add_link(k, c, 0, 1, link_k, damping_from_ratio(damping_ratio, link_k, m_red))
+            _add_link(k, c, 0, 1, link_k, given.get(
+                "link", damping_from_ratio(damping_ratio, link_k, m_red)))
             elements.append(Element("follower-valve link (" + " + ".join(links) + ")", link_k,
                                     m_red))
         else:
@@ -250,8 +262,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
         elements.append(Element(f"valve spring element (1/{spring_elements} of the spring)",
                                 k_el, spring_mass / spring_elements / 2.0))
     else:
-        _add_link(k, c, valve, -1, spring_rate,
-                  damping_from_ratio(spring_damping_ratio, spring_rate, mass[valve]))
+        _add_link(k, c, valve, -1, spring_rate, given.get(
+            "spring", damping_from_ratio(spring_damping_ratio, spring_rate, mass[valve])))
         elements.append(Element("valve spring", spring_rate, mass[valve]))
     elements.append(Element("valve seat", seat_stiffness, mass[valve]))
     preload = np.zeros(n)
@@ -265,8 +277,9 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     zs = damping_ratio if seat_damping_ratio is None else seat_damping_ratio
     uni_node = np.array([follower, valve], dtype=np.int64)
     uni_k = np.array([cam_k, seat_stiffness])
-    uni_c = np.array([damping_from_ratio(damping_ratio, cam_k, mass[follower]),
-                      damping_from_ratio(zs, seat_stiffness, mass[valve])])
+    uni_c = np.array([given.get("contact", damping_from_ratio(damping_ratio, cam_k,
+                                                              mass[follower])),
+                      given.get("seat", damping_from_ratio(zs, seat_stiffness, mass[valve]))])
     # an adjuster takes up the slack: at rest the contact is compressed by its load, no link is
     # strained, every node sits at u = 0
     uni_offset = np.array([-lash + (adjuster_load / cam_k if has_follower else 0.0),

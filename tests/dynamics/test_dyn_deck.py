@@ -27,6 +27,8 @@ def test_plan_takes_the_dynamic_load_and_says_why():
     ({"dynamics": {"pushrod_stiffness": 1e4}}, "dynamics.pushrod_stiffness"),
     ({"dynamics": {"contact_stiffness": -1.0}}, "dynamics.contact_stiffness"),
     ({"dynamics": {"integrator": "euler"}}, "dynamics.integrator"),
+    ({"dynamics": {"follower_mass": 0.0, "link_damping": 10.0}}, "dynamics.link_damping"),
+    ({"dynamics": {"seat_damping": -1.0}}, "dynamics.seat_damping"),
     ({"spring": {"progressive_quadratic": 1.0}}, "spring.progressive_quadratic"),
 ])
 def test_bad_dynamics_input_names_the_field(changes, field):

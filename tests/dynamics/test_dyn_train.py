@@ -171,3 +171,39 @@ def test_central_difference_step_limit_names_the_stiffest_element():
                            spring_preload=210.0)
     assert model.stiffest().name.startswith("cam contact")
     assert stability_limit(model) == pytest.approx(2 / model.omega_max())
+
+
+@pytest.mark.derived
+def test_damping_given_as_values_equals_the_same_damping_given_as_ratios():
+    """c = 2 zeta sqrt(k m) given directly [N s/m] builds the same matrices as the ratios."""
+    from camtrain.dynamics import damping_from_ratio
+
+    common = dict(valve_mass=0.06, follower_mass=0.05, links={"stem": 3e7},
+                  contact_stiffness=2e8, seat_stiffness=1e8, spring_rate=37634.0,
+                  spring_preload=210.0, spring_mass=0.035, spring_elements=8)
+    by_ratio = assemble_train(**common, damping_ratio=0.05, seat_damping_ratio=0.1,
+                              spring_damping_ratio=0.02)
+    c_el = by_ratio.damping[by_ratio.chain[-1], by_ratio.chain[-1]] / 2   # two equal elements
+    m_red = by_ratio.mass[0] * by_ratio.mass[1] / (by_ratio.mass[0] + by_ratio.mass[1])
+    values = {"contact": damping_from_ratio(0.05, 2e8, by_ratio.mass[0]),
+              "link": damping_from_ratio(0.05, 3e7, m_red),
+              "seat": damping_from_ratio(0.1, 1e8, by_ratio.mass[1]), "spring": c_el / 8}
+    by_value = assemble_train(**common, damping_ratio=0.3, seat_damping_ratio=0.3,
+                              spring_damping_ratio=0.3, damping=values)
+    np.testing.assert_allclose(by_value.damping, by_ratio.damping, rtol=1e-12)
+    np.testing.assert_allclose(by_value.uni_c, by_ratio.uni_c, rtol=1e-12)
+    with pytest.raises(ValueError, match="unknown damping"):
+        assemble_train(**common, damping={"pushrod": 1.0})
+
+
+def test_deck_damping_values_reach_the_model():
+    from camtrain.build.dynamics import build_model
+    from tests.dynamics.conftest import deck_of, zeta_raw
+
+    deck = deck_of(zeta_raw({"dynamics": {"contact_damping": 150.0, "seat_damping": 300.0,
+                                          "link_damping": 80.0, "spring_damping": 2.0}}))
+    model = build_model(deck)
+    assert model.uni_c.tolist() == [150.0, 300.0]
+    assert model.damping[0, 1] == pytest.approx(-80.0)
+    chain_end = model.chain[-1]
+    assert model.damping[chain_end, chain_end] == pytest.approx(2 * 8 * 2.0)
