@@ -59,9 +59,10 @@ def lash_of(deck) -> float:
     return 0.0 if (c is None or c.lash_adjuster) else c.valve_clearance
 
 
-def build_model(deck, *, stiffness_scale: float = 1.0) -> TrainModel:
+def build_model(deck, *, stiffness_scale: float = 1.0, kin=None) -> TrainModel:
     """The lumped train of the deck (``stiffness_scale`` multiplies the contact, element and seat
-    stiffnesses, not the valve spring: the stiff limit of the tests)."""
+    stiffnesses, not the valve spring: the stiff limit of the tests). A Hertz line contact
+    (``contact_model = "hertz_line"``) needs the kinematics ``kin`` (radii, load ratio)."""
     d, m, s = deck.dynamics, deck.masses, deck.spring
     arm = valve_arm(deck)
     body = 0.0
@@ -93,8 +94,12 @@ def build_model(deck, *, stiffness_scale: float = 1.0) -> TrainModel:
         links["rigid link"] = math.inf
     c = deck.clearance
     adjuster = c.adjuster_load if (c is not None and c.lash_adjuster) else 0.0
+    law = None
+    contact = scaled(d.contact_stiffness)
+    if d.contact_model == "hertz_line":
+        law, contact = hertz_law(deck, kin, stiffness_scale)
     return assemble_train(
-        valve_mass=valve, follower_mass=follower, contact_stiffness=scaled(d.contact_stiffness),
+        valve_mass=valve, follower_mass=follower, contact_stiffness=contact, cam_law=law,
         follower_stiffness=scaled(d.follower_stiffness), links=links,
         seat_stiffness=scaled(d.seat_stiffness), spring_rate=s.rate,
         spring_preload=s.rate * s.preload_compression, lash=lash_of(deck),
@@ -102,6 +107,41 @@ def build_model(deck, *, stiffness_scale: float = 1.0) -> TrainModel:
         spring_mass=d.spring_mass or 0.0, spring_elements=d.spring_elements,
         spring_damping_ratio=d.spring_damping_ratio, adjuster_load=adjuster,
         damping=damping_values(d))
+
+
+def hertz_law(deck, kin, stiffness_scale: float = 1.0):
+    """The cam contact as a Hertz line contact (contact_law.HertzLineLaw: Johnson 1985, the
+    approach of cylinders in line contact) from the deck's materials, the cam width, the
+    follower's radius and the cam's radius of curvature, and its largest tangent stiffness over
+    the cycle at the rigid train's load (valve-referred) [N/m]."""
+    import numpy as np
+
+    from camtrain.dynamics.contact_law import HertzLineLaw
+    from camtrain.errors import field_error
+
+    if kin is None:
+        raise ValueError("a Hertz line cam contact needs the kinematics")
+    r2 = np.asarray(kin.follower_radius, dtype=float)
+    if not np.all(np.isfinite(r2)) or np.any(r2 <= 0):
+        raise field_error("dynamics.contact_model", "a flat follower face has no radius, so "
+                          "the line contact's approach is not defined", "hertz_line",
+                          "contact_model = \"linear\" with a contact_stiffness")
+    rc = np.asarray(kin.cam_radius, dtype=float)
+    if not np.all(np.isfinite(rc)) or np.any(rc <= 0):
+        raise field_error("dynamics.contact_model", "the cam has a flat or concave flank, where "
+                          "the two-cylinder approach does not hold", "hertz_line",
+                          "contact_model = \"linear\" with a contact_stiffness")
+    m = deck.materials
+    rest = int(np.argmin(kin.valve_lift))
+    ratio = np.asarray(kin.rocker_ratio, dtype=float)
+    law = HertzLineLaw(c1=(1 - m.cam_poisson ** 2) / m.cam_modulus / stiffness_scale,
+                       c2=(1 - m.follower_poisson ** 2) / m.follower_modulus / stiffness_scale,
+                       length=deck.cam.width, follower_radius=float(np.median(r2)),
+                       base_radius=float(rc[rest]), base_ratio=float(ratio[rest]))
+    force = np.maximum(rigid_load(deck, kin) / ratio, 1.0)
+    tangent = max(law.stiffness(float(f), float(r), float(q))
+                  for f, r, q in zip(force, rc, ratio, strict=True))
+    return law, tangent
 
 
 def damping_values(d) -> dict[str, float]:
@@ -122,9 +162,12 @@ def setup(deck, kin, *, stiffness_scale: float = 1.0, omega: float | None = None
           overrides: dict | None = None) -> DynamicSetup:
     """Model, cam input (the kinematics' valve lift), time base and settings of a run."""
     d = deck.dynamics
-    model = build_model(deck, stiffness_scale=stiffness_scale)
+    model = build_model(deck, stiffness_scale=stiffness_scale, kin=kin)
+    geometry = {}
+    if model.cam_law is not None:
+        geometry = {"radius": kin.cam_radius, "ratio": kin.rocker_ratio}
     cam = cam_input(kin.theta, kin.valve_lift, kin.valve_d1, kin.valve_d2,
-                    BASE_CIRCLE_TOLERANCE)
+                    BASE_CIRCLE_TOLERANCE, **geometry)
     base = time_base(deck, omega)
     spd = None if d.steps_per_degree is None else d.steps_per_degree
     sub = auto_steps(model, base, kin.theta.size, d.steps_per_period, spd)

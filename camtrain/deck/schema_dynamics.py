@@ -28,9 +28,13 @@ class Dynamics:
         "(D1/D2)^2 for a push-rod train); it is taken out of masses.valve_side, so the rigid "
         "train keeps its total mass. 0: one node (cam contact in series with the train)",
         "kg", default=0.0, ge=0, example=0.054)
-    contact_stiffness: float = quantity(
-        "Cam/follower contact stiffness (linear unilateral spring)", "N/mm", gt=0,
-        example=2.0e5)
+    contact_model: Literal["linear", "hertz_line"] = option(
+        "Cam contact spring: linear (contact_stiffness), or hertz_line (the Hertz line "
+        "contact's own nonlinear load-approach relation from the materials, the cam width and "
+        "the radii; needs a curved follower and a convex cam)", default="linear")
+    contact_stiffness: float | None = quantity(
+        "Cam/follower contact stiffness (linear unilateral spring; required by the linear "
+        "contact model)", "N/mm", default=None, gt=0, example=2.0e5)
     follower_stiffness: float | None = quantity(
         "Stiffness of the follower or tappet (hydraulic lash adjuster) in series with the "
         "contact; omit for rigid", "N/mm", default=None, gt=0)
@@ -57,7 +61,7 @@ class Dynamics:
         "first surge mode)", "-", default=0.02, ge=0, lt=1)
     contact_damping: float | None = quantity(
         "Viscous damping of the cam contact as a value (with the train in series when "
-        "follower_mass = 0); replaces damping_ratio there", "N·s/m", default=None, ge=0)
+        "there is no follower mass); replaces damping_ratio there", "N·s/m", default=None, ge=0)
     link_damping: float | None = quantity(
         "Viscous damping of the follower-valve link (push rod, rocker, stem in series) as a "
         "value; replaces damping_ratio there", "N·s/m", default=None, ge=0)
@@ -110,6 +114,15 @@ class Dynamics:
         if self.spring_elements == 1:
             out.append(Problem(f"{path}.spring_elements", "a chain needs at least 2 elements",
                                1, "0 (single rate) or 2 or more"))
+        if self.contact_model == "linear" and self.contact_stiffness is None:
+            out.append(Problem(f"{path}.contact_stiffness", "is required with contact_model = "
+                               "linear", None, "the contact stiffness in N/mm, or contact_model "
+                               "= \"hertz_line\""))
+        if self.contact_model == "hertz_line" and self.contact_stiffness is not None:
+            out.append(Problem(f"{path}.contact_stiffness", "is not used with contact_model = "
+                               "hertz_line (the contact's own stiffness follows from the "
+                               "materials and radii)", self.contact_stiffness,
+                               "no value, or contact_model = \"linear\""))
         if self.link_damping is not None and self.follower_mass == 0:
             out.append(Problem(f"{path}.link_damping", "needs a follower node (without one the "
                                "link is in series with the contact: use contact_damping)",
@@ -146,6 +159,11 @@ def dynamics_problems(deck) -> list[Problem]:
     if c is not None and c.lash_adjuster and c.adjuster_load > 0 and d.follower_mass == 0:
         out.append(Problem("dynamics.follower_mass", "a lash adjuster's load needs a follower "
                            "node", 0.0, "the follower's mass in kg (> 0)"))
+    shaft = getattr(getattr(deck, "camshaft", None), "flexibility", None)
+    if (d.contact_model == "hertz_line" and shaft is not None
+            and getattr(shaft, "coupling", "one_way") == "two_way"):
+        out.append(Problem("dynamics.contact_model", "hertz_line is not modelled by the two-way "
+                           "coupled camshaft yet", "hertz_line", "linear"))
     if d.pushrod_stiffness is not None and deck.mechanism.type != "pushrod":
         out.append(Problem("dynamics.pushrod_stiffness", "applies to a push-rod train only",
                            None, "no value"))

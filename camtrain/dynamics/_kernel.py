@@ -14,8 +14,13 @@ cam contact and valve seat of :mod:`camtrain.dynamics.train`:
   caller guards the step).
 
 Inputs b, b' of each contact at the step times (seat: zeros); between steps a cubic Hermite in
-time. Outputs every ``stride`` steps; events (contact j opening/closing: kind 2 j + closing)
-with their time and the contact's approach speed delta'. Only this module imports numba.
+time. The cam contact's spring is linear (``law`` 0) or a Hertz line contact (``law`` 1, the
+relation of :mod:`camtrain.dynamics.contact_law`, constants ``hz``, the cam's radius of
+curvature ``rad`` and load ratio ``rat`` at the step times, linear between them): its force
+comes from a scalar Newton iteration inside the Newmark step, the linear rest of the step
+still solved with the factor of its contact state. Outputs every ``stride`` steps; events
+(contact j opening/closing: kind 2 j + closing) with their time and the contact's approach
+speed delta'. Only this module imports numba.
 """
 from __future__ import annotations
 
@@ -44,16 +49,72 @@ def _input(b, bd, j, n, tau, dt):
 
 
 @njit(cache=True)
-def _psi(u, v, j, node, k, c, off, bj, bdj):
-    """Contact indicator min(k delta, k delta + c delta') and the force it would carry."""
-    delta = bj - u[node[j]] + off[j]
-    rate = bdj - v[node[j]]
-    f = k[j] * delta + c[j] * rate
-    return min(k[j] * delta, f), f, rate
+def _geom(rad, rat, n, tau, dt):
+    """Cam radius of curvature and load ratio at time tau into step n (linear)."""
+    if rad.size == 0:
+        return 1.0, 1.0
+    s = min(max(tau / dt, 0.0), 1.0)
+    m = min(n + 1, rad.size - 1)
+    return rad[n] + s * (rad[m] - rad[n]), rat[n] + s * (rat[m] - rat[n])
 
 
 @njit(cache=True)
-def _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a):
+def _hz_deflection(f, r1, ratio, hz):
+    """Valve-referred deflection of the Hertz line contact (and its series spring) under a
+    valve-referred force f > 0, and its derivative (contact_law.HertzLineLaw)."""
+    c1, c2, length, r2, ks = hz[0], hz[1], hz[2], hz[3], hz[4]
+    w = f * ratio / length
+    r = r1 * r2 / (r1 + r2)
+    b = np.sqrt(4.0 * w * r * (c1 + c2) / np.pi)
+    l1 = np.log(4.0 * r1 / b)
+    l2 = np.log(4.0 * r2 / b)
+    d = w / np.pi * (c1 * (2.0 * l1 - 1.0) + c2 * (2.0 * l2 - 1.0)) * ratio
+    dd = 2.0 / np.pi * (c1 * (l1 - 1.0) + c2 * (l2 - 1.0)) * ratio * ratio / length
+    if ks > 0.0:
+        d += f / ks
+        dd += 1.0 / ks
+    return d, dd
+
+
+@njit(cache=True)
+def _hz_solve(target, s, r1, ratio, hz, guess):
+    """Force f >= 0 with deflection(f) + s f = target (s >= 0: the step's own compliance;
+    Newton from ``guess``, halving when it would leave f > 0)."""
+    if target <= 0.0:
+        return 0.0
+    f = guess if guess > 0.0 else target * 1e8
+    for _ in range(60):
+        d, dd = _hz_deflection(f, r1, ratio, hz)
+        fn = f - (d + s * f - target) / (dd + s)
+        if fn <= 0.0:
+            fn = 0.5 * f
+        if abs(fn - f) <= 1e-13 * fn:
+            return fn
+        f = fn
+    return f
+
+
+@njit(cache=True)
+def _spring(j, delta, k, law, hz, r1, ratio):
+    """Spring force of contact j at compression delta: linear, or (cam, law 1) the Hertz line
+    contact; a negative delta gives k delta (only its sign matters: the contact indicator)."""
+    if j == 0 and law == 1 and delta > 0.0:
+        return _hz_solve(delta, 0.0, r1, ratio, hz, k[0] * delta)
+    return k[j] * delta
+
+
+@njit(cache=True)
+def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
+    """Contact indicator min(F_spring, F_spring + c delta') and the force it would carry."""
+    delta = bj - u[node[j]] + off[j]
+    rate = bdj - v[node[j]]
+    g = _spring(j, delta, k, law, hz, r1, ratio)
+    f = g + c[j] * rate
+    return min(g, f), f, rate
+
+
+@njit(cache=True)
+def _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad, rat):
     """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state."""
     size = m.size
     for i in range(size):
@@ -61,16 +122,20 @@ def _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a):
         for q in range(size):
             s -= K[i, q] * u[q] + C[i, q] * v[q]
         a[i] = s
+    r1, ratio = _geom(rad, rat, n, tau, dt)
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(b, bd, j, n, tau, dt)
-            a[node[j]] += k[j] * (bj - u[node[j]] + off[j]) + c[j] * (bdj - v[node[j]])
+            a[node[j]] += _spring(j, bj - u[node[j]] + off[j], k, law, hz, r1, ratio) \
+                + c[j] * (bdj - v[node[j]])
     for i in range(size):
         a[i] /= m[i]
 
 
 @njit(cache=True)
-def _matrix(m, K, C, node, k, c, act, h):
+def _matrix(m, K, C, node, k, c, act, h, law):
+    """M + h^2/4 K + h/2 C with the active contacts (a Hertz cam contact's spring is not in
+    it: its force is solved for separately)."""
     size = m.size
     A = np.empty((size, size))
     for i in range(size):
@@ -80,15 +145,17 @@ def _matrix(m, K, C, node, k, c, act, h):
     for j in range(node.size):
         if act[j]:
             i = node[j]
-            A[i, i] += 0.25 * h * h * k[j] + 0.5 * h * c[j]
+            kj = 0.0 if (j == 0 and law == 1) else k[j]
+            A[i, i] += 0.25 * h * h * kj + 0.5 * h * c[j]
     return A
 
 
 @njit(cache=True)
 def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv, u1, v1, a1,
-           pu, pv, rhs):
-    """One Newmark step of length h from time tau of step n, contact state fixed (pu, pv, rhs:
-    work arrays)."""
+           pu, pv, rhs, law, hz, rad, rat, z):
+    """One Newmark step of length h from time tau of step n, contact state fixed (pu, pv, rhs,
+    z: work arrays). A Hertz cam contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving
+    F = F_hertz(delta(a1)), delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
     size = m.size
     for i in range(size):
         pu[i] = u[i] + h * v[i] + 0.25 * h * h * a[i]
@@ -98,19 +165,42 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
         for q in range(size):
             s -= K[i, q] * pu[q] + C[i, q] * pv[q]
         rhs[i] = s
+    hertz = law == 1 and act[0]
+    r1, ratio = _geom(rad, rat, n, tau + h, dt)
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(b, bd, j, n, tau + h, dt)
             i = node[j]
-            rhs[i] += k[j] * (bj - pu[i] + off[j]) + c[j] * (bdj - pv[i])
+            if j == 0 and hertz:
+                rhs[i] += c[j] * (bdj - pv[i])
+            else:
+                rhs[i] += k[j] * (bj - pu[i] + off[j]) + c[j] * (bdj - pv[i])
     if Ainv.shape[0] > 0:
         for i in range(size):
             s = 0.0
             for q in range(size):
                 s += Ainv[i, q] * rhs[q]
             a1[i] = s
+        if hertz:
+            for i in range(size):
+                z[i] = Ainv[i, node[0]]
     else:
-        a1[:] = np.linalg.solve(_matrix(m, K, C, node, k, c, act, h), rhs)
+        A = _matrix(m, K, C, node, k, c, act, h, law)
+        a1[:] = np.linalg.solve(A, rhs)
+        if hertz:
+            z[:] = 0.0
+            z[node[0]] = 1.0
+            z[:] = np.linalg.solve(A, z.copy())
+    if hertz:
+        i = node[0]
+        bj, bdj = _input(b, bd, 0, n, tau + h, dt)
+        target = bj - pu[i] - 0.25 * h * h * a1[i] + off[0]
+        f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, hz, k[0] * max(target, 0.0))
+        if target <= 0.0:
+            # compressed by less than nothing: the linear stand-in (the indicator opens it)
+            f = k[0] * target / (1.0 + 0.25 * h * h * z[i] * k[0])
+        for q in range(size):
+            a1[q] += f * z[q]
     for i in range(size):
         u1[i] = pu[i] + 0.25 * h * h * a1[i]
         v1[i] = pv[i] + 0.5 * h * a1[i]
@@ -127,7 +217,7 @@ def _state_index(act):
 
 @njit(cache=True)
 def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a, act,
-                  out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0):
+                  out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0, law, hz, rad, rat):
     """March len(b[0]) - 1 steps; state (u, v, a, act) updated in place.
 
     An open contact closes when psi exceeds ``thr`` (a force far below any load of interest):
@@ -144,7 +234,7 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
     for s_idx in range(1 << nu):
         for j in range(nu):
             state[j] = (s_idx >> j) & 1
-        inverses[s_idx] = np.linalg.inv(_matrix(m, K, C, node, k, c, state, dt))
+        inverses[s_idx] = np.linalg.inv(_matrix(m, K, C, node, k, c, state, dt, law))
     empty = np.empty((0, 0))
     u1 = np.empty(size)
     v1 = np.empty(size)
@@ -155,6 +245,7 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
     pu = np.empty(size)
     pv = np.empty(size)
     rhs = np.empty(size)
+    z = np.empty(size)
     nev = 0
     work = 0.0
     cut = 0
@@ -167,16 +258,18 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                 break
             Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
             _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv,
-                   u1, v1, a1, pu, pv, rhs)
+                   u1, v1, a1, pu, pv, rhs, law, hz, rad, rat, z)
             # which contact changes state first inside the (sub)step?
             first = -1
             alpha = 2.0
             for j in range(nu):
                 level = 0.0 if act[j] else thr[j]
                 bj, bdj = _input(b, bd, j, n, tau, dt)
-                p0 = _psi(u, v, j, node, k, c, off, bj, bdj)[0] - level
+                r1, ratio = _geom(rad, rat, n, tau, dt)
+                p0 = _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
                 bj, bdj = _input(b, bd, j, n, tau + h, dt)
-                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj)[0] - level
+                r1, ratio = _geom(rad, rat, n, tau + h, dt)
+                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
                 if (p1 > 0.0) != act[j]:
                     frac = p0 / (p0 - p1) if p0 != p1 else 1.0
                     frac = min(max(frac, 0.0), 1.0)
@@ -186,8 +279,10 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                 if first >= 0:
                     cut += 1
                 # accept: cam work by the trapezoid rule over the (sub)step
-                work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt) * 0.5 * h
-                work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt) * 0.5 * h
+                work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
+                                   rat) * 0.5 * h
+                work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt, law, hz,
+                                   rad, rat) * 0.5 * h
                 u[:] = u1
                 v[:] = v1
                 a[:] = a1
@@ -196,16 +291,20 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
             lo, hi = 0.0, 1.0
             level = 0.0 if act[first] else thr[first]
             bj, bdj = _input(b, bd, first, n, tau, dt)
-            plo = _psi(u, v, first, node, k, c, off, bj, bdj)[0] - level
+            r1, ratio = _geom(rad, rat, n, tau, dt)
+            plo = _psi(u, v, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
             bj, bdj = _input(b, bd, first, n, tau + h, dt)
-            phi = _psi(u1, v1, first, node, k, c, off, bj, bdj)[0] - level
+            r1, ratio = _geom(rad, rat, n, tau + h, dt)
+            phi = _psi(u1, v1, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
             x = alpha
             side = 0
             for _ in range(30):
                 _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, x * h, dt,
-                       empty, us, vs, as_, pu, pv, rhs)
+                       empty, us, vs, as_, pu, pv, rhs, law, hz, rad, rat, z)
                 bj, bdj = _input(b, bd, first, n, tau + x * h, dt)
-                px = _psi(us, vs, first, node, k, c, off, bj, bdj)[0] - level
+                r1, ratio = _geom(rad, rat, n, tau + x * h, dt)
+                px = _psi(us, vs, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
+                    - level
                 if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
                     break
                 if (px > 0.0) == (plo > 0.0):
@@ -220,8 +319,10 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                     side = 1
                 x = lo + (hi - lo) * plo / (plo - phi) if plo != phi else 0.5 * (lo + hi)
             hx = x * h
-            work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt) * 0.5 * hx
-            work += _cam_power(us, vs, act, node, k, c, off, b, bd, n, tau + hx, dt) * 0.5 * hx
+            work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
+                               rat) * 0.5 * hx
+            work += _cam_power(us, vs, act, node, k, c, off, b, bd, n, tau + hx, dt, law, hz,
+                               rad, rat) * 0.5 * hx
             u[:] = us
             v[:] = vs
             tau += hx
@@ -234,34 +335,39 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                 ev_kind[nev] = 2 * first + (1 if closing else 0)
                 ev_rate[nev] = rate
             nev += 1
-            _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a)
+            _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad,
+                   rat)
             switches += 1
         if (n + 1) % stride == 0:
             r = (n + 1) // stride - 1
             out_u[:, r] = u
             out_v[:, r] = v
             out_a[:, r] = a
+            r1, ratio = _geom(rad, rat, n + 1, 0.0, dt)
             for j in range(nu):
                 if act[j]:
-                    out_f[j, r] = k[j] * (b[j, n + 1] - u[node[j]] + off[j]) \
-                        + c[j] * (bd[j, n + 1] - v[node[j]])
+                    out_f[j, r] = _spring(j, b[j, n + 1] - u[node[j]] + off[j], k, law, hz, r1,
+                                          ratio) + c[j] * (bd[j, n + 1] - v[node[j]])
                 else:
                     out_f[j, r] = 0.0
     return nev, work, cut
 
 
 @njit(cache=True)
-def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt):
+def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
     """F_cam b' [W] (contact 0 is the cam)."""
     if not act[0]:
         return 0.0
     bj, bdj = _input(b, bd, 0, n, tau, dt)
-    return (k[0] * (bj - u[node[0]] + off[0]) + c[0] * (bdj - v[node[0]])) * bdj
+    r1, ratio = _geom(rad, rat, n, tau, dt)
+    return (_spring(0, bj - u[node[0]] + off[0], k, law, hz, r1, ratio)
+            + c[0] * (bdj - v[node[0]])) * bdj
 
 
 @njit(cache=True)
 def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, u_prev, act,
-                             psi_prev, out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0):
+                             psi_prev, out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0,
+                             law, hz, rad, rat):
     """Teodorescu eq. 17: u_(n+1) = 2 u_n - u_(n-1) + dt^2 a_n, v_n = (u_n - u_(n-1))/dt.
 
     Contacts are evaluated explicitly at u_n; a change of state is dated by linear interpolation
@@ -285,8 +391,9 @@ def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, strid
             for q in range(size):
                 s -= K[i, q] * u[q] + C[i, q] * v[q]
             a[i] = s
+        r1, ratio = _geom(rad, rat, n, 0.0, dt)
         for j in range(nu):
-            p, fj, rate = _psi(u, v, j, node, k, c, off, b[j, n], bd[j, n])
+            p, fj, rate = _psi(u, v, j, node, k, c, off, b[j, n], bd[j, n], law, hz, r1, ratio)
             on = p > (0.0 if act[j] else thr[j])
             if on != act[j]:
                 # date the crossing between the previous step and this one (linear in psi)

@@ -51,13 +51,27 @@ class CamInput:
     """Periodic quintic Hermite interpolant of the lift on a uniform grid over 2 pi.
 
     ``theta`` [rad] (uniform, no duplicate end point), ``lift`` [m], ``d1`` [m/rad],
-    ``d2`` [m/rad^2].
+    ``d2`` [m/rad^2]; optionally the contact geometry a nonlinear cam contact needs on the same
+    grid: the cam's radius of curvature ``radius`` [m] and the load ratio ``ratio`` W/F_valve.
     """
 
     theta: np.ndarray
     lift: np.ndarray
     d1: np.ndarray
     d2: np.ndarray
+    radius: np.ndarray | None = None
+    ratio: np.ndarray | None = None
+
+    def geometry(self, theta):
+        """(radius, ratio) at any angles [rad] (periodic linear interpolation); empty arrays
+        when the input carries no geometry."""
+        if self.radius is None:
+            return np.zeros(0), np.zeros(0)
+        x = np.mod(np.asarray(theta, dtype=float) - self.theta[0], 2.0 * math.pi)
+        grid = self.theta - self.theta[0]
+        ratio = self.ratio if self.ratio is not None else np.ones_like(self.radius)
+        return (np.interp(x, grid, self.radius, period=2.0 * math.pi),
+                np.interp(x, grid, ratio, period=2.0 * math.pi))
 
     @property
     def step(self) -> float:
@@ -101,6 +115,18 @@ class CamInput:
               + dd_h5 * y1) / (h * h)
         return lift, d1, d2
 
+    def geometry_at(self, theta: float) -> tuple[float, float]:
+        """(radius, ratio) at one angle, in plain floats (the adaptive right-hand side)."""
+        h = 2.0 * math.pi / self.theta.size
+        x = ((theta - float(self.theta[0])) % (2.0 * math.pi)) / h
+        i = min(int(x), self.theta.size - 1)
+        t = x - i
+        j = (i + 1) % self.theta.size
+        radius = float(self.radius[i]) * (1.0 - t) + float(self.radius[j]) * t
+        if self.ratio is None:
+            return radius, 1.0
+        return radius, float(self.ratio[i]) * (1.0 - t) + float(self.ratio[j]) * t
+
     def at(self, theta: float) -> tuple[float, float, float]:
         """(l, l', l'') at one angle, in plain floats (the adaptive integrators' right-hand
         side calls this once per evaluation: no array overhead)."""
@@ -136,12 +162,17 @@ class CamInput:
         return lift, d1 * rate, d2 * rate * rate + d1 * accel
 
 
-def cam_input(theta, lift, d1, d2, base_circle: float = 0.0) -> CamInput:
+def cam_input(theta, lift, d1, d2, base_circle: float = 0.0, *, radius=None,
+              ratio=None) -> CamInput:
     """The cam input from the rigid valve lift on the grid, with the lift below ``base_circle``
     [m] (the base-circle tolerance of the lift data, plus any lash that the caller handles
     separately) taken as the base circle: b = max(l - tol, 0). Ripple of a smoothed lift table
     below the tolerance would otherwise make a zero-lash contact chatter on the base circle."""
     lift = np.asarray(lift, dtype=float)
     on = lift > base_circle
+    geometry = {}
+    if radius is not None:
+        geometry = {"radius": np.asarray(radius, dtype=float),
+                    "ratio": None if ratio is None else np.asarray(ratio, dtype=float)}
     return CamInput(np.asarray(theta, dtype=float), np.where(on, lift - base_circle, 0.0),
-                    np.where(on, d1, 0.0), np.where(on, d2, 0.0))
+                    np.where(on, d1, 0.0), np.where(on, d2, 0.0), **geometry)

@@ -166,8 +166,9 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings) 
     inputs = np.zeros((2, steps + 1))
     rates = np.zeros((2, steps + 1))
     inputs[CAM], rates[CAM] = b, bd
+    geometry = _geometry(model, cam, base, t, theta0)
     if settings.integrator in ("newmark", "central_difference"):
-        runner = _FixedStep(model, inputs, rates, dt, sub, settings.integrator)
+        runner = _FixedStep(model, inputs, rates, dt, sub, settings.integrator, geometry)
     else:
         runner = _Adaptive(model, cam, base, theta0, dt * sub, grid, settings)
     previous = None
@@ -219,11 +220,14 @@ def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: 
     inputs = np.zeros((2, steps + 1))
     rates = np.zeros((2, steps + 1))
     inputs[CAM], rates[CAM] = b, bd
-    runner = _FixedStep(model, inputs, rates, dt, int(substeps), "newmark")
+    runner = _FixedStep(model, inputs, rates, dt, int(substeps), "newmark",
+                        _geometry(model, cam, base, t, theta0))
     runner.u = np.array(u0, dtype=float)
     runner.v = np.array(v0, dtype=float)
     runner.act = np.array(active, dtype=np.bool_)
     force = model.preload - model.stiffness @ runner.u - model.damping @ runner.v
+    if model.cam_law is not None:
+        raise ValueError("revolution_from marches a linear cam contact")
     for j in range(2):
         if runner.act[j]:
             i = model.uni_node[j]
@@ -232,6 +236,17 @@ def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: 
     runner.a = force / model.mass
     u, v, a, f, events, work, _ = runner.revolution()
     return u, v, a, f, events, work
+
+
+def _geometry(model: TrainModel, cam: CamInput, base: TimeBase, t, theta0: float):
+    """The kernel's contact-law arguments (law, constants, cam radius and load ratio at the step
+    times t): law 0 and empty arrays for a linear cam contact."""
+    if model.cam_law is None:
+        return 0, np.zeros(5), np.zeros(0), np.zeros(0)
+    if cam.radius is None:
+        raise ValueError("a Hertz cam contact needs the cam's radius of curvature in its input")
+    radius, ratio = cam.geometry(theta0 + base.angle(t)[0])
+    return 1, model.cam_law.as_array(), radius, ratio
 
 
 def _to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarray:
@@ -245,9 +260,10 @@ def _to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarr
 class _FixedStep:
     """Newmark or central difference over one revolution per call (compiled kernel)."""
 
-    def __init__(self, model, inputs, rates, dt, stride, integrator):
+    def __init__(self, model, inputs, rates, dt, stride, integrator, geometry=None):
         from camtrain.dynamics import _kernel
 
+        self.geometry = geometry or (0, np.zeros(5), np.zeros(0), np.zeros(0))
         self.kernel = _kernel
         self.model, self.inputs, self.rates, self.dt, self.stride = (model, inputs, rates, dt,
                                                                      stride)
@@ -275,11 +291,11 @@ class _FixedStep:
         if self.explicit:
             nev, work, cut = self.kernel.central_difference_march(
                 *args, self.u, self.u_prev, self.act, self.psi_prev, out_u, out_v, out_a, out_f,
-                ev_t, ev_k, ev_r, 0.0)
+                ev_t, ev_k, ev_r, 0.0, *self.geometry)
         else:
             nev, work, cut = self.kernel.newmark_march(
                 *args, self.u, self.v, self.a, self.act, out_u, out_v, out_a, out_f, ev_t, ev_k,
-                ev_r, 0.0)
+                ev_r, 0.0, *self.geometry)
         nev = min(nev, cap)
         events = list(zip(ev_t[:nev].tolist(), ev_k[:nev].tolist(), ev_r[:nev].tolist(),
                           strict=True))
@@ -307,6 +323,18 @@ class _Adaptive:
         b, bd, _ = self.cam.in_time(np.array([t]), base, self.theta0)
         return (float(b[0]), 0.0), (float(bd[0]), 0.0)
 
+    def _spring(self, t, j, delta):
+        """Spring force of contact j at compression delta (a Hertz cam contact: its law at the
+        angle of time t; a negative delta: k delta, which only signs the indicator)."""
+        m = self.model
+        if j == CAM and m.cam_law is not None and delta > 0.0:
+            if self.base.amplitude == 0.0 or self.base.order == 0:
+                theta = self.theta0 + self.base.omega * t
+            else:
+                theta = self.theta0 + float(self.base.angle(np.array([t]))[0][0])
+            return m.cam_law.force(delta, *self.cam.geometry_at(theta))
+        return m.uni_k[j] * delta
+
     def _forces(self, t, u, v, act):
         m = self.model
         b, bd = self._inp(t)
@@ -314,7 +342,8 @@ class _Adaptive:
         for j in range(2):
             if act[j]:
                 i = m.uni_node[j]
-                f[j] = m.uni_k[j] * (b[j] - u[i] + m.uni_offset[j]) + m.uni_c[j] * (bd[j] - v[i])
+                f[j] = (self._spring(t, j, b[j] - u[i] + m.uni_offset[j])
+                        + m.uni_c[j] * (bd[j] - v[i]))
         return f, b, bd
 
     def _rhs(self, t, y, act):
@@ -352,7 +381,8 @@ class _Adaptive:
         i = m.uni_node[j]
         delta = b[j] - y[i] + m.uni_offset[j]
         rate = bd[j] - y[n + i]
-        return min(m.uni_k[j] * delta, m.uni_k[j] * delta + m.uni_c[j] * rate), rate
+        g = self._spring(t, j, delta)
+        return min(g, g + m.uni_c[j] * rate), rate
 
     def revolution(self):
         from scipy.integrate import solve_ivp
@@ -439,11 +469,12 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     ev_t, ev_k, ev_r = np.empty(1), np.empty(1, dtype=np.int64), np.empty(1)
     args = (model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node, model.uni_k,
             model.uni_c, model.uni_offset, np.zeros(2), inputs, inputs, dt, 1)
+    linear = (0, np.zeros(5), np.zeros(0), np.zeros(0))
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
         _kernel.central_difference_march(*args, u, u_prev, act, np.zeros(2), out_u, out_v,
-                                         out_a, out_f, ev_t, ev_k, ev_r, 0.0)
+                                         out_a, out_f, ev_t, ev_k, ev_r, 0.0, *linear)
     else:
         _kernel.newmark_march(*args, u, v, a, act, out_u, out_v, out_a, out_f, ev_t, ev_k, ev_r,
-                              0.0)
+                              0.0, *linear)
     return out_u

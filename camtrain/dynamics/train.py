@@ -22,7 +22,7 @@ base motion (``UnilateralSet.node``/``offset`` say where each contact acts).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -94,6 +94,10 @@ class TrainModel:
     spring_rate: float
     spring_preload: float
     chain: tuple[int, ...] = ()
+    #: the cam contact's own load-deflection law (a Hertz line contact) or None: linear, uni_k.
+    #: With a law, uni_k[CAM] is its largest tangent stiffness over the cycle (for the step, the
+    #: stability guard and the printed elements).
+    cam_law: object = None
 
     @property
     def size(self) -> int:
@@ -197,7 +201,8 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
                    spring_mass: float = 0.0, spring_elements: int = 0,
                    spring_damping_ratio: float = 0.02,
                    adjuster_load: float = 0.0,
-                   damping: dict[str, float] | None = None) -> TrainModel:
+                   damping: dict[str, float] | None = None,
+                   cam_law=None) -> TrainModel:
     """Build the lumped train (all values referred to the valve, SI).
 
     ``links``: named stiffnesses between the follower and the valve node (push rod, rocker,
@@ -213,6 +218,10 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     ``contact`` (cam contact, with the series train when there is no follower node), ``link``
     (follower-valve link), ``seat``, ``spring`` (single rate: on the valve node; chain: the
     whole spring's end-to-end coefficient, each of the N elements N times it).
+    ``cam_law``: a :class:`~camtrain.dynamics.contact_law.HertzLineLaw` makes the cam contact
+    nonlinear; ``contact_stiffness`` is then its largest tangent stiffness (for the step and the
+    damping ratio), and the law gets the series springs (follower, and links without a follower
+    node) as its ``k_series``.
     """
     links = dict(links or {})
     given = dict(damping or {})
@@ -240,6 +249,7 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     elements = []
     link_k = series(*links.values()) if links else math.inf
     if has_follower:
+        in_series = series(follower_stiffness)
         cam_k = series(contact_stiffness, follower_stiffness)
         if math.isfinite(link_k):
             m_red = mass[0] * mass[1] / (mass[0] + mass[1])
@@ -250,9 +260,15 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
         else:
             raise ValueError("a follower mass needs a stiffness between follower and valve")
     else:
+        in_series = series(follower_stiffness, link_k)
         cam_k = series(contact_stiffness, follower_stiffness, link_k)
-    elements.insert(0, Element("cam contact" + ("" if has_follower else " (in series with "
-                                                "the train)"), cam_k, mass[follower]))
+    name = "cam contact"
+    if cam_law is not None:
+        cam_law = replace(cam_law, k_series=in_series)
+        name += " (Hertz line, largest tangent)"
+    if not has_follower:
+        name += " (in series with the train)"
+    elements.insert(0, Element(name, cam_k, mass[follower]))
     chain: tuple[int, ...] = ()
     if spring_elements > 0:
         chain = tuple(range(nodes, n))
@@ -282,12 +298,15 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
                       given.get("seat", damping_from_ratio(zs, seat_stiffness, mass[valve]))])
     # an adjuster takes up the slack: at rest the contact is compressed by its load, no link is
     # strained, every node sits at u = 0
-    uni_offset = np.array([-lash + (adjuster_load / cam_k if has_follower else 0.0),
-                           seat_load / seat_stiffness])
+    squeeze = 0.0
+    if has_follower and adjuster_load:
+        squeeze = (cam_law.at_rest(adjuster_load) if cam_law is not None
+                   else adjuster_load / cam_k)
+    uni_offset = np.array([-lash + squeeze, seat_load / seat_stiffness])
     return TrainModel(mass=mass, stiffness=k, damping=c, preload=preload, uni_node=uni_node,
                       uni_k=uni_k, uni_c=uni_c, uni_offset=uni_offset, follower=follower,
                       valve=valve, elements=tuple(elements), spring_rate=spring_rate,
-                      spring_preload=spring_preload, chain=chain)
+                      spring_preload=spring_preload, chain=chain, cam_law=cam_law)
 
 
 def static_state(model: TrainModel) -> tuple[np.ndarray, np.ndarray]:
@@ -303,13 +322,19 @@ def static_state(model: TrainModel) -> tuple[np.ndarray, np.ndarray]:
         act[CAM] = cam_closed
         k = model.stiffness.copy()
         rhs = model.preload.copy()
+        uni_k = model.uni_k.copy()
+        off = model.uni_offset[CAM]
+        if model.cam_law is not None and off > 0.0:
+            # the secant of the nonlinear contact at its rest compression: u = 0 exactly
+            uni_k[CAM] = model.cam_law.force(off, model.cam_law.base_radius,
+                                             model.cam_law.base_ratio) / off
         for j in range(2):
             if act[j]:
                 i = model.uni_node[j]
-                k[i, i] += model.uni_k[j]
-                rhs[i] += model.uni_k[j] * model.uni_offset[j]
+                k[i, i] += uni_k[j]
+                rhs[i] += uni_k[j] * model.uni_offset[j]
         u = np.linalg.solve(k, rhs)
-        cam_force = model.uni_k[CAM] * (-u[model.follower] + model.uni_offset[CAM])
+        cam_force = uni_k[CAM] * (-u[model.follower] + model.uni_offset[CAM])
         if (cam_force > 0.0) == cam_closed:
             return u, act.copy()
     return u, act.copy()
