@@ -122,3 +122,23 @@ def test_contact_model_input_is_checked(changes, field):
     with pytest.raises(InputError) as err:
         deck_of(zeta_raw({"dynamics": changes}))
     assert field in str(err.value) and err.value.exit_code == 2
+
+
+def test_hertz_line_refused_for_a_flat_follower_and_the_coupled_camshaft():
+    import tomllib
+
+    from camtrain import api
+    from tests.conftest import DECKS
+
+    raw = zeta_raw({"dynamics": HERTZ})
+    raw["mechanism"] = {"type": "flat"}
+    raw["cam"].pop("taper_angle")
+    with pytest.raises(InputError) as err:
+        api.run(deck_of(raw))
+    assert "dynamics.contact_model" in str(err.value) and "flat" in str(err.value)
+    coupled = tomllib.loads((DECKS / "zeta_intake_camshaft_coupled.toml").read_text())
+    coupled["dynamics"].update(contact_model="hertz_line")
+    coupled["dynamics"].pop("contact_stiffness")
+    with pytest.raises(InputError) as err:
+        deck_of(coupled)
+    assert "dynamics.contact_model" in str(err.value) and "coupled" in str(err.value)
