@@ -51,7 +51,7 @@ def _input(b, bd, j, n, tau, dt):
 @njit(cache=True)
 def _geom(rad, rat, n, tau, dt):
     """Cam radius of curvature and load ratio at time tau into step n (linear)."""
-    if rad.size == 0:
+    if rad.size == 0:   # a linear cam contact: no geometry
         return 1.0, 1.0
     s = min(max(tau / dt, 0.0), 1.0)
     m = min(n + 1, rad.size - 1)
@@ -108,7 +108,10 @@ def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
     """Contact indicator min(F_spring, F_spring + c delta') and the force it would carry."""
     delta = bj - u[node[j]] + off[j]
     rate = bdj - v[node[j]]
-    g = _spring(j, delta, k, law, hz, r1, ratio)
+    if j == 0 and law == 1 and delta > 0.0:
+        g = _hz_solve(delta, 0.0, r1, ratio, hz, k[0] * delta)
+    else:
+        g = k[j] * delta
     f = g + c[j] * rate
     return min(g, f), f, rate
 
@@ -166,7 +169,6 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             s -= K[i, q] * pu[q] + C[i, q] * pv[q]
         rhs[i] = s
     hertz = law == 1 and act[0]
-    r1, ratio = _geom(rad, rat, n, tau + h, dt)
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(b, bd, j, n, tau + h, dt)
@@ -193,6 +195,7 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             z[:] = np.linalg.solve(A, z.copy())
     if hertz:
         i = node[0]
+        r1, ratio = _geom(rad, rat, n, tau + h, dt)
         bj, bdj = _input(b, bd, 0, n, tau + h, dt)
         target = bj - pu[i] - 0.25 * h * h * a1[i] + off[0]
         f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, hz, k[0] * max(target, 0.0))
@@ -262,14 +265,17 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
             # which contact changes state first inside the (sub)step?
             first = -1
             alpha = 2.0
+            r0, q0 = 1.0, 1.0
+            r1, q1 = 1.0, 1.0
+            if law == 1:
+                r0, q0 = _geom(rad, rat, n, tau, dt)
+                r1, q1 = _geom(rad, rat, n, tau + h, dt)
             for j in range(nu):
                 level = 0.0 if act[j] else thr[j]
                 bj, bdj = _input(b, bd, j, n, tau, dt)
-                r1, ratio = _geom(rad, rat, n, tau, dt)
-                p0 = _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
+                p0 = _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r0, q0)[0] - level
                 bj, bdj = _input(b, bd, j, n, tau + h, dt)
-                r1, ratio = _geom(rad, rat, n, tau + h, dt)
-                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
+                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj, law, hz, r1, q1)[0] - level
                 if (p1 > 0.0) != act[j]:
                     frac = p0 / (p0 - p1) if p0 != p1 else 1.0
                     frac = min(max(frac, 0.0), 1.0)
@@ -359,9 +365,13 @@ def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat)
     if not act[0]:
         return 0.0
     bj, bdj = _input(b, bd, 0, n, tau, dt)
-    r1, ratio = _geom(rad, rat, n, tau, dt)
-    return (_spring(0, bj - u[node[0]] + off[0], k, law, hz, r1, ratio)
-            + c[0] * (bdj - v[node[0]])) * bdj
+    delta = bj - u[node[0]] + off[0]
+    if law == 1:
+        r1, ratio = _geom(rad, rat, n, tau, dt)
+        g = _spring(0, delta, k, law, hz, r1, ratio)
+    else:
+        g = k[0] * delta
+    return (g + c[0] * (bdj - v[node[0]])) * bdj
 
 
 @njit(cache=True)
