@@ -272,11 +272,13 @@ def torsion_response(shaft: TorsionShaft, torques, omega: float, dampers=(),
                 continue  # on the prescribed drive node a damper changes nothing
             raise field_error("camshaft.damper.node", "no such station", d.node)
         extra[where[int(d.node)]] += d.effective_inertia(orders)
-    X = np.empty_like(Tk)
-    for k in orders:
-        w = k * omega
-        Z = shaft.K - (w * w) * (shaft.J + np.diag(extra[:, k])) + 1j * w * shaft.C
-        X[:, k] = np.linalg.solve(Z, Tk[:, k])
+    # every order at once (one batched solve; the chain is small)
+    w = orders * omega
+    Z = (shaft.K[None] - (w * w)[:, None, None] * shaft.J[None]
+         + 1j * w[:, None, None] * shaft.C[None]).astype(complex)
+    idx = np.arange(shaft.free.size)
+    Z[:, idx, idx] -= (w * w)[:, None] * extra.T
+    X = np.linalg.solve(Z, Tk.T[:, :, None])[:, :, 0].T
     phi = np.zeros((n_nodes, n))
     phi[shaft.free] = np.fft.irfft(X, n=n, axis=-1)
     return phi

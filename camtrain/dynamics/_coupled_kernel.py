@@ -1,11 +1,26 @@
 """Compiled revolution of the monolithic shaft-and-trains march (numba, cached on disk): the
-step of :mod:`camtrain.dynamics.monolithic` (Newmark average acceleration, active-set contact
-states, Woodbury update of the factorised linear part, explicit friction). Only this module and
-the train kernel import numba."""
+step of :mod:`camtrain.dynamics.monolithic` (Newmark average acceleration, Woodbury update of
+the factorised linear part for the closed contacts, contact changes located inside the step,
+friction of each contact from its current load, explicit by one step). Only this module and
+the train kernel import numba.
+
+A step is first taken with the contact states of its start (the linear part's inverse for the
+full step is factorised once: a low-rank update per step). When a contact's indicator
+psi = min(k delta, k delta + c delta') changes sign over the step, the step is split where it
+does, as the single-train march does (:mod:`._kernel`): the crossing is located on the cubic
+Hermite of delta in time through its end values and rates (Illinois regula falsi), the part of
+the step up to it is re-taken, the contact switched, the acceleration restarted from the
+equilibrium with the new states and the rest of the step taken with them. The sub-steps have
+other lengths than the full step, so they are solved block by block (both bending planes, the
+twist and every train are uncoupled but for the contacts), again with the contacts as a
+low-rank update."""
 from __future__ import annotations
 
 import numpy as np
 from numba import njit
+
+#: contact changes located inside one step at most (more: the rest of the step is accepted)
+MAX_SWITCHES = 8
 
 
 @njit(cache=True)
@@ -15,13 +30,270 @@ def _gradient_dot(coef, z, ix, iy, iphi, ifol, ival, j):
 
 
 @njit(cache=True)
-def revolution(q, v, acc, w_prev, x_f0, P, Q, blocks, ainv_basis, b, bd, gx, gy, gphi, fric_mu, arm,
-               ratio, cosa, sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi,
-               ifol, ival, valve_dof, substeps, out_load, out_acc):
+def _hermite(y0, m0, y1, m1, sigma, h):
+    """Cubic Hermite at fraction sigma of an interval of length h (m: rates per unit time):
+    value and rate."""
+    s, s2, s3 = sigma, sigma * sigma, sigma * sigma * sigma
+    val = ((2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 * h + (-2 * s3 + 3 * s2) * y1
+           + (s3 - s2) * m1 * h)
+    der = ((6 * s2 - 6 * s) * y0 + (3 * s2 - 4 * s + 1) * m0 * h + (-6 * s2 + 6 * s) * y1
+           + (3 * s2 - 2 * s) * m1 * h) / h
+    return val, der
+
+
+@njit(cache=True)
+def _inputs(b, bd, gx, gy, gphi, j, s, frac, dt):
+    """Lobe j's cam input, its rate and gradient at fraction ``frac`` of step s (the step runs
+    from the time of column s - 1 to that of column s; the columns wrap over the revolution):
+    the lift by a cubic Hermite, the rest linear."""
+    p = s - 1 if s > 0 else b.shape[1] - 1
+    if frac >= 1.0:
+        return b[j, s], bd[j, s], gx[j, s], gy[j, s], gphi[j, s]
+    if frac <= 0.0:
+        return b[j, p], bd[j, p], gx[j, p], gy[j, p], gphi[j, p]
+    val, der = _hermite(b[j, p], bd[j, p], b[j, s], bd[j, s], frac, dt)
+    w0 = 1.0 - frac
+    return (val, der, w0 * gx[j, p] + frac * gx[j, s], w0 * gy[j, p] + frac * gy[j, s],
+            w0 * gphi[j, p] + frac * gphi[j, s])
+
+
+@njit(cache=True)
+def _cam_gap(z, zd, bj, bdj, gxj, gyj, gphij, offc, ix, iy, iphi, ifol, j):
+    """Cam contact j's compression delta and its rate for displacements z, velocities zd."""
+    d = bj + offc - z[ifol[j]] + gxj * z[ix[j]] + gyj * z[iy[j]] + gphij * z[iphi[j]]
+    dd = bdj - zd[ifol[j]] + gxj * zd[ix[j]] + gyj * zd[iy[j]] + gphij * zd[iphi[j]]
+    return d, dd
+
+
+@njit(cache=True)
+def _psi(k, c, d, dd):
+    """Contact indicator min(k delta, k delta + c delta') (a separating damper never pulls)."""
+    f = k * d + c * dd
+    return min(k * d, f)
+
+
+@njit(cache=True)
+def _woodbury(x0, basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc,
+              offs, a1, ix, iy, iphi, ifol, ival, x):
+    """x = (A + sum_active kappa h h^T)^-1 (r - sum_active h f0): ``x0`` = A^-1 r, ``basis``
+    the columns of A^-1 at every lobe's five contact coordinates (x, y, phi, follower,
+    valve), the inputs of every lobe at the step's end (bj ...), a1 = 2 / step."""
+    n = x0.size
+    lobes = ix.size
+    coef = np.zeros((2 * lobes, 5))
+    lobe_of = np.zeros(2 * lobes, dtype=np.int64)
+    kk = np.zeros(2 * lobes)
+    for i in range(n):
+        x[i] = x0[i]
+    m = 0
+    for j in range(lobes):
+        if act_c[j]:
+            coef[m, 0] = gxj[j]
+            coef[m, 1] = gyj[j]
+            coef[m, 2] = gphij[j]
+            coef[m, 3] = -1.0
+            hq = gxj[j] * q[ix[j]] + gyj[j] * q[iy[j]] + gphij[j] * q[iphi[j]] - q[ifol[j]]
+            hv = gxj[j] * v[ix[j]] + gyj[j] * v[iy[j]] + gphij[j] * v[iphi[j]] - v[ifol[j]]
+            f0 = kc * (bj[j] + offc) + cc * (bdj[j] - a1 * hq - hv)
+            # f_c = -h (k delta + c delta'): its constant part, through A^-1 h
+            for i in range(n):
+                x[i] -= f0 * (coef[m, 0] * basis[i, 5 * j] + coef[m, 1] * basis[i, 5 * j + 1]
+                              + coef[m, 2] * basis[i, 5 * j + 2]
+                              + coef[m, 3] * basis[i, 5 * j + 3])
+            kk[m] = kc + a1 * cc
+            lobe_of[m] = j
+            m += 1
+        if act_s[j]:
+            coef[m, 4] = -1.0
+            f0 = ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
+            for i in range(n):
+                x[i] += f0 * basis[i, 5 * j + 4]
+            kk[m] = ks + a1 * cs
+            lobe_of[m] = j
+            m += 1
+    if m == 0:
+        return
+    hinv = np.empty((n, m))
+    for c in range(m):
+        j = lobe_of[c]
+        for i in range(n):
+            acc_i = 0.0
+            for e in range(5):
+                acc_i += coef[c, e] * basis[i, 5 * j + e]
+            hinv[i, c] = acc_i
+    small = np.zeros((m, m))
+    rhs_small = np.empty(m)
+    for r in range(m):
+        small[r, r] = 1.0 / kk[r]
+        jr = lobe_of[r]
+        for c in range(m):
+            small[r, c] += _gradient_dot(coef[r], hinv[:, c], ix, iy, iphi, ifol, ival, jr)
+        rhs_small[r] = _gradient_dot(coef[r], x, ix, iy, iphi, ifol, ival, jr)
+    y = np.linalg.solve(small, rhs_small)
+    for i in range(n):
+        for c in range(m):
+            x[i] -= hinv[i, c] * y[c]
+
+
+@njit(cache=True)
+def _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j):
+    """Generalised friction force of every lobe (tangential on the shaft, torque mu W r)."""
+    fric[:] = 0.0
+    for j in range(ix.size):
+        fric[ix[j]] += -tang_j[j] * sina[j]
+        fric[iy[j]] += tang_j[j] * cosa[j]
+        fric[iphi[j]] += -fr_j[j] * arm_j[j]
+
+
+@njit(cache=True)
+def _substep(tau, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj, gphij,
+             kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, x):
+    """A Newmark step of length ``tau`` from (q, v, acc) with the contact states fixed, the
+    linear part solved block by block (inputs bj ... at the sub-step's end)."""
+    n = q.size
+    lobes = ix.size
+    a0 = 4.0 / (tau * tau)
+    a1 = 2.0 / tau
+    x0 = np.empty(n)
+    basis = np.zeros((n, 5 * lobes))
+    for k in range(blocks.size - 1):
+        lo, hi = blocks[k], blocks[k + 1]
+        size = hi - lo
+        cols = []
+        for j in range(lobes):
+            for e, dof in enumerate((ix[j], iy[j], iphi[j], ifol[j], ival[j])):
+                if lo <= dof < hi:
+                    cols.append((5 * j + e, dof))
+        A = np.empty((size, size))
+        R = np.zeros((size, 1 + len(cols)))
+        for i in range(size):
+            gi = lo + i
+            r = f0[gi] + fric[gi]
+            for e in range(size):
+                ge = lo + e
+                A[i, e] = K[gi, ge] + a1 * C[gi, ge] + a0 * M[gi, ge]
+                r += M[gi, ge] * (a0 * q[ge] + (4.0 / tau) * v[ge] + acc[ge]) \
+                    + C[gi, ge] * (a1 * q[ge] + v[ge])
+            R[i, 0] = r
+        for c in range(len(cols)):
+            R[cols[c][1] - lo, 1 + c] = 1.0
+        S = np.linalg.solve(A, R)
+        for i in range(size):
+            x0[lo + i] = S[i, 0]
+        for c in range(len(cols)):
+            col = cols[c][0]
+            for i in range(size):
+                basis[lo + i, col] = S[i, 1 + c]
+    _woodbury(x0, basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc,
+              offs, a1, ix, iy, iphi, ifol, ival, x)
+
+
+@njit(cache=True)
+def _equilibrium(q, v, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj, gphij, kc,
+                 cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc):
+    """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block."""
+    n = q.size
+    r = np.empty(n)
+    for i in range(n):
+        r[i] = f0[i] + fric[i]
+    for j in range(ix.size):
+        if act_c[j]:
+            d, dd = _cam_gap(q, v, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], offc, ix, iy, iphi,
+                             ifol, j)
+            w = kc * d + cc * dd
+            r[ifol[j]] += w
+            r[ix[j]] -= w * gxj[j]
+            r[iy[j]] -= w * gyj[j]
+            r[iphi[j]] -= w * gphij[j]
+        if act_s[j]:
+            r[ival[j]] += ks * (offs - q[ival[j]]) - cs * v[ival[j]]
+    for k in range(blocks.size - 1):
+        lo, hi = blocks[k], blocks[k + 1]
+        size = hi - lo
+        A = np.empty((size, size))
+        rb = np.empty(size)
+        for i in range(size):
+            gi = lo + i
+            s = r[gi]
+            for e in range(size):
+                ge = lo + e
+                A[i, e] = M[gi, ge]
+                s -= K[gi, ge] * q[ge] + C[gi, ge] * v[ge]
+            rb[i] = s
+        sol = np.linalg.solve(A, rb)
+        for i in range(size):
+            acc[lo + i] = sol[i]
+
+
+@njit(cache=True)
+def _indicators(z, zd, j, bj, bdj, gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi,
+                ifol, ival):
+    """(psi, delta, delta') of lobe j's cam contact and of its seat."""
+    d, dd = _cam_gap(z, zd, bj, bdj, gxj, gyj, gphij, offc, ix, iy, iphi, ifol, j)
+    ds, dds = offs - z[ival[j]], -zd[ival[j]]
+    return _psi(kc, cc, d, dd), d, dd, _psi(ks, cs, ds, dds), ds, dds
+
+
+@njit(cache=True)
+def _crossing(k, c, d0, dd0, d1, dd1, h):
+    """Fraction of an interval of length h where psi = min(k delta, k delta + c delta') of the
+    cubic Hermite delta(t) through (d0, dd0) and (d1, dd1) changes sign (Illinois)."""
+    lo, hi = 0.0, 1.0
+    plo = _psi(k, c, d0, dd0)
+    phi = _psi(k, c, d1, dd1)
+    if plo == phi or (plo > 0.0) == (phi > 0.0):
+        return 0.0
+    x = plo / (plo - phi)
+    side = 0
+    for _ in range(40):
+        val, der = _hermite(d0, dd0, d1, dd1, x, h)
+        px = _psi(k, c, val, der)
+        if abs(px) <= 1e-13 * (abs(plo) + abs(phi)) or hi - lo < 1e-12:
+            break
+        if (px > 0.0) == (plo > 0.0):
+            lo, plo = x, px
+            if side == -1:
+                phi *= 0.5
+            side = -1
+        else:
+            hi, phi = x, px
+            if side == 1:
+                plo *= 0.5
+            side = 1
+        x = lo + (hi - lo) * plo / (plo - phi)
+    return x
+
+
+@njit(cache=True)
+def _coefficient(table, j, s, ln_first, ln_step, w):
+    """Friction coefficient of lobe j at step s under the load w [N]: linear in ln w between
+    the table's load levels (first level e^ln_first, ratio e^ln_step), held beyond them."""
+    levels = table.shape[1]
+    if levels == 1 or w <= 0.0:
+        return table[j, 0, s]
+    x = (np.log(w) - ln_first) / ln_step
+    if x <= 0.0:
+        return table[j, 0, s]
+    if x >= levels - 1:
+        return table[j, levels - 1, s]
+    i = int(x)
+    t = x - i
+    return (1.0 - t) * table[j, i, s] + t * table[j, i + 1, s]
+
+
+@njit(cache=True)
+def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, f0, b,
+               bd, gx, gy, gphi, fric_tab, ln_first, ln_step, arm, ratio, cosa, sina, turn, kc,
+               cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof, substeps, out_load,
+               out_acc):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
-    steps) into ``out_load``/``out_acc`` (n_lobes x grid). State arrays are updated in place.
-    ``P`` = A^-1 M and ``Q`` = A^-1 C are block diagonal (shaft planes, twist, each train):
-    ``blocks`` holds the block boundaries, so only the diagonal blocks are multiplied."""
+    steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
+    at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`,
+    times the last step's load. State arrays (q, v, acc, the contact
+    states act_c/act_s, the last loads w_prev) are updated in place. ``P`` = A^-1 M and
+    ``Q`` = A^-1 C are block diagonal (shaft planes, twist, each train): ``blocks`` holds the
+    block boundaries, so only the diagonal blocks are multiplied. Returns the contact changes
+    located in the revolution and the steps that had more than MAX_SWITCHES."""
     n = q.size
     lobes = ix.size
     steps = b.shape[1]
@@ -29,16 +301,33 @@ def revolution(q, v, acc, w_prev, x_f0, P, Q, blocks, ainv_basis, b, bd, gx, gy,
     rhs_w = np.empty(n)
     rhs_c = np.empty(n)
     base = np.empty(n)
-    x0 = np.empty(n)
     x = np.empty(n)
-    coef = np.zeros((2 * lobes, 5))
-    lobe_of = np.zeros(2 * lobes, dtype=np.int64)
-    kk = np.zeros(2 * lobes)
-    act_c = np.zeros(lobes, dtype=np.bool_)
-    act_s = np.zeros(lobes, dtype=np.bool_)
-    w_new = np.zeros(lobes)
+    v1 = np.empty(n)
+    a1v = np.empty(n)
+    fric = np.zeros(n)
+    fr_j = np.zeros(lobes)
+    tang_j = np.zeros(lobes)
+    arm_j = np.zeros(lobes)
+    bj = np.empty(lobes)
+    bdj = np.empty(lobes)
+    gxj = np.empty(lobes)
+    gyj = np.empty(lobes)
+    gphij = np.empty(lobes)
+    b0 = np.empty(lobes)
+    bd0 = np.empty(lobes)
+    switches_total = 0
+    cut = 0
     for s in range(steps):
-        # the linear part's step from the state (P = A^-1 M, Q = A^-1 C)
+        # friction of every lobe from its last load (explicit): constant over the step
+        for j in range(lobes):
+            mu = _coefficient(fric_tab, j, s, ln_first, ln_step, w_prev[j])
+            fr_j[j] = mu * ratio[j, s] * w_prev[j]
+            sgn = 1.0 if arm[j, s] >= 0 else -1.0
+            tang_j[j] = -turn * fr_j[j] * sgn
+            arm_j[j] = arm[j, s]
+            bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = b[j, s], bd[j, s], gx[j, s], gy[j, s], \
+                gphi[j, s]
+        # the full step with the states of its start (P = A^-1 M, Q = A^-1 C)
         for i in range(n):
             rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
             rhs_c[i] = a1 * q[i] + v[i]
@@ -49,118 +338,103 @@ def revolution(q, v, acc, w_prev, x_f0, P, Q, blocks, ainv_basis, b, bd, gx, gy,
                 for e in range(lo, hi):
                     total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
                 base[i] = total
-        # constant contact forces and friction enter through A^-1 of the basis vectors
         for j in range(lobes):
-            fr = fric_mu[j, s] * ratio[j, s] * w_prev[j]
-            sgn = 1.0 if arm[j, s] >= 0 else -1.0
-            tang = -turn * fr * sgn
             for i in range(n):
-                base[i] += (-tang * sina[j] * ainv_basis[i, 5 * j]
-                            + tang * cosa[j] * ainv_basis[i, 5 * j + 1]
-                            - fr * arm[j, s] * ainv_basis[i, 5 * j + 2])
-        for j in range(lobes):
-            d = (b[j, s] + offc - q[ifol[j]] + gx[j, s] * q[ix[j]] + gy[j, s] * q[iy[j]]
-                 + gphi[j, s] * q[iphi[j]])
-            act_c[j] = d > 0.0
-            act_s[j] = offs - q[ival[j]] > 0.0
-        for _it in range(8):
-            for i in range(n):
-                x0[i] = base[i]
-            m = 0
-            for j in range(lobes):
-                if act_c[j]:
-                    coef[m, 0] = gx[j, s]
-                    coef[m, 1] = gy[j, s]
-                    coef[m, 2] = gphi[j, s]
-                    coef[m, 3] = -1.0
-                    coef[m, 4] = 0.0
-                    hq = (gx[j, s] * q[ix[j]] + gy[j, s] * q[iy[j]] + gphi[j, s] * q[iphi[j]]
-                          - q[ifol[j]])
-                    hv = (gx[j, s] * v[ix[j]] + gy[j, s] * v[iy[j]] + gphi[j, s] * v[iphi[j]]
-                          - v[ifol[j]])
-                    f0 = kc * (b[j, s] + offc) + cc * (bd[j, s] - a1 * hq - hv)
-                    # f_c = -h (k delta + c delta'): its constant part, through A^-1 h
-                    for i in range(n):
-                        x0[i] -= f0 * (coef[m, 0] * ainv_basis[i, 5 * j]
-                                       + coef[m, 1] * ainv_basis[i, 5 * j + 1]
-                                       + coef[m, 2] * ainv_basis[i, 5 * j + 2]
-                                       + coef[m, 3] * ainv_basis[i, 5 * j + 3])
-                    kk[m] = kc + a1 * cc
-                    lobe_of[m] = j
-                    m += 1
-                if act_s[j]:
-                    coef[m, 0] = 0.0
-                    coef[m, 1] = 0.0
-                    coef[m, 2] = 0.0
-                    coef[m, 3] = 0.0
-                    coef[m, 4] = -1.0
-                    f0 = ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
-                    for i in range(n):
-                        x0[i] += f0 * ainv_basis[i, 5 * j + 4]
-                    kk[m] = ks + a1 * cs
-                    lobe_of[m] = j
-                    m += 1
-            if m > 0:
-                hinv = np.empty((n, m))
-                for c in range(m):
-                    j = lobe_of[c]
-                    for i in range(n):
-                        acc_i = 0.0
-                        for e in range(5):
-                            acc_i += coef[c, e] * ainv_basis[i, 5 * j + e]
-                        hinv[i, c] = acc_i
-                small = np.zeros((m, m))
-                rhs_small = np.empty(m)
-                for r in range(m):
-                    small[r, r] = 1.0 / kk[r]
-                    jr = lobe_of[r]
-                    for c in range(m):
-                        small[r, c] += _gradient_dot(coef[r], hinv[:, c], ix, iy, iphi, ifol,
-                                                     ival, jr)
-                    rhs_small[r] = _gradient_dot(coef[r], x0, ix, iy, iphi, ifol, ival, jr)
-                y = np.linalg.solve(small, rhs_small)
-                for i in range(n):
-                    x[i] = x0[i]
-                    for c in range(m):
-                        x[i] -= hinv[i, c] * y[c]
-            else:
-                for i in range(n):
-                    x[i] = x0[i]
-            same = True
-            for j in range(lobes):
-                d = (b[j, s] + offc - x[ifol[j]] + gx[j, s] * x[ix[j]] + gy[j, s] * x[iy[j]]
-                     + gphi[j, s] * x[iphi[j]])
-                new_c = d > 0.0
-                new_s = offs - x[ival[j]] > 0.0
-                if new_c != act_c[j] or new_s != act_s[j]:
-                    same = False
-                act_c[j] = new_c
-                act_s[j] = new_s
-            if same:
-                break
-        for j in range(lobes):
-            w_new[j] = 0.0
-            d = (b[j, s] + offc - x[ifol[j]] + gx[j, s] * x[ix[j]] + gy[j, s] * x[iy[j]]
-                 + gphi[j, s] * x[iphi[j]])
-            if d > 0.0:
-                hq = (gx[j, s] * x[ix[j]] + gy[j, s] * x[iy[j]] + gphi[j, s] * x[iphi[j]]
-                      - x[ifol[j]])
-                hq0 = (gx[j, s] * q[ix[j]] + gy[j, s] * q[iy[j]] + gphi[j, s] * q[iphi[j]]
-                       - q[ifol[j]])
-                hv0 = (gx[j, s] * v[ix[j]] + gy[j, s] * v[iy[j]] + gphi[j, s] * v[iphi[j]]
-                       - v[ifol[j]])
-                w = kc * d + cc * (bd[j, s] + a1 * (hq - hq0) - hv0)
-                w_new[j] = w if w > 0.0 else 0.0
+                base[i] += (-tang_j[j] * sina[j] * ainv_basis[i, 5 * j]
+                            + tang_j[j] * cosa[j] * ainv_basis[i, 5 * j + 1]
+                            - fr_j[j] * arm_j[j] * ainv_basis[i, 5 * j + 2])
+        _woodbury(base, ainv_basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks,
+                  cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
         for i in range(n):
-            vn = a1 * (x[i] - q[i]) - v[i]
-            an = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
-            q[i] = x[i]
-            v[i] = vn
-            acc[i] = an
+            v1[i] = a1 * (x[i] - q[i]) - v[i]
+        changed = False
         for j in range(lobes):
-            w_prev[j] = w_new[j]
+            pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, bj[j], bdj[j], gxj[j], gyj[j],
+                                                     gphij[j], kc, cc, ks, cs, offc, offs, ix,
+                                                     iy, iphi, ifol, ival)
+            if (pc > 0.0) != act_c[j] or (ps > 0.0) != act_s[j]:
+                changed = True
+        if not changed:
+            for i in range(n):
+                acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
+                q[i] = x[i]
+                v[i] = v1[i]
+        else:
+            _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j)
+            tau = 0.0
+            switches = 0
+            while True:
+                h = dt - tau
+                if h <= 1e-12 * dt:
+                    break
+                _substep(h, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj,
+                         gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, x)
+                for i in range(n):
+                    v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
+                # which contact changes state first inside the (sub)step?
+                first, seat, alpha = -1, False, 2.0
+                for j in range(lobes):
+                    b0[j], bd0[j], g0x, g0y, g0p = _inputs(b, bd, gx, gy, gphi, j, s,
+                                                           tau / dt, dt)
+                    pc0, d0, dd0, ps0, ds0, dds0 = _indicators(
+                        q, v, j, b0[j], bd0[j], g0x, g0y, g0p, kc, cc, ks, cs, offc, offs, ix,
+                        iy, iphi, ifol, ival)
+                    pc1, d1, dd1, ps1, ds1, dds1 = _indicators(
+                        x, v1, j, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], kc, cc, ks, cs, offc,
+                        offs, ix, iy, iphi, ifol, ival)
+                    if (pc1 > 0.0) != act_c[j]:
+                        frac = _crossing(kc, cc, d0, dd0, d1, dd1, h)
+                        if frac < alpha:
+                            first, seat, alpha = j, False, frac
+                    if (ps1 > 0.0) != act_s[j]:
+                        frac = _crossing(ks, cs, ds0, dds0, ds1, dds1, h)
+                        if frac < alpha:
+                            first, seat, alpha = j, True, frac
+                if first < 0 or switches >= MAX_SWITCHES:
+                    if first >= 0:
+                        cut += 1
+                    for i in range(n):
+                        a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
+                        q[i] = x[i]
+                        v[i] = v1[i]
+                        acc[i] = a1v[i]
+                    break
+                # take the step up to the change, switch the contact, restart the acceleration
+                hs = alpha * h
+                frac_end = (tau + hs) / dt
+                for j in range(lobes):
+                    bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = _inputs(b, bd, gx, gy, gphi, j, s,
+                                                                      frac_end, dt)
+                if hs > 1e-12 * dt:
+                    _substep(hs, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
+                             gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
+                             ival, x)
+                    for i in range(n):
+                        v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
+                        q[i] = x[i]
+                tau += hs
+                if seat:
+                    act_s[first] = not act_s[first]
+                else:
+                    act_c[first] = not act_c[first]
+                _equilibrium(q, v, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj,
+                             gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc)
+                switches += 1
+                switches_total += 1
+                for j in range(lobes):
+                    bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = b[j, s], bd[j, s], gx[j, s], \
+                        gy[j, s], gphi[j, s]
+        # the loads at the step's end
+        for j in range(lobes):
+            w = 0.0
+            if act_c[j]:
+                d, dd = _cam_gap(q, v, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], offc, ix, iy,
+                                 iphi, ifol, j)
+                w = kc * d + cc * dd
+            w_prev[j] = w if w > 0.0 else 0.0
         if (s + 1) % substeps == 0:
             g = ((s + 1) // substeps) % grid
             for j in range(lobes):
-                out_load[j, g] = w_new[j]
+                out_load[j, g] = w_prev[j]
                 out_acc[j, g] = acc[valve_dof[j]]
+    return switches_total, cut

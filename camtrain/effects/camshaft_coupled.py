@@ -172,6 +172,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
 
     from camtrain.build.shaft import answer
     from camtrain.camshaft import lobe_force, shift_curve
+    from camtrain.dynamics import march
     from camtrain.dynamics.monolithic import march_coupled
     from camtrain.effects.shaft_output import add_shaft
     from camtrain.formulas import cam_torque
@@ -192,12 +193,28 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
             mu.append(shift_curve(coefficient, gammas[j]))
         return np.array(mu)
 
+    def friction_table(levels):
+        """Coefficient under each constant valve-referred load level, own angle frame."""
+        mu = []
+        for level in levels:
+            w = level * ratio
+            force = contact.solve(kin, w).force
+            mu.append(np.divide(force, w, out=np.zeros_like(w), where=w > 0))
+        return np.array(mu)
+
+    # a steady film depends on the angle and the load only: the march takes each contact's
+    # friction from its current load at every step; a film with a history lags a revolution
+    steady = contact.film_law == "steady"
     sub = run_setup.settings.substeps
+    # start from the single train's periodic state on a rigid shaft (fewer revolutions)
+    single = march(run_setup.model, run_setup.cam, run_setup.base, run_setup.settings)
     result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, axes,
-                           np.asarray(gammas), omega, substeps=sub, friction=friction,
+                           np.asarray(gammas), omega, substeps=sub,
+                           friction=None if steady else friction,
+                           friction_table=friction_table if steady else None,
                            friction_arm=kin.friction_arm, turn=turn,
                            cycles_max=run_setup.settings.cycles_max,
-                           period_tol=f.coupling_tolerance)
+                           period_tol=f.coupling_tolerance, start=single)
     forces, torques, loads = [], [], []
     for j, (g, w) in enumerate(zip(gammas, own_frame(result.loads), strict=True)):
         fr = contact.solve(kin, w).force
