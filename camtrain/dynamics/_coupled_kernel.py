@@ -73,18 +73,32 @@ def _psi(k, c, d, dd):
 
 
 @njit(cache=True)
-def _woodbury(x0, basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc,
-              offs, a1, ix, iy, iphi, ifol, ival, x):
-    """x = (A + sum_active kappa h h^T)^-1 (r - sum_active h f0): ``x0`` = A^-1 r, ``basis``
-    the columns of A^-1 at every lobe's five contact coordinates (x, y, phi, follower,
-    valve), the inputs of every lobe at the step's end (bj ...), a1 = 2 / step."""
+def _basis_rows(basis, ix, iy, iphi, ifol, ival):
+    """G = the rows of ``basis`` at every lobe's five contact coordinates (5 L x 5 L)."""
+    lobes = ix.size
+    G = np.empty((5 * lobes, 5 * lobes))
+    for j in range(lobes):
+        dofs = (ix[j], iy[j], iphi[j], ifol[j], ival[j])
+        for e in range(5):
+            for c in range(5 * lobes):
+                G[5 * j + e, c] = basis[dofs[e], c]
+    return G
+
+
+@njit(cache=True)
+def _woodbury(x0, basis, G, z, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs,
+              offc, offs, a1, ix, iy, iphi, ifol, ival, x):
+    """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
+    ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y, phi,
+    follower, valve), ``G`` its rows there (:func:`_basis_rows`), ``z`` forces on those
+    coordinates (friction; overwritten), the inputs of every lobe at the step's end (bj ...),
+    a1 = 2 / step. Every contact gradient h lies in its lobe's five coordinates, so the update
+    works on 5 L numbers and touches the full state once."""
     n = x0.size
     lobes = ix.size
     coef = np.zeros((2 * lobes, 5))
     lobe_of = np.zeros(2 * lobes, dtype=np.int64)
     kk = np.zeros(2 * lobes)
-    for i in range(n):
-        x[i] = x0[i]
     m = 0
     for j in range(lobes):
         if act_c[j]:
@@ -95,44 +109,50 @@ def _woodbury(x0, basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, k
             hq = gxj[j] * q[ix[j]] + gyj[j] * q[iy[j]] + gphij[j] * q[iphi[j]] - q[ifol[j]]
             hv = gxj[j] * v[ix[j]] + gyj[j] * v[iy[j]] + gphij[j] * v[iphi[j]] - v[ifol[j]]
             f0 = kc * (bj[j] + offc) + cc * (bdj[j] - a1 * hq - hv)
-            # f_c = -h (k delta + c delta'): its constant part, through A^-1 h
-            for i in range(n):
-                x[i] -= f0 * (coef[m, 0] * basis[i, 5 * j] + coef[m, 1] * basis[i, 5 * j + 1]
-                              + coef[m, 2] * basis[i, 5 * j + 2]
-                              + coef[m, 3] * basis[i, 5 * j + 3])
+            # f_c = -h (k delta + c delta'): its constant part
+            for e in range(4):
+                z[5 * j + e] -= f0 * coef[m, e]
             kk[m] = kc + a1 * cc
             lobe_of[m] = j
             m += 1
         if act_s[j]:
             coef[m, 4] = -1.0
-            f0 = ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
-            for i in range(n):
-                x[i] += f0 * basis[i, 5 * j + 4]
+            z[5 * j + 4] += ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
             kk[m] = ks + a1 * cs
             lobe_of[m] = j
             m += 1
-    if m == 0:
-        return
-    hinv = np.empty((n, m))
-    for c in range(m):
-        j = lobe_of[c]
-        for i in range(n):
-            acc_i = 0.0
+    if m > 0:
+        small = np.zeros((m, m))
+        rhs_small = np.empty(m)
+        for r in range(m):
+            jr = lobe_of[r]
+            small[r, r] = 1.0 / kk[r]
+            dofs = (ix[jr], iy[jr], iphi[jr], ifol[jr], ival[jr])
+            total = 0.0
             for e in range(5):
-                acc_i += coef[c, e] * basis[i, 5 * j + e]
-            hinv[i, c] = acc_i
-    small = np.zeros((m, m))
-    rhs_small = np.empty(m)
-    for r in range(m):
-        small[r, r] = 1.0 / kk[r]
-        jr = lobe_of[r]
+                ce = coef[r, e]
+                if ce == 0.0:
+                    continue
+                row = 5 * jr + e
+                acc_e = x0[dofs[e]]
+                for b in range(5 * lobes):
+                    acc_e += G[row, b] * z[b]
+                total += ce * acc_e
+                for c in range(m):
+                    jc = lobe_of[c]
+                    for f in range(5):
+                        small[r, c] += ce * G[row, 5 * jc + f] * coef[c, f]
+            rhs_small[r] = total
+        y = np.linalg.solve(small, rhs_small)
         for c in range(m):
-            small[r, c] += _gradient_dot(coef[r], hinv[:, c], ix, iy, iphi, ifol, ival, jr)
-        rhs_small[r] = _gradient_dot(coef[r], x, ix, iy, iphi, ifol, ival, jr)
-    y = np.linalg.solve(small, rhs_small)
+            jc = lobe_of[c]
+            for f in range(5):
+                z[5 * jc + f] -= coef[c, f] * y[c]
     for i in range(n):
-        for c in range(m):
-            x[i] -= hinv[i, c] * y[c]
+        total = x0[i]
+        for b in range(5 * lobes):
+            total += basis[i, b] * z[b]
+        x[i] = total
 
 
 @njit(cache=True)
@@ -184,16 +204,20 @@ def _substep(tau, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, g
             col = cols[c][0]
             for i in range(size):
                 basis[lo + i, col] = S[i, 1 + c]
-    _woodbury(x0, basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc,
-              offs, a1, ix, iy, iphi, ifol, ival, x)
+    z = np.zeros(5 * lobes)     # friction is in the right-hand side already
+    _woodbury(x0, basis, _basis_rows(basis, ix, iy, iphi, ifol, ival), z, act_c, act_s, bj,
+              bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc, offs, a1, ix, iy, iphi, ifol,
+              ival, x)
 
 
 @njit(cache=True)
-def _equilibrium(q, v, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj, gphij, kc,
+def _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj, gyj, gphij, kc,
                  cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc):
-    """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block."""
+    """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
+    block-diagonal inverse of M)."""
     n = q.size
     r = np.empty(n)
+    rb = np.empty(n)
     for i in range(n):
         r[i] = f0[i] + fric[i]
     for j in range(ix.size):
@@ -209,20 +233,16 @@ def _equilibrium(q, v, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gy
             r[ival[j]] += ks * (offs - q[ival[j]]) - cs * v[ival[j]]
     for k in range(blocks.size - 1):
         lo, hi = blocks[k], blocks[k + 1]
-        size = hi - lo
-        A = np.empty((size, size))
-        rb = np.empty(size)
-        for i in range(size):
-            gi = lo + i
-            s = r[gi]
-            for e in range(size):
-                ge = lo + e
-                A[i, e] = M[gi, ge]
-                s -= K[gi, ge] * q[ge] + C[gi, ge] * v[ge]
+        for i in range(lo, hi):
+            s = r[i]
+            for e in range(lo, hi):
+                s -= K[i, e] * q[e] + C[i, e] * v[e]
             rb[i] = s
-        sol = np.linalg.solve(A, rb)
-        for i in range(size):
-            acc[lo + i] = sol[i]
+        for i in range(lo, hi):
+            s = 0.0
+            for e in range(lo, hi):
+                s += Minv[i, e] * rb[e]
+            acc[i] = s
 
 
 @njit(cache=True)
@@ -282,10 +302,10 @@ def _coefficient(table, j, s, ln_first, ln_step, w):
 
 
 @njit(cache=True)
-def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, f0, b,
-               bd, gx, gy, gphi, fric_tab, ln_first, ln_step, arm, ratio, cosa, sina, turn, kc,
-               cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof, substeps, out_load,
-               out_acc):
+def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv,
+               f0, b, bd, gx, gy, gphi, fric_tab, ln_first, ln_step, arm, ratio, cosa, sina, turn,
+               kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof,
+               substeps, out_load, out_acc):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
     steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
     at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`,
@@ -317,6 +337,8 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     bd0 = np.empty(lobes)
     switches_total = 0
     cut = 0
+    G = _basis_rows(ainv_basis, ix, iy, iphi, ifol, ival)
+    zf = np.zeros(5 * lobes)
     for s in range(steps):
         # friction of every lobe from its last load (explicit): constant over the step
         for j in range(lobes):
@@ -338,13 +360,14 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 for e in range(lo, hi):
                     total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
                 base[i] = total
-        for j in range(lobes):
-            for i in range(n):
-                base[i] += (-tang_j[j] * sina[j] * ainv_basis[i, 5 * j]
-                            + tang_j[j] * cosa[j] * ainv_basis[i, 5 * j + 1]
-                            - fr_j[j] * arm_j[j] * ainv_basis[i, 5 * j + 2])
-        _woodbury(base, ainv_basis, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks,
-                  cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
+        for j in range(lobes):      # friction on the lobe's coordinates
+            zf[5 * j] = -tang_j[j] * sina[j]
+            zf[5 * j + 1] = tang_j[j] * cosa[j]
+            zf[5 * j + 2] = -fr_j[j] * arm_j[j]
+            zf[5 * j + 3] = 0.0
+            zf[5 * j + 4] = 0.0
+        _woodbury(base, ainv_basis, G, zf, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc,
+                  ks, cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
         for i in range(n):
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         changed = False
@@ -367,10 +390,12 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 h = dt - tau
                 if h <= 1e-12 * dt:
                     break
-                _substep(h, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj,
-                         gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, x)
-                for i in range(n):
-                    v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
+                if switches > 0:   # the full step with the start's states is x, v1 already
+                    _substep(h, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
+                             gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
+                             ival, x)
+                    for i in range(n):
+                        v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
                 # which contact changes state first inside the (sub)step?
                 first, seat, alpha = -1, False, 2.0
                 for j in range(lobes):
@@ -417,7 +442,7 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                     act_s[first] = not act_s[first]
                 else:
                     act_c[first] = not act_c[first]
-                _equilibrium(q, v, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj,
+                _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj, gyj,
                              gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc)
                 switches += 1
                 switches_total += 1

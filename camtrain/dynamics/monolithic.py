@@ -170,6 +170,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     # the linear part is block diagonal: both bending planes, the twist, each train
     blocks = np.array([0, nb, 2 * nb, tr0] + [tr0 + (j + 1) * nt for j in range(n_lobes)],
                       dtype=np.int64)
+    Minv = np.linalg.inv(M)      # block diagonal as M (the acceleration after a switch)
     # A^-1 of every basis vector a contact gradient is made of: (x, y, phi, follower, valve)
     ainv_basis = np.empty((n, 5 * n_lobes))
     for j in range(n_lobes):
@@ -218,7 +219,8 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
         switches, cut = revolution(
-            q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, f0, lift,
+            q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv, f0,
+            lift,
             d1 * omega, gx, gy, d1, mu, ln_first, ln_step, arm, r, cosa, sina, float(turn), kc,
             cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof, int(substeps), loads,
             valve_acc)

@@ -105,6 +105,9 @@ def run(deck, inputs, res):
                  + out.deflection_y * np.sin(axes)[:, None])
         return along, out.twist
 
+    if f.coupling_solver == "monolithic":
+        return _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
+                           contact, omega, theta)
     n = len(lobes)
     start = np.array([shift_curve(np.maximum(single, 0.0), g) for g in gammas])
     along0, twist0 = motion(solve_shaft(start))
@@ -117,9 +120,6 @@ def run(deck, inputs, res):
         along, twist = motion(solve_shaft(loads))
         return np.vstack([along / scale[0], twist / scale[1]])
 
-    if f.coupling_solver == "monolithic":
-        return _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
-                           contact, omega, theta)
     state = staggered(one_pass, np.vstack([along0 / scale[0], twist0 / scale[1]]),
                       tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
                       relaxation=f.relaxation, method=f.coupling_method)
