@@ -66,6 +66,13 @@ class Knob:
     setter: Callable[[dict, object], dict] | None = None
     #: time a rung's second run (caches warm): for knobs whose first run builds a table
     warm: bool = False
+    #: a deck-specific ladder (None: ``ladder``), e.g. a cheaper one where a rung is costly
+    ladder_for: Callable[[dict], tuple | None] | None = None
+
+    def ladder_of(self, raw: dict) -> tuple:
+        """The ladder this knob climbs on the deck ``raw``."""
+        special = self.ladder_for(raw) if self.ladder_for is not None else None
+        return tuple(special) if special else self.ladder
 
 
 def _valve_train(raw: dict) -> bool:
@@ -98,6 +105,21 @@ def _iterates(raw: dict) -> bool:
 
 def _elastic_camshaft(raw: dict) -> bool:
     return "flexibility" in raw.get("camshaft", {})
+
+
+def _coupled_camshaft(raw: dict) -> bool:
+    """Every lobe's elastic train on the elastic shaft (two-way coupling)."""
+    return raw.get("camshaft", {}).get("flexibility", {}).get("coupling") == "two_way"
+
+
+#: ladders of the coupled camshaft (one rung marches every lobe's train with the shaft; 8
+#: stations per span cost twelve times the default, 2 steps per degree leave the contact
+#: ringing unresolved)
+COUPLED_LADDERS = {"shaft_stations": (0, 1, 2, 4), "steps_per_degree": (6.0, 12.0, 24.0, 48.0)}
+
+
+def _coupled_ladder(name: str) -> Callable[[dict], tuple | None]:
+    return lambda raw: COUPLED_LADDERS[name] if _coupled_camshaft(raw) else None
 
 
 def _smoothing_spline(raw: dict) -> bool:
@@ -199,7 +221,7 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("shaft_stations", "camshaft.flexibility.nodes_per_span", (0, 1, 2, 4, 8),
          lambda v: 1.0 / (v + 1), _elastic_camshaft,
          "extra stations per span of the elastic camshaft (element length / (n + 1))",
-         integer=True),
+         integer=True, ladder_for=_coupled_ladder("shaft_stations")),
     Knob("bearing_mesh", "solver.n_theta | camshaft.bearing_n_theta (n_z = n_theta / 12)",
          (36, 72, 144, 288), lambda v: 1.0 / v, lambda raw: _bearing_section(raw) is not None,
          "finite journal-bearing film mesh, model = finite (time: the orbit with the map "
@@ -250,7 +272,8 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          "iteration and cyclic tolerance of the inter-ring gas march"),
     Knob("steps_per_degree", "dynamics.steps_per_degree", (2.0, 4.0, 8.0, 16.0, 32.0, 64.0),
          lambda v: 1.0 / v, lambda raw: _dynamics(raw) and not _adaptive(raw),
-         "time steps per degree of cam of the valve-train dynamics"),
+         "time steps per degree of cam of the valve-train dynamics",
+         ladder_for=_coupled_ladder("steps_per_degree")),
     Knob("spring_elements", "dynamics.spring_elements", (4, 8, 16, 32), lambda v: 1.0 / v,
          _spring_chain, "elements of the valve-spring chain (surge)", integer=True),
     Knob("dynamics_rtol", "dynamics.rtol", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9), lambda v: v,
@@ -407,7 +430,7 @@ def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat:
                metrics: Sequence[str] = KEY_METRICS) -> dict:
     """Run the ladder of one knob and analyse every key metric it produced."""
     knob = KNOBS[name]
-    values = tuple(ladder or knob.ladder)
+    values = tuple(ladder or knob.ladder_of(raw))
     values = tuple(int(v) for v in values) if knob.integer else values
     setter = knob.setter or (lambda r, v: set_path(r, knob.path, v))
     runs = max(repeat, 2) if knob.warm else repeat

@@ -83,6 +83,19 @@ def test_knobs_follow_the_deck():
         acc.check_knobs(flat, ["nope"])
 
 
+def test_coupled_camshaft_climbs_its_cheaper_ladders():
+    """Every rung of the two-way coupled camshaft marches all its trains with the shaft: its
+    station and step ladders stop where a rung would cost minutes; the one-way shaft and the
+    single train keep the full ladders."""
+    one_way = {"dynamics": {}, "camshaft": {"flexibility": {"coupling": "one_way"}}}
+    coupled = {"dynamics": {}, "camshaft": {"flexibility": {"coupling": "two_way"}}}
+    stations, steps = acc.KNOBS["shaft_stations"], acc.KNOBS["steps_per_degree"]
+    assert stations.ladder_of(one_way) == stations.ladder
+    assert steps.ladder_of({"dynamics": {}}) == steps.ladder
+    assert stations.ladder_of(coupled) == (0, 1, 2, 4)
+    assert steps.ladder_of(coupled) == (6.0, 12.0, 24.0, 48.0)
+
+
 def test_set_path_copies_and_creates_tables():
     raw = {"solver": {"angle_points": 720}}
     out = acc.set_path(raw, "lift.table.smoothing", 0.5)
