@@ -82,8 +82,9 @@ def test_coupled_outputs_per_lobe(stiff):
 @pytest.mark.derived
 def test_monolithic_and_staggered_agree_on_an_elastic_shaft():
     """x10 the assumed shaft (lobes move about 0.7 um): both solvers reach a periodic state and
-    every lobe's peak load agrees within 1 %. (The load curves differ by up to 4 % of the peak
-    at the separation impacts, and that difference does not fall with the step:
+    every lobe's peak load agrees within 1 %. (The load curves differ by 6-17 % of the peak in
+    the bounce after each separation, where the staggered solution's 1-degree exchange of loads
+    and motion cannot carry the ringing the monolithic march resolves:
     docs/camshaft_dynamics.md.)"""
     runs = {solver: api.run(validate(coupled_raw(10.0, solver=solver), solver, DECKS))
             for solver in ("monolithic", "staggered")}
