@@ -244,7 +244,9 @@ def _warm_start(start, cam, theta_grid, phases, ratio, axes, shaft, train, M, K,
                 b0, bd0, gx0, gy0, gphi0, drag=None):
     """State at the march's first angle from the single train's periodic response (see
     :func:`march_coupled`): each train at its lobe's angle, the shaft at its periodic answer
-    to the trains' contact forces and torques (friction left out), the contact states from
+    to the trains' contact forces and torques (with their friction when ``drag`` = (coefficient
+    table (levels, grid) in the lobe's frame, load levels, friction arm on the grid, turn) is
+    given), the follower (and an open valve) moved with the lobe, the contact states from
     their indicators and the acceleration from the equilibrium."""
     from .train import CAM
 
@@ -280,8 +282,8 @@ def _warm_start(start, cam, theta_grid, phases, ratio, axes, shaft, train, M, K,
         i = np.minimum(x.astype(int), levels.size - 2)
         t = x - i
         for j in range(n_lobes):
-            at = np.interp(local[j], theta_grid, np.arange(theta_grid.size), period=period)
-            col = np.rint(at).astype(int) % theta_grid.size
+            step = period / theta_grid.size          # the run's uniform grid
+            col = np.rint((local[j] - theta_grid[0]) / step).astype(int) % theta_grid.size
             mu = (1.0 - t[j]) * table[i[j], col] + t[j] * table[i[j] + 1, col]
             fr = mu * rr[j] * w[j]
             tang = -turn * fr * np.where(arm[j] >= 0.0, 1.0, -1.0)
