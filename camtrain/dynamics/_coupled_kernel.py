@@ -303,13 +303,13 @@ def _coefficient(table, j, s, ln_first, ln_step, w):
 
 @njit(cache=True)
 def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv,
-               f0, b, bd, gx, gy, gphi, fric_tab, ln_first, ln_step, arm, ratio, cosa, sina, turn,
-               kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof,
-               substeps, out_load, out_acc):
+               f0, b, bd, gx, gy, gphi, fric_tab, fric_corr, ln_first, ln_step, arm, ratio, cosa,
+               sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
+               valve_dof, substeps, out_load, out_acc):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
     steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
-    at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`,
-    times the last step's load. State arrays (q, v, acc, the contact
+    at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`
+    plus ``fric_corr`` (n_lobes, steps), times the last step's load. State arrays (q, v, acc, the contact
     states act_c/act_s, the last loads w_prev) are updated in place. ``P`` = A^-1 M and
     ``Q`` = A^-1 C are block diagonal (shaft planes, twist, each train): ``blocks`` holds the
     block boundaries, so only the diagonal blocks are multiplied. Returns the contact changes
@@ -342,7 +342,7 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     for s in range(steps):
         # friction of every lobe from its last load (explicit): constant over the step
         for j in range(lobes):
-            mu = _coefficient(fric_tab, j, s, ln_first, ln_step, w_prev[j])
+            mu = _coefficient(fric_tab, j, s, ln_first, ln_step, w_prev[j]) + fric_corr[j, s]
             fr_j[j] = mu * ratio[j, s] * w_prev[j]
             sgn = 1.0 if arm[j, s] >= 0 else -1.0
             tang_j[j] = -turn * fr_j[j] * sgn

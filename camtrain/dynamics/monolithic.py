@@ -66,6 +66,23 @@ def _periodic(values, theta_grid):
 FRICTION_LEVELS = np.geomspace(0.1, 1.0e5, 49)
 
 
+def _table_at(table, levels, w, cols):
+    """The tabulated coefficient (``table`` (levels, grid)) at loads ``w`` and grid columns
+    ``cols`` (same shape), linear in ln W as the kernel reads it, held beyond the levels."""
+    x = np.clip(np.log(np.maximum(w, levels[0]) / levels[0]) / math.log(levels[1] / levels[0]),
+                0.0, levels.size - 1.0)
+    i = np.minimum(x.astype(int), levels.size - 2)
+    t = x - i
+    return (1.0 - t) * table[i, cols] + t * table[i + 1, cols]
+
+
+def _own_columns(theta_grid, phases):
+    """Grid column, in each lobe's own angle frame, of every grid angle of the shaft."""
+    step = 2.0 * math.pi / theta_grid.size
+    local = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
+    return np.rint((local - theta_grid[0]) / step).astype(int) % theta_grid.size
+
+
 def _periodic_start(K, M, C, forces, omega, orders: int = 100):
     """Displacement and velocity at the first grid angle of the linear system's periodic
     response to ``forces`` (n_dof, grid) (harmonic balance, orders up to ``orders``: the
@@ -104,10 +121,14 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             kinematics and load). The march takes each contact's coefficient from its current
             load at every step (linear in ln W between the levels of
             :data:`FRICTION_LEVELS`).
-        friction: for a film with a history (transient film laws), instead: callable(loads
-            (n_lobes, n) in the shaft's frame) -> friction coefficient (n_lobes, n) on the
-            previous revolution's loads (consistent at the periodic state). Neither: no
-            friction.
+        friction: callable(loads (n_lobes, n) in the shaft's frame) -> the contact model's
+            friction coefficient (n_lobes, n) under those loads. With ``friction_table`` it
+            corrects the table after every revolution by the table's error at that
+            revolution's loads (the interpolation between levels errs most at a kink of the
+            law, e.g. where the boundary cap takes over), so that the coefficient is the
+            contact model's own at the periodic state; alone (a film with a history, which no
+            table holds) it gives the coefficient on the previous revolution's loads. Neither:
+            no friction.
         friction_arm: the friction force's arm about the cam axis on the grid [m] (signed).
         turn: +1 anticlockwise shaft rotation, -1 clockwise.
         start: the single train's periodic response on a rigid shaft
@@ -194,6 +215,8 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                                  for row in grid_mu]) for j in range(n_lobes)])
     else:
         mu = np.zeros((n_lobes, 1, steps))
+    # the table's error at the last revolution's loads, when the exact law is also given
+    corr = np.zeros((n_lobes, steps))
     q, v, acc = np.zeros(n), np.zeros(n), np.zeros(n)  # at rest: the start-up transient decays
     act_c = np.zeros(n_lobes, dtype=bool)
     act_s = np.ones(n_lobes, dtype=bool)
@@ -207,7 +230,8 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             dict(ix=ix, iy=iy, iphi=iphi, ifol=ifol, ival=ival, nb=nb, t0=t0, tr0=tr0),
             lift[:, -1], d1[:, -1] * omega, gx[:, -1], gy[:, -1], d1[:, -1], drag)
     w_prev = np.zeros(n_lobes)
-    if start is not None and friction is not None:   # the coefficient on the start's loads
+    if start is not None and friction is not None and friction_table is None:
+        # the lagged coefficient on the start's loads
         at = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
         grid_mu = friction(np.interp(at, start.theta, np.maximum(start.contact_force[CAM], 0.0),
                                      period=2.0 * math.pi))
@@ -221,10 +245,17 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         switches, cut = revolution(
             q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv, f0,
             lift,
-            d1 * omega, gx, gy, d1, mu, ln_first, ln_step, arm, r, cosa, sina, float(turn), kc,
+            d1 * omega, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina, float(turn), kc,
             cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof, int(substeps), loads,
             valve_acc)
-        if friction is not None:  # the coefficient on this revolution's loads, for the next
+        if friction is not None and friction_table is not None:
+            # correct the table by its error at this revolution's loads: the coefficient is
+            # the contact model's own at the periodic state, and follows the load in between
+            exact = friction(loads)
+            tabled = _table_at(grid_mu, FRICTION_LEVELS, loads, _own_columns(theta_grid, phases))
+            error = np.where(loads > 0.0, exact - tabled, 0.0)
+            corr = np.array([_periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
+        elif friction is not None:  # the coefficient on this revolution's loads, for the next
             grid_mu = friction(loads)
             mu = np.array([_periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
             mu = mu[:, None, :]
@@ -277,15 +308,9 @@ def _warm_start(start, cam, theta_grid, phases, ratio, axes, shaft, train, M, K,
     if drag is not None:     # friction: the tangential force and the torque mu W r
         table, levels, arm_grid, turn = drag
         arm = np.interp(local, theta_grid, arm_grid, period=period)
-        x = np.clip(np.log(np.maximum(w, levels[0]) / levels[0])
-                    / math.log(levels[1] / levels[0]), 0.0, levels.size - 1.0)
-        i = np.minimum(x.astype(int), levels.size - 2)
-        t = x - i
+        mu_all = _table_at(table, levels, w, _own_columns(theta_grid, phases))
         for j in range(n_lobes):
-            step = period / theta_grid.size          # the run's uniform grid
-            col = np.rint((local[j] - theta_grid[0]) / step).astype(int) % theta_grid.size
-            mu = (1.0 - t[j]) * table[i[j], col] + t[j] * table[i[j] + 1, col]
-            fr = mu * rr[j] * w[j]
+            fr = mu_all[j] * rr[j] * w[j]
             tang = -turn * fr * np.where(arm[j] >= 0.0, 1.0, -1.0)
             fb[idx["ix"][j]] -= tang * math.sin(axes[j])
             fb[idx["iy"][j]] += tang * math.cos(axes[j])

@@ -210,7 +210,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     single = march(run_setup.model, run_setup.cam, run_setup.base, run_setup.settings)
     result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, axes,
                            np.asarray(gammas), omega, substeps=sub,
-                           friction=None if steady else friction,
+                           friction=friction,
                            friction_table=friction_table if steady else None,
                            friction_arm=kin.friction_arm, turn=turn,
                            cycles_max=run_setup.settings.cycles_max,
