@@ -125,6 +125,8 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
         counts = ", ".join(f"{outcome.count(s)} {s}" for s in ("ok", "lost_contact", "failed",
                                                               "error") if outcome.count(s))
         reused = f" ({outcome.reused} reused)" if outcome.reused else ""
+        if outcome.route is not None:
+            click.echo(outcome.route.describe())
         click.echo(f"{len(outcome.records)} cases{reused}: {counts}. Wrote {out_dir}/sweep.csv, "
                    f"trends.md"
                    + (", flame.md" if any(p.name == "flame.md" for p in outcome.written) else "")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from camtrain.contact._points import at
 from camtrain.contact.hertz import is_line
 from camtrain.contact.products import FilmField
 from camtrain.formulas import film_thickness, film_thicknesses
@@ -54,12 +55,12 @@ def steady_film(contact, kin, load=None) -> FilmField:
     if load is not None:
         ok &= np.asarray(load) > 0.0
     m_min, m_cen = methods(contact.tribology, kin, load is not None)
-    common = dict(u=u[ok], eta0=lub.viscosity, alpha=lub.pressure_viscosity,
-                  E_r=contact.reduced_modulus)
+    common = dict(u=u[ok], eta0=at(lub.viscosity, ok), alpha=at(lub.pressure_viscosity, ok),
+                  E_r=at(contact.reduced_modulus, ok))
     if load is None:
         inputs = dict(common, R=R[ok])
     elif line:
-        inputs = dict(common, w=np.asarray(load)[ok] / contact.width, R=R[ok])
+        inputs = dict(common, w=np.asarray(load)[ok] / at(contact.width, ok), R=R[ok])
     else:
         inputs = dict(common, W=np.asarray(load)[ok], Rx=R[ok], Ry=Ry[ok], R_e=R[ok],
                       R_s=Ry[ok])

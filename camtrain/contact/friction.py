@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from camtrain.contact._points import at
 from camtrain.contact.products import HertzField
 from camtrain.formulas import (
     ball_1988_friction,
@@ -28,12 +29,12 @@ def ball_yang_friction(contact, kin, load, hz: HertzField, h, use) -> np.ndarray
     """Ball's viscous shear with the boundary limit (``tribology.friction_model``: cap, lambda,
     lambda_cap) on the angles ``use``: line contact Ball eqs. 4.4-4.7, ellipse Yang eq. 3.24."""
     lub, trib = contact.lubricant, contact.tribology
-    common = dict(u_s=np.abs(kin.sliding[use]), h=h[use], eta0=lub.viscosity,
-                  alpha=lub.pressure_viscosity, p_max=hz.pmax[use], W=load[use],
-                  mu=trib.boundary_friction, model=trib.friction_model,
-                  sigma=lub.roughness, viscosity_law=trib.viscosity_law)
+    common = dict(u_s=np.abs(kin.sliding[use]), h=h[use], eta0=at(lub.viscosity, use),
+                  alpha=at(lub.pressure_viscosity, use), p_max=hz.pmax[use], W=load[use],
+                  mu=at(trib.boundary_friction, use), model=trib.friction_model,
+                  sigma=at(lub.roughness, use), viscosity_law=trib.viscosity_law)
     if hz.line:
-        return ball_1988_friction(b=hz.half_width[use], L=contact.width, **common)
+        return ball_1988_friction(b=hz.half_width[use], L=at(contact.width, use), **common)
     return yang_1992_friction(a_x=hz.half_width[use], a_y=hz.half_length[use], **common)
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from camtrain.contact._points import at
 from camtrain.contact.products import HertzField
 from camtrain.formulas import hertz_line, hertz_point, hertz_point_max_pressure
 from camtrain.formulas.hertz import ellipticity_exact
@@ -57,15 +58,15 @@ def hertz_field(contact, kin, load) -> HertzField:
     pmax, bx, by = np.zeros(load.shape), np.zeros(load.shape), np.zeros(load.shape)
     if use.any():
         if line:
-            h = hertz_line(load[use], R[use], E_r, L=width)
+            h = hertz_line(load[use], R[use], at(E_r, use), L=at(width, use))
             pmax[use], bx[use] = h.max_pressure, h.half_width
-            by[use] = 0.5 * width
+            by[use] = 0.5 * at(width, use)
         else:
-            h = hertz_point(load[use], R[use], Ry[use], E_r,
+            h = hertz_point(load[use], R[use], Ry[use], at(E_r, use),
                             ellipticity=major_ellipticity(kin)[use])
             bx[use], by[use], pmax[use] = h.a_x, h.a_y, h.max_pressure
             if contact.tribology.hertz == "ball_1988":
-                pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], E_r,
+                pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], at(E_r, use),
                                                      method="ball_1988")
     bad = ~good_r & loaded
     if bad.any():

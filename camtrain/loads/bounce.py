@@ -14,7 +14,7 @@ import numpy as np
 
 from camtrain.loads.forces import contact_mask, load_parts
 
-__all__ = ["Bounce", "loss_of_contact", "bounce_speed"]
+__all__ = ["Bounce", "loss_of_contact", "bounce_speed", "bounce_speeds"]
 
 
 @dataclass(frozen=True)
@@ -30,6 +30,28 @@ def loss_of_contact(load, in_contact) -> np.ndarray:
     return np.asarray(in_contact, dtype=bool) & (np.asarray(load, dtype=float) <= 0.0)
 
 
+def bounce_speeds(kin, mu=0.0, *, rate, preload_compression, valve_mass, body_inertia=None,
+                  progressive: tuple[float, ...] = (), clearance: float = 0.0,
+                  parts=None) -> np.ndarray:
+    """Per angle, the camshaft speed [rad/s] above which the load there is W <= 0, sqrt(-a/b);
+    inf where the spring holds the train at any speed. Shape-agnostic: the spring and mass data
+    may be arrays that broadcast against the kinematics (a batch of sweep cases). ``parts``:
+    (G0, G2) of :func:`~camtrain.loads.forces.load_parts` when already formed."""
+    g0, g2 = parts if parts is not None else load_parts(
+        kin, rate=rate, preload_compression=preload_compression, valve_mass=valve_mass,
+        body_inertia=body_inertia, progressive=progressive)
+    denom = kin.arm_normal + np.asarray(mu, dtype=float) * kin.arm_friction
+    ok = contact_mask(kin.valve_lift, clearance) & (denom > 0.0)
+    safe = np.where(ok, denom, 1.0)
+    a, b = g0 / safe, g2 / safe
+    limited = ok & (a > 0.0) & (b < 0.0)
+    speeds = np.full(np.broadcast_shapes(a.shape, b.shape, limited.shape), np.inf)
+    a, b = np.broadcast_to(a, speeds.shape), np.broadcast_to(b, speeds.shape)
+    limited = np.broadcast_to(limited, speeds.shape)
+    speeds[limited] = np.sqrt(a[limited] / -b[limited])
+    return speeds
+
+
 def bounce_speed(kin, mu=0.0, *, rate: float, preload_compression: float, valve_mass: float,
                  body_inertia=None, progressive: tuple[float, ...] = (),
                  clearance: float = 0.0, parts=None) -> Bounce:
@@ -39,17 +61,10 @@ def bounce_speed(kin, mu=0.0, *, rate: float, preload_compression: float, valve_
     not a speed limit. ``mu`` (fixed) enters the denominator only for followers with a friction arm.
     ``parts``: (G0, G2) of :func:`~camtrain.loads.forces.load_parts` when already formed.
     """
-    g0, g2 = parts if parts is not None else load_parts(
-        kin, rate=rate, preload_compression=preload_compression, valve_mass=valve_mass,
-        body_inertia=body_inertia, progressive=progressive)
-    denom = kin.arm_normal + np.asarray(mu, dtype=float) * kin.arm_friction
-    ok = contact_mask(kin.valve_lift, clearance) & (denom > 0.0)
-    safe = np.where(ok, denom, 1.0)
-    a, b = g0 / safe, g2 / safe
-    limited = ok & (a > 0.0) & (b < 0.0)
-    if not np.any(limited):
-        return Bounce(np.inf, None)
-    speeds = np.full(a.shape, np.inf)
-    speeds[limited] = np.sqrt(a[limited] / -b[limited])
+    speeds = bounce_speeds(kin, mu, rate=rate, preload_compression=preload_compression,
+                           valve_mass=valve_mass, body_inertia=body_inertia,
+                           progressive=progressive, clearance=clearance, parts=parts)
     i = int(np.argmin(speeds))
-    return Bounce(float(speeds[i]), float(kin.theta[i]))
+    if not np.isfinite(speeds.flat[i]):
+        return Bounce(np.inf, None)
+    return Bounce(float(speeds.flat[i]), float(kin.theta[i]))

@@ -11,6 +11,7 @@ built and validated from the raw deck as before.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 from pathlib import Path
 
@@ -75,10 +76,7 @@ def _si(param: Parameter, value: float):
 
 def _replaced(obj, keys: list[str], value, prefix: str, name: str):
     """``obj`` with the field at ``keys`` set to ``value``; each rebuilt section re-checked."""
-    from camtrain.deck.fields import deck_key, section_fields
-
-    fields = {deck_key(f): f for f, _, _ in section_fields(type(obj))}
-    field = fields[keys[0]]
+    field = _fields_of(type(obj))[keys[0]]
     path = f"{prefix}.{keys[0]}" if prefix else keys[0]
     if len(keys) > 1:
         child = getattr(obj, field.name)
@@ -92,6 +90,14 @@ def _replaced(obj, keys: list[str], value, prefix: str, name: str):
         if problems:
             raise InputError(problems, source=name)
     return new
+
+
+@functools.cache
+def _fields_of(cls) -> dict:
+    """A section's dataclass fields by deck key (the schema is fixed: looked up once)."""
+    from camtrain.deck.fields import deck_key, section_fields
+
+    return {deck_key(f): f for f, _, _ in section_fields(cls)}
 
 
 class _Absent(Exception):

@@ -81,6 +81,7 @@ class SerialExecutor:
     """Runs cases one after another in this process (``--jobs 1``)."""
 
     description = "serial"
+    jobs = 1
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
         for job in jobs:

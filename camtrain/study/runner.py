@@ -43,6 +43,8 @@ class Outcome:
     written: list[Path] = field(default_factory=list)
     reused: int = 0
     trends: list = field(default_factory=list)
+    #: how the cases ran (:class:`camtrain.study.batch.Route`; None when none had to run)
+    route: object = None
 
     def count(self, status: str) -> int:
         return sum(r["status"] == status for r in self.records)
@@ -147,9 +149,16 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         for stale in (out_dir / "curves").glob("case_*.csv"):
             stale.unlink()
     reused = len(done)
-    atomic_write(out_dir / "sweep.json", json.dumps(_manifest(sweep), indent=2) + "\n")
-    decks = write_case_decks(out_dir, sweep) if write_decks else []
     todo = [c for c in sweep.cases if c.index not in done]
+    from camtrain.study.batch import route as batch_route
+    from camtrain.study.case_model import datum_key
+
+    key = datum_key(sweep.raw, sweep.name, sweep.base_dir)
+    route = batch_route(sweep.raw, sweep.params, sweep.name, sweep.base_dir, key) if todo \
+        else None
+    manifest = _manifest(sweep) | ({"route": route.as_dict()} if route else {})
+    atomic_write(out_dir / "sweep.json", json.dumps(manifest, indent=2) + "\n")
+    decks = write_case_decks(out_dir, sweep) if write_decks else []
     total = len(sweep.cases)
     if progress:
         for rec in sorted(done.values(), key=lambda r: r["index"]):
@@ -158,28 +167,23 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     if own:
         jobs = min(jobs, len(todo)) if jobs else jobs
         executor = make_executor(jobs, scheduler)
-    from camtrain.study.case_model import datum_key
-
-    key = datum_key(sweep.raw, sweep.name, sweep.base_dir)
-    jobs_list = [Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
-                     c.index in keep, key) for c in todo]
+    work, fn = _work(sweep, todo, keep, key, route, getattr(executor, "jobs", None))
     last, cost = time.monotonic(), 0.0
     try:
-        if todo:
-            for rec in executor.map(run_case, jobs_list):
-                rec = so.in_units(rec, sweep.units)
-                so.write_curves(out_dir, rec)
-                rec["curves"] = None  # on disk now; keeps memory flat for long sweeps
-                done[rec["index"]] = rec
-                if progress:
-                    progress(rec, len(done), total)
-                # at most once a second, and never more than a tenth of the time: the table
-                # grows with the sweep, so a fast sweep would otherwise spend its time here
-                if time.monotonic() - last > max(1.0, 10.0 * cost):
-                    tick = time.monotonic()
-                    so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
-                    last = time.monotonic()
-                    cost = last - tick
+        for rec in _records(executor, fn, work, route):
+            rec = so.in_units(rec, sweep.units)
+            so.write_curves(out_dir, rec)
+            rec["curves"] = None  # on disk now; keeps memory flat for long sweeps
+            done[rec["index"]] = rec
+            if progress:
+                progress(rec, len(done), total)
+            # at most once a second, and never more than a tenth of the time: the table
+            # grows with the sweep, so a fast sweep would otherwise spend its time here
+            if time.monotonic() - last > max(1.0, 10.0 * cost):
+                tick = time.monotonic()
+                so.write_csv(csv_path, sweep.params, list(done.values()), sweep.units)
+                last = time.monotonic()
+                cost = last - tick
     except BaseException:
         # interrupted (Ctrl-C, SIGTERM) or failed: the workers stop now, not after their chunks
         if own:
@@ -191,7 +195,7 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         if own:
             executor.close()
     records = sorted(done.values(), key=lambda r: r["index"])
-    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused)
+    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused, route=route)
     outcome.written += _write_trends(out_dir, sweep, outcome)
     from camtrain.study.flame_table import write_flame
 
@@ -203,6 +207,38 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         outcome.written += so.overlay_plots(out_dir, sweep.params, kept,
                                             title=Path(sweep.name).name)
     return outcome
+
+
+def _records(executor, fn, work: list, route):
+    """Case records as the executor returns them (a batch chunk gives a list of records)."""
+    if not work:
+        return
+    for out in executor.map(fn, work):
+        if route.batch:
+            yield from out
+        else:
+            yield out
+
+
+def _work(sweep: Sweep, todo: list[Case], keep: set[int], key: str, route, jobs: int | None):
+    """What the executor maps: one Job per case, or chunks of cases as BatchJobs (about eight
+    per process, so the workers share them out as they start; each chunk runs in sub-batches
+    sized for memory)."""
+    if route is None or not route.batch:
+        return [Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
+                    c.index in keep, key) for c in todo], run_case
+    from camtrain.study.batch import BatchJob, run_batch
+
+    procs = max(1, jobs or 1)
+    size = max(1, min(_BATCH_CHUNK, -(-len(todo) // (8 * procs)))) if procs > 1 else _BATCH_CHUNK
+    chunks = [tuple(todo[i:i + size]) for i in range(0, len(todo), size)]
+    return [BatchJob(sweep.raw, tuple(sweep.params), chunk, sweep.name, sweep.base_dir,
+                     frozenset(c.index for c in chunk if c.index in keep), key)
+            for chunk in chunks], run_batch
+
+
+#: cases per batch chunk when one process runs them (sweep.csv is rewritten between chunks)
+_BATCH_CHUNK = 250
 
 
 def write_case_decks(out_dir: Path, sweep: Sweep) -> list[Path]:

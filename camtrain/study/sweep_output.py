@@ -8,6 +8,7 @@ resumed sweep reproduces the table exactly.
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import math
 import re
@@ -33,14 +34,19 @@ def in_units(record: dict, units: str = "deck") -> dict:
     (read back from sweep.csv) is unchanged."""
     metrics = {}
     for n, (value, unit) in record["metrics"].items():
-        out, factor = output_unit(n, unit, units)
+        out, factor = _unit(n, unit, units)
         metrics[n] = (value * factor, out)
     curves = record.get("curves")
     if curves:
-        curves = {n: (output_unit(n, unit, units)[0],
-                      [v * output_unit(n, unit, units)[1] for v in values])
+        curves = {n: (_unit(n, unit, units)[0], [v * _unit(n, unit, units)[1] for v in values])
                   for n, (unit, values) in curves.items()}
     return {**record, "metrics": metrics, "curves": curves}
+
+
+@functools.lru_cache(maxsize=4096)
+def _unit(name: str, unit: str, units: str) -> tuple[str, float]:
+    """:func:`output_unit`, looked up once per metric of a sweep (thousands of records)."""
+    return output_unit(name, unit, units)
 
 
 def shown(name: str, value: float, unit: str) -> tuple[float, str]:
