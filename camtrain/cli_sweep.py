@@ -188,13 +188,21 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
 
     columns = (TextColumn("sweep"), BarColumn(), MofNCompleteColumn(), TextColumn("{task.fields[bad]}"),
                TimeRemainingColumn())
-    with Progress(*columns, console=Console(stderr=True), transient=False) as bar:
+    # refreshed from the callback, not by a thread of its own: with no other thread running,
+    # --jobs workers can be forked (they start at once) instead of spawned
+    with Progress(*columns, console=Console(stderr=True), transient=False,
+                  auto_refresh=False) as bar:
         task = bar.add_task("sweep", total=len(sweep_def.cases), bad="")
-        failed = [0]
+        failed, shown = [0], [0.0]
 
         def progress(record, done, total):
+            import time
+
             failed[0] += record["status"] != "ok"
             bar.update(task, completed=done, bad=f"{failed[0]} not ok" if failed[0] else "")
+            if time.monotonic() - shown[0] > 0.1 or done == total:
+                bar.refresh()
+                shown[0] = time.monotonic()
 
         outcome = run_sweep(sweep_def, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
                             plots=not no_plots, overlay_max=overlay_max, progress=progress,

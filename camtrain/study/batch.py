@@ -19,6 +19,7 @@ message and curves are exactly a single run's.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from camtrain.study.sweep import Case, Parameter
@@ -122,9 +123,6 @@ def run_batch(job: BatchJob) -> list[dict]:
     alone: list[Case] = []
     models, cases = [], []
     for case in job.cases:
-        if case.index in job.keep:
-            alone.append(case)
-            continue
         try:
             models.append(case_model(job.raw, list(job.params), case, job.name, job.base_dir,
                                      job.datum))
@@ -145,6 +143,15 @@ def run_batch(job: BatchJob) -> list[dict]:
     return sorted(records, key=lambda r: r["index"])
 
 
+def _curves(degrees: list[float], valve, out: dict, row: int) -> dict:
+    """The overlay curves of one case (:data:`camtrain.study.executors.OVERLAY_COLUMNS`, with
+    the units of the result's columns), from its row of the batch."""
+    return {"cam_angle": ("deg", degrees), "film_min": ("m", out["film"].min[row].tolist()),
+            "load": ("N", out["load"][row].tolist()),
+            "hertz_pmax": ("Pa", out["hertz"].pmax[row].tolist()),
+            "lift": ("m", valve.lift.tolist())}
+
+
 def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict], list[Case]]:
     from camtrain.effects.kinematics import _cached_curve, lift_columns
     from camtrain.formulas._util import trusted_inputs
@@ -159,6 +166,7 @@ def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict]
     head = [(n, m.value, m.unit) for n, m in lift.metrics.items()]
     valve = _cached_curve(datum.lift, points)
     size = max(1, BATCH_POINTS // points)
+    degrees = [math.degrees(v) for v in valve.theta]
     records, rest = [], []
     with trusted_inputs():
         for start in range(0, len(cases), size):
@@ -167,12 +175,14 @@ def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict]
             scal = bc.columns(part_models)
             out = bc.run_chain(datum, valve, scal, n)
             ok = bc.flat_geometry_ok(out["kin"], datum.mechanism.face_length)
-            for case, good, metrics in zip(part, ok, bc.metrics(datum, out, n), strict=True):
+            for r, (case, good, metrics) in enumerate(zip(part, ok, bc.metrics(datum, out, n),
+                                                          strict=True)):
                 m = {name: (value, unit) for name, value, unit in head + metrics}
                 load_min = m.get("load_min")
                 if not good or (load_min is not None and load_min[0] <= 0.0):
                     rest.append(case)   # a geometry error or lost contact: run alone
                     continue
+                curves = _curves(degrees, valve, out, r) if case.index in job.keep else None
                 records.append({"index": case.index, "values": case.as_dict(), "status": "ok",
-                                "message": "", "metrics": m, "curves": None})
+                                "message": "", "metrics": m, "curves": curves})
     return records, rest

@@ -96,15 +96,43 @@ def run_chunk(fn: Callable, chunk: list) -> list:
     return [fn(job) for job in chunk]
 
 
-class ProcessExecutor:
-    """``--jobs N``: this process and N - 1 spawned workers share the cases.
+def _worker_started() -> None:
+    """In each worker, first: SIGTERM ends it at once. (A forked worker inherits the sweep's
+    handler, which turns SIGTERM into an interrupt for the parent to clean up after.)"""
+    import signal
 
-    The cases go out in small chunks (about eight per process); this process works through
-    chunks from the end of the queue while the workers start and take chunks from the front, so
-    the sweep begins at once and the workers' start-up is not paid as idle time; when the queue
-    is empty, chunks that no worker has started yet are taken back and run here. Workers are
-    spawned, not forked: the parent may run threads (the progress bar) and forking a threaded
-    process can deadlock. Results arrive in completion order (the output layer sorts by case).
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _ready() -> int:
+    """A worker's first task: it has started and imported what a case needs."""
+    import camtrain.runner  # noqa: F401 - the import is the work
+    import camtrain.study.case_model  # noqa: F401
+
+    return os.getpid()
+
+
+def _fork_is_safe() -> bool:
+    """Forking is safe while this process runs no other Python thread (a thread holding a lock
+    at the fork would leave the child's copy locked forever)."""
+    import multiprocessing
+    import threading
+
+    return "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+
+
+class ProcessExecutor:
+    """``--jobs N``: this process and N - 1 worker processes share the cases.
+
+    The workers start when the executor is made and each first reports that it is ready; only
+    then do they get cases. The cases go out in chunks (about eight per process); this process
+    works through chunks from the end of the queue from the start, the ready workers take chunks
+    from the front, and when the queue is empty, chunks that no worker has started yet are taken
+    back and run here. A sweep that this process finishes before the workers are ready does not
+    wait for them. Workers are forked while this process runs no other thread (they start at
+    once, with everything imported and the deck loaded) and spawned otherwise: forking a
+    threaded process can deadlock. Results arrive in completion order (the output layer sorts
+    by case).
     """
 
     def __init__(self, jobs: int):
@@ -112,9 +140,12 @@ class ProcessExecutor:
         from concurrent.futures import ProcessPoolExecutor
 
         self.jobs = jobs
-        self.description = f"{jobs} processes (this one and {jobs - 1} workers)"
+        method = "fork" if _fork_is_safe() else "spawn"
+        self.description = f"{jobs} processes (this one and {jobs - 1} {method}ed workers)"
         self._pool = ProcessPoolExecutor(max_workers=max(jobs - 1, 1),
-                                         mp_context=multiprocessing.get_context("spawn"))
+                                         mp_context=multiprocessing.get_context(method),
+                                         initializer=_worker_started)
+        self._ready = [self._pool.submit(_ready) for _ in range(max(jobs - 1, 1))]
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
         from collections import deque
@@ -124,10 +155,10 @@ class ProcessExecutor:
         size = max(1, min(100, len(jobs) // (8 * self.jobs)))
         pending = deque(jobs[i:i + size] for i in range(0, len(jobs), size))
         inflight: dict = {}
-        limit = 2 * (self.jobs - 1)
         try:
             while pending or inflight:
-                while pending and len(inflight) < limit:
+                ready = sum(f.done() and not f.exception() for f in self._ready)
+                while pending and len(inflight) < 2 * ready:
                     chunk = pending.popleft()
                     inflight[self._pool.submit(run_chunk, fn, chunk)] = chunk
                 for fut in [f for f in inflight if f.done()]:
@@ -146,7 +177,10 @@ class ProcessExecutor:
                 fut.cancel()
 
     def close(self) -> None:
-        self._pool.shutdown(wait=True, cancel_futures=True)
+        if all(f.done() for f in self._ready):
+            self._pool.shutdown(wait=True, cancel_futures=True)
+        else:   # a worker still starting has nothing to finish: stop it rather than wait
+            self.abort()
 
     def abort(self) -> None:
         """Stop at once: cancel what has not started and terminate the workers."""

@@ -78,6 +78,8 @@ def metric_order(records: list[dict]) -> list[str]:
 def metric_units(records: list[dict]) -> dict[str, str]:
     units: dict[str, str] = {}
     for r in sorted(records, key=lambda r: r["index"]):
+        if r["metrics"].keys() <= units.keys():
+            continue   # nothing new in this record (the usual case: every case has one set)
         for n, (_, unit) in r["metrics"].items():
             units.setdefault(n, unit)
     return units

@@ -95,13 +95,14 @@ def test_batch_metrics_equal_the_case_by_case_metrics(tmp_path, deck, replace, s
     _assert_same(batch, alone)
 
 
-def test_fallback_cases_are_the_single_runs(tmp_path):
-    """Failed, lost-contact and overlay (curve) cases come from the single-run path."""
+def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path):
+    """Failed and lost-contact cases come from the single-run path (status and message); the
+    overlay curves of a kept case from its row of the batch equal the single run's columns."""
     sweep = prepare(_deck(tmp_path, "harrison_flat.toml"),
                     [("base_radius", "values", "12,18"), ("speed", "values", "2500,4500")])
-    batch, alone = _both(sweep, keep=frozenset({2}))
+    batch, alone = _both(sweep, keep=frozenset({1, 2, 3}))
     assert [r["status"] for r in alone] == ["failed", "failed", "ok", "lost_contact"]
-    assert batch[2]["curves"] is not None
+    assert [r["curves"] is not None for r in batch] == [False, False, True, True]
     _assert_same(batch, alone)
 
 

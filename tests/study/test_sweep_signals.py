@@ -24,8 +24,9 @@ def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_pat
     workers: list = []
     deadline = time.monotonic() + 60
     while time.monotonic() < deadline and proc.poll() is None:
+        # forked workers run the sweep's own command line, spawned ones spawn_main
         workers = [p for p in parent.children(recursive=True)
-                   if "spawn_main" in " ".join(p.cmdline())]
+                   if "resource_tracker" not in " ".join(p.cmdline())]
         if len(workers) >= 2:
             break
         time.sleep(0.2)
