@@ -238,7 +238,7 @@ def equivalent_radius(cam_radius: np.ndarray, follower_radius: float) -> np.ndar
     R = r_f, a cusp (r_c = 0) gives R = 0 and a conformal contact (r_c = -r_f) gives R = inf.
     """
     rc = np.asarray(cam_radius, dtype=float)
-    if np.isinf(follower_radius):
+    if np.all(np.isinf(follower_radius)):   # (one radius, or one per sweep case)
         return rc.copy()
     with np.errstate(divide="ignore"):
         return 1.0 / (1.0 / rc + 1.0 / follower_radius)

@@ -119,7 +119,7 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
     c, sn = unit_circle(theta)
     ax, ay, bx, by = -sn, c, c, sn       # follower axis and offset directions in the cam frame
     rb, e = base_radius, offset
-    if np.isinf(follower_radius):
+    if np.all(np.isinf(follower_radius)):   # (one radius, or one per sweep case)
         rc = flat_cam_radius(s, s2, rb)
         vc, vf = flat_surface_velocities(s, s2, rb, omega)
         h = rb + s
@@ -146,14 +146,15 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
             vc, vf = offset_surface_velocities(s, beta, beta1, d, rf, omega)
             R = rf - rf * rf * np.cos(beta) * (1.0 - beta1) / (d + s)   # Ball eq. 3.3 form
             rx = R
-            ry = np.full_like(s, rf if shape == "spherical" else np.inf)
+            # np.full, not full_like: a follower radius per sweep case broadcasts to (cases, angles)
+            ry = np.full(np.shape(R), rf if shape == "spherical" else np.inf)
             load_factor = None
         cb, sb = np.cos(beta), np.sin(beta)
         nx, ny = cb * ax + sb * bx, cb * ay + sb * by
         qx, qy = e * bx + (d + s) * ax, e * by + (d + s) * ay
         px, py = qx - rf * nx, qy - rf * ny
         ecc = rf * beta
-        rf_arr = np.full_like(s, rf)
+        rf_arr = np.full(np.shape(R), rf)
     arms = contact_arms(px, py, nx, ny, ax, ay, ax, ay, vc - vf)
     if load_factor is not None:
         # A taper tilts the normal out of the plane: only the in-plane share loads the follower

@@ -30,7 +30,7 @@ BATCH_PATHS = frozenset({
     "spring.preload_compression", "masses.valve_side", "lubricant.viscosity",
     "lubricant.pressure_viscosity", "lubricant.roughness", "lubricant.temperature",
     "tribology.boundary_friction", "materials.cam_modulus", "materials.cam_poisson",
-    "materials.follower_modulus", "materials.follower_poisson"})
+    "materials.follower_modulus", "materials.follower_poisson", "mechanism.follower_radius"})
 #: fields of the contact model itself (the Greenwood-Tripp law reads them unselected)
 _CONTACT = ("cam.width", "lubricant.", "tribology.", "materials.")
 #: the chain a batch computes, in plan order
@@ -75,16 +75,15 @@ def route(raw: dict, params: list[Parameter], name: str, base_dir: str, key: str
         plan = resolve(datum)
     except Exception:  # noqa: BLE001 - the cases report their own errors one by one
         return Route(False, "the datum deck does not plan (each case reports why)")
-    chosen = tuple(plan.chosen)
+    chosen = tuple(e for e in plan.chosen if e != "guides")
     if chosen != CHAIN:
         other = [e for e in chosen if e not in CHAIN] or [e for e in CHAIN if e not in chosen]
         return Route(False, "the plan differs from the batched chain (kinematics, loads, hertz, "
                      f"film, friction, power) in {', '.join(other)}")
     mech = datum.mechanism
-    if mech.type != "flat":
-        return Route(False, f"a {mech.type} follower: its contact load depends on the friction "
-                     "through the friction/load iteration, which converges case by case (the "
-                     "batch covers the flat-faced follower)")
+    if mech.type not in ("flat", "domed"):
+        return Route(False, f"a {mech.type} follower: its kinematics are solved case by case "
+                     "(the batch covers translating flat-faced and domed followers)")
     from camtrain.mechanisms.base import CLOCKWISE, normalise_rotation
 
     if normalise_rotation(mech.rotation) != CLOCKWISE:
@@ -97,9 +96,12 @@ def route(raw: dict, params: list[Parameter], name: str, base_dir: str, key: str
         return Route(False, "the greenwood_tripp friction law with a swept contact parameter")
     swept = ", ".join(p.path for p in params)
     verb = "enters" if len(params) == 1 else "enter"
-    return Route(True, f"{swept} {verb} the chain elementwise (flat-faced follower, rigid-train "
-                 "loads, steady film, " f"{trib.friction_model} friction): one (cases, angles) "
-                 "array per quantity")
+    load = ("one pass" if mech.type == "flat" else
+            "the friction/load iteration converging case by case")
+    return Route(True, f"{swept} {verb} the chain elementwise ({mech.type} follower, rigid-train "
+                 f"loads by {load}, steady film, {trib.friction_model} friction"
+                 + (", guides" if "guides" in plan.chosen else "")
+                 + "): one (cases, angles) array per quantity")
 
 
 @dataclass(frozen=True)
@@ -174,13 +176,14 @@ def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict]
             n = len(part)
             scal = bc.columns(part_models)
             out = bc.run_chain(datum, valve, scal, n)
-            ok = bc.flat_geometry_ok(out["kin"], datum.mechanism.face_length)
+            ok = bc.geometry_ok(datum, out["kin"])
+            converged = out["converged"]
             for r, (case, good, metrics) in enumerate(zip(part, ok, bc.metrics(datum, out, n),
                                                           strict=True)):
                 m = {name: (value, unit) for name, value, unit in head + metrics}
                 load_min = m.get("load_min")
-                if not good or (load_min is not None and load_min[0] <= 0.0):
-                    rest.append(case)   # a geometry error or lost contact: run alone
+                if not (good and converged[r]) or (load_min is not None and load_min[0] <= 0.0):
+                    rest.append(case)   # a geometry error, no convergence or lost contact
                     continue
                 curves = _curves(degrees, valve, out, r) if case.index in job.keep else None
                 records.append({"index": case.index, "values": case.as_dict(), "status": "ok",

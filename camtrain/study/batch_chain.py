@@ -28,6 +28,7 @@ SCALARS = {
     "pressure_viscosity": lambda m: m.lubricant.pressure_viscosity,
     "roughness": lambda m: m.lubricant.roughness,
     "boundary_friction": lambda m: m.tribology.boundary_friction,
+    "follower_radius": lambda m: m.mechanism.follower_radius,
 }
 
 
@@ -53,16 +54,22 @@ def _broadcast(fields: dict, shape: tuple[int, int]) -> dict:
             for k, v in fields.items()}
 
 
-def flat_kinematics(valve, scal: dict, n: int):
-    """Kinematics of a clockwise flat-faced follower for every case (Ball 1988 eqs 3.4-3.6 by
-    the kernel a single run uses), each array of shape (cases, angles)."""
+def translating_kinematics(datum, valve, scal: dict, n: int):
+    """Kinematics of a clockwise flat-faced or domed translating follower (a tapered cam too)
+    for every case (Ball 1988 eqs 3.1-3.6, Williams 2013 ch. 6, Yang 1992 §3.2, by the kernel
+    a single run uses), each array of shape (cases, angles)."""
     from camtrain.mechanisms import Kinematics
     from camtrain.mechanisms.translating import translating_contact
 
     shape = (n, valve.theta.size)
+    mech = datum.mechanism
+    flat = mech.type == "flat"
+    taper = None if flat or not datum.cam.taper_angle > 0.0 else float(datum.cam.taper_angle)
     fields = translating_contact(valve.theta, valve.lift, valve.d1, valve.d2,
-                                 base_radius=scal["base_radius"], follower_radius=np.inf,
-                                 offset=0.0, omega=scal["omega"])
+                                 base_radius=scal["base_radius"],
+                                 follower_radius=np.inf if flat else scal["follower_radius"],
+                                 offset=0.0 if flat or taper is not None else mech.offset,
+                                 omega=scal["omega"], taper_angle=taper)
     with np.errstate(divide="ignore"):
         ratio = 1.0 / fields["arm_normal"]
     lc = valve
@@ -70,18 +77,57 @@ def flat_kinematics(valve, scal: dict, n: int):
         theta=lc.theta, valve_lift=lc.lift, valve_d1=lc.d1, valve_d2=lc.d2, valve_d3=lc.d3,
         cam_lift=lc.lift, cam_d1=lc.d1, cam_d2=lc.d2, rocker_ratio=ratio,
         arm_valve=np.ones_like(lc.lift), q=lc.lift, q_d1=lc.d1, q_d2=lc.d2, **fields), shape)
-    return Kinematics(mechanism="flat-faced translating", rotation="clockwise",
-                      omega=scal["omega"], inertia={"follower_mass": np.broadcast_to(lc.d2, shape)},
-                      **arrays)
+    omega = scal["omega"]   # a per-case speed spans the grid like every field (shape check)
+    omega = np.broadcast_to(omega, shape) if isinstance(omega, np.ndarray) else omega
+    return Kinematics(mechanism=mech.type, rotation="clockwise", omega=omega,
+                      inertia={"follower_mass": np.broadcast_to(lc.d2, shape)}, **arrays)
 
 
-def flat_geometry_ok(kin, face_length) -> np.ndarray:
-    """Per case: the checks of a flat follower pass (convex cam, contact on the face;
-    :mod:`camtrain.mechanisms.checks`). A case that fails runs alone and reports the error."""
-    ok = np.all(kin.cam_radius > 0.0, axis=1)
-    if face_length is not None:
-        ok &= np.max(np.abs(kin.eccentricity), axis=1) <= 0.5 * face_length
+def geometry_ok(datum, kin) -> np.ndarray:
+    """Per case: the geometry checks of a single run pass (:mod:`camtrain.mechanisms.checks`:
+    a convex cam under a flat face; no cusp and no concave flank tighter than the grinding
+    wheel under a domed one; the contact on the face). A case that fails runs alone and
+    reports the error."""
+    mech = datum.mechanism
+    rc = kin.cam_radius
+    if mech.type == "flat":
+        ok = np.all(rc > 0.0, axis=1)
+    else:
+        ok = ~np.any((rc <= 0.0) & (rc > -kin.follower_radius), axis=1)
+        wheel = mech.grinding_wheel_radius
+        if wheel is not None and wheel > 0.0:
+            ok &= ~np.any((rc < 0.0) & (-rc < wheel), axis=1)
+    if mech.face_length is not None:
+        ok &= np.max(np.abs(kin.eccentricity), axis=1) <= 0.5 * mech.face_length
     return ok
+
+
+def iterate_rows(load_of_mu, friction_of_load, mu0, tolerance: float, max_iterations: int):
+    """Ball's friction/load iteration (:func:`camtrain.loads.iterate_load`) on every case at
+    once, each case converging by its own residual and then held: the same iterates, the same
+    stopping test and the same final friction as the case alone. Returns load, friction, mu,
+    iterations per case and which cases converged."""
+    load = np.asarray(load_of_mu(np.asarray(mu0, dtype=float)), dtype=float)
+    mu = np.array(np.broadcast_to(mu0, load.shape), dtype=float)
+    n = load.shape[0]
+    done = np.zeros(n, dtype=bool)
+    iterations = np.zeros(n, dtype=int)
+    for k in range(1, max_iterations + 1):
+        force = np.asarray(friction_of_load(load), dtype=float)
+        positive = load > 0.0
+        step = np.where(positive, force / np.where(positive, load, 1.0), mu)
+        mu = np.where(done[:, None], mu, step)
+        new = np.asarray(load_of_mu(mu), dtype=float)
+        scale = np.maximum(np.max(np.abs(new), axis=1), 1.0)
+        residual = np.max(np.abs(new - load), axis=1) / scale
+        load = np.where(done[:, None], load, new)
+        now = ~done & (residual <= tolerance)
+        iterations[now] = k
+        done |= now
+        if done.all():
+            break
+    force = np.asarray(friction_of_load(load), dtype=float)
+    return load, force, mu, iterations, done
 
 
 def contact_of(datum, scal: dict):
@@ -89,22 +135,15 @@ def contact_of(datum, scal: dict):
     from camtrain.contact.model import CamContact
 
     base = CamContact.from_deck(datum)
+    # every case scalar is set, also one the chunk shares: it may differ from the datum's
     lub = dataclasses.replace(base.lubricant) if base.lubricant is not None else None
     for name in ("viscosity", "pressure_viscosity", "roughness"):
-        if lub is not None and isinstance(scal[name], np.ndarray):
+        if lub is not None:
             object.__setattr__(lub, name, scal[name])
-    trib = base.tribology
-    if isinstance(scal["boundary_friction"], np.ndarray):
-        trib = dataclasses.replace(trib)
-        object.__setattr__(trib, "boundary_friction", scal["boundary_friction"])
+    trib = dataclasses.replace(base.tribology)
+    object.__setattr__(trib, "boundary_friction", scal["boundary_friction"])
     return dataclasses.replace(base, reduced_modulus=scal["reduced_modulus"],
                                width=scal["width"], lubricant=lub, tribology=trib)
-
-
-def _rows(values, index) -> np.ndarray:
-    """values[r, index[r]] for every row r."""
-    return np.take_along_axis(np.broadcast_to(values, index.shape[:1] + values.shape[-1:]),
-                              index[:, None], axis=1)[:, 0]
 
 
 def zero_crossings_rows(theta, values) -> list[list[float]]:
@@ -138,7 +177,7 @@ def run_chain(datum, valve, scal: dict, n: int):
     from camtrain.formulas import cam_torque, friction_torque
     from camtrain.loads import contact_load, contact_mask
 
-    kin = flat_kinematics(valve, scal, n)
+    kin = translating_kinematics(datum, valve, scal, n)
     c = datum.clearance
     lash = c is not None and c.lash_adjuster
     clearance = 0.0 if (c is None or lash) else c.valve_clearance
@@ -147,13 +186,26 @@ def run_chain(datum, valve, scal: dict, n: int):
                    valve_mass=scal["valve_mass"], body_inertia=body_inertia(datum),
                    progressive=(spring.progressive_quadratic, spring.progressive_cubic))
     mu_b = scal["boundary_friction"]
-    # no friction arm (flat face): one pass at the boundary coefficient, as iterate_load does
-    load = np.asarray(contact_load(kin, np.asarray(mu_b, dtype=float), clearance=clearance,
-                                   base_load=c.adjuster_load if lash else 0.0, **load_kw),
-                      dtype=float)
-    load = np.broadcast_to(load, kin.theta.shape)
-    inside = contact_mask(kin.valve_lift, clearance)
+    base_load = c.adjuster_load if lash else 0.0
     contact = contact_of(datum, scal)
+
+    def load_of_mu(mu):
+        return np.broadcast_to(contact_load(kin, mu, clearance=clearance, base_load=base_load,
+                                            **load_kw), kin.theta.shape)
+
+    if np.any(kin.arm_friction != 0.0):
+        # the load depends on the friction: Ball's iteration (loads.solve_loads), case by case
+        solver = datum.solver
+        load, _, mu_solved, iterations, converged = iterate_rows(
+            load_of_mu, lambda w: contact.solve(kin, w).force, mu_b, solver.friction_tolerance,
+            solver.friction_max_iterations)
+        if not np.all(np.any(kin.arm_friction != 0.0, axis=1)):
+            raise ValueError("cases with and without a friction arm")   # run them alone
+    else:
+        # no friction arm (flat face): one pass at the boundary coefficient, as iterate_load does
+        load = np.asarray(load_of_mu(np.asarray(mu_b, dtype=float)), dtype=float)
+        mu_solved, iterations, converged = mu_b, np.ones(n, dtype=int), np.ones(n, dtype=bool)
+    inside = contact_mask(kin.valve_lift, clearance)
     load0 = np.maximum(load, 0.0)
     hz = contact.hertz(kin, load0)
     film = contact.film(kin, load0)
@@ -165,7 +217,42 @@ def run_chain(datum, valve, scal: dict, n: int):
     return dict(kin=kin, load=load, load0=load0, inside=inside, hertz=hz, film=film,
                 force=force, friction_torque=tf, cam_torque=total,
                 power=tf * np.abs(scal["omega"]), dissipation=force * np.abs(kin.sliding),
-                load_kw=load_kw, clearance=clearance, mu=mu_b)
+                load_kw=load_kw, clearance=clearance, mu=mu_b, mu_solved=mu_solved,
+                iterations=iterations, converged=converged,
+                guides=_guides(datum, kin, contact))
+
+
+def _guides(datum, kin, contact):
+    """The guide losses (:func:`camtrain.contact.guides.guide_losses`) of every case, or None
+    when the deck has no [guides]."""
+    if datum.guides is None:
+        return None
+    from types import SimpleNamespace
+
+    from camtrain.contact.guides import guide_losses
+
+    deck = SimpleNamespace(guides=datum.guides, lubricant=contact.lubricant,
+                           mechanism=datum.mechanism)
+    return guide_losses(deck, kin)
+
+
+def _guide_metrics(losses, n: int) -> list[tuple[str, list[float]]]:
+    """The guides effect's metrics per case: each guide's cycle-mean power and their sum."""
+    if losses is None:
+        return []
+    from camtrain.formulas import cycle_mean
+
+    out, total = [], np.zeros(n)
+    for name, power in (("follower_guide", losses.follower_guide),
+                        ("valve_guide", losses.valve_guide)):
+        if power is None:
+            continue
+        mean = np.asarray(cycle_mean(np.broadcast_to(power, (n, np.shape(power)[-1]))),
+                          dtype=float)
+        total = total + mean
+        out.append((f"{name}_power_mean", mean.tolist()))
+    out.append(("guide_power_mean", total.tolist()))
+    return out
 
 
 def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
@@ -185,11 +272,12 @@ def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
     i_ecc = np.argmax(np.abs(ecc), axis=1)
     i_pa = np.argmax(np.abs(pa), axis=1)
     convex = float(np.max(-(kin.valve_lift[0] + kin.valve_d2[0])))
+    flat = datum.mechanism.type == "flat"
     load, inside = out["load"], out["inside"]
     i_max = np.argmax(load, axis=1)
     has_inside = bool(np.any(inside))
     i_min = np.argmin(np.where(inside, load, np.inf), axis=1)
-    speeds = bounce_speeds(kin, out["mu"], clearance=out["clearance"], **out["load_kw"])
+    speeds = bounce_speeds(kin, out["mu_solved"], clearance=out["clearance"], **out["load_kw"])
     i_b = np.argmin(speeds, axis=1)
     pmax = out["hertz"].pmax
     i_h = np.argmax(np.where(np.isnan(pmax), -np.inf, pmax), axis=1)
@@ -214,6 +302,8 @@ def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
         tf_peak=tf[rows, i_t])
     columns = {k: np.asarray(v, dtype=float).tolist() for k, v in columns.items()}
     boundary, means = boundary.tolist(), [m.tolist() for m in means]
+    iterations = np.asarray(out["iterations"], dtype=float).tolist()
+    guides = _guide_metrics(out["guides"], n)
     max_valve_lift = float(kin.valve_lift[0, nose])
     zeros = zero_crossings_rows(theta, kin.entrainment)
     per_case = []
@@ -224,14 +314,15 @@ def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
              ("equivalent_radius_at_max_lift", col["equivalent_radius_at_max_lift"], "m"),
              ("cam_radius_min", col["cam_radius_min"], "m"),
              ("eccentricity_max", col["eccentricity_max"], "m"),
-             ("pressure_angle_max", col["pressure_angle_max"], "rad"),
-             ("min_base_radius_convex", convex, "m")]
+             ("pressure_angle_max", col["pressure_angle_max"], "rad")]
+        if flat:   # Ball (1988) §2.2.1, as the kinematics effect reports it
+            m.append(("min_base_radius_convex", convex, "m"))
         m += [(f"zero_entrainment_{j + 1}", a, "rad")
               for j, a in enumerate(zeros[r])]
         m.append(("load_max", col["load_max"], "N"))
         if has_inside:
             m.append(("load_min", col["load_min"], "N"))
-        m.append(("load_iterations", 1.0, "-"))
+        m.append(("load_iterations", iterations[r], "-"))
         if np.isfinite(col["bounce"]):
             m.append(("bounce_speed", float(rad_s_to_rpm(col["bounce"])), "rpm"))
         m += [("hertz_max", col["hertz_max"], "Pa"),
@@ -244,5 +335,6 @@ def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
               ("power_loss_mean", means[0][r], "W"),
               ("dissipation_mean", means[1][r], "W"),
               ("cam_torque_mean", means[2][r], "N*m")]
+        m += [(name, values[r], "W") for name, values in guides]
         per_case.append(m)
     return per_case

@@ -36,12 +36,24 @@ def _deck(tmp_path, name: str, points: int = 120, **replace: str):
     return path
 
 
-def _both(sweep, keep=frozenset()):
+def _both(sweep, keep=frozenset(), monkeypatch=None):
+    """(batch records, single-run records); with ``monkeypatch``, also checks that the batch ran
+    alone exactly the cases that are not ok (it never fell back as a whole)."""
+    import camtrain.study.executors as executors
+
     key = datum_key(sweep.raw, sweep.name, sweep.base_dir)
+    ran_alone = []
+    if monkeypatch is not None:
+        monkeypatch.setattr(executors, "run_case",
+                            lambda job: ran_alone.append(job.case.index) or run_case(job))
     batch = run_batch(BatchJob(sweep.raw, tuple(sweep.params), tuple(sweep.cases), sweep.name,
                                sweep.base_dir, keep, key))
+    if monkeypatch is not None:
+        monkeypatch.undo()
     alone = [run_case(Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
                           c.index in keep, key)) for c in sweep.cases]
+    if monkeypatch is not None:
+        assert ran_alone == [r["index"] for r in alone if r["status"] != "ok"]
     return batch, alone
 
 
@@ -87,20 +99,27 @@ GOCMEN_STEADY = {'film_model = "averaged_reynolds"': 'film_model = "steady"'}
     ("gocmen_table31.toml", {'film_model = "averaged_reynolds"':
                              'film_model = "steady"\nfriction_model = "greenwood_tripp"'},
      [("speed", "values", "800,1500,2500")]),
+    # domed follower on a tapered cam (point contact): the friction/load iteration converges
+    # case by case; guides; speeds beyond bounce
+    ("zeta_intake.toml", {}, [("speed", "values", "1500,4000,7000"),
+                              ("follower_radius", "values", "25,40")]),
+    ("zeta_intake.toml", {"_": '\n[tribology]\nfriction_model = "lambda"\n'},
+     [("viscosity", "values", "0.005,0.02"), ("base_radius", "values", "15,17")]),
 ])
-def test_batch_metrics_equal_the_case_by_case_metrics(tmp_path, deck, replace, specs):
+def test_batch_metrics_equal_the_case_by_case_metrics(tmp_path, monkeypatch, deck, replace,
+                                                       specs):
     sweep = prepare(_deck(tmp_path, deck, **replace), specs)
     assert route(sweep.raw, sweep.params, sweep.name, sweep.base_dir).batch
-    batch, alone = _both(sweep)
+    batch, alone = _both(sweep, monkeypatch=monkeypatch)
     _assert_same(batch, alone)
 
 
-def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path):
+def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path, monkeypatch):
     """Failed and lost-contact cases come from the single-run path (status and message); the
     overlay curves of a kept case from its row of the batch equal the single run's columns."""
     sweep = prepare(_deck(tmp_path, "harrison_flat.toml"),
                     [("base_radius", "values", "12,18"), ("speed", "values", "2500,4500")])
-    batch, alone = _both(sweep, keep=frozenset({1, 2, 3}))
+    batch, alone = _both(sweep, keep=frozenset({1, 2, 3}), monkeypatch=monkeypatch)
     assert [r["status"] for r in alone] == ["failed", "failed", "ok", "lost_contact"]
     assert [r["curves"] is not None for r in batch] == [False, False, True, True]
     _assert_same(batch, alone)
@@ -118,8 +137,8 @@ def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path):
     ("gocmen_table31.toml", {'film_model = "averaged_reynolds"':
                              'film_model = "steady"\nfriction_model = "greenwood_tripp"'},
      [("viscosity", "values", "0.01")], "greenwood_tripp"),
-    ("zeta_intake.toml", {}, [("speed", "values", "2000")], "in guides"),
-    ("pinto_finger.toml", {}, [("speed", "values", "2000")], "friction/load iteration"),
+    ("pinto_finger.toml", {}, [("speed", "values", "2000")], "finger follower"),
+    ("zeta_intake_camshaft.toml", {}, [("speed", "values", "2000")], "camshaft_torque"),
 ])
 def test_route_falls_back_where_the_physics_branches_per_case(tmp_path, deck, replace, specs,
                                                                 why):
@@ -145,9 +164,14 @@ def test_sweep_tables_are_the_same_on_both_paths(tmp_path, monkeypatch):
 
 
 def test_sub_batches_split_a_chunk_without_changing_it(tmp_path, monkeypatch):
+    """Two cases per sub-batch: a sub-batch whose cases share a swept value other than the
+    datum's (viscosity 0.02 here) computes with that value."""
     import camtrain.study.batch as batch_module
 
-    sweep = prepare(_deck(tmp_path, "harrison_flat.toml"), [("base_radius", "range", "14:22:7")])
-    whole = _both(sweep)[0]
-    monkeypatch.setattr(batch_module, "BATCH_POINTS", 2 * 120)   # two cases per sub-batch
-    _assert_same(_both(sweep)[0], whole, rtol=0.0)
+    sweep = prepare(_deck(tmp_path, "harrison_flat.toml"),
+                    [("viscosity", "values", "0.02,0.08"), ("base_radius", "values", "15,19")])
+    whole, alone = _both(sweep)
+    monkeypatch.setattr(batch_module, "BATCH_POINTS", 2 * 120)
+    split = _both(sweep, monkeypatch=monkeypatch)[0]
+    _assert_same(split, whole, rtol=0.0)
+    _assert_same(split, alone)
