@@ -166,6 +166,13 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
     own = executor is None and todo
     if own:
         jobs = min(jobs, len(todo)) if jobs else jobs
+        if route.batch and scheduler is None and (jobs is None or jobs > 1):
+            # one case here first: workers forked next start with every module imported and
+            # the lift curve and contact model cached, as this process has them
+            from camtrain.study.batch import BatchJob, run_batch
+
+            run_batch(BatchJob(sweep.raw, tuple(sweep.params), (todo[0],), sweep.name,
+                               sweep.base_dir, frozenset(), key))
         executor = make_executor(jobs, scheduler)
     work, fn = _work(sweep, todo, keep, key, route, getattr(executor, "jobs", None))
     last, cost = time.monotonic(), 0.0
