@@ -145,10 +145,15 @@ class Terminated(KeyboardInterrupt):
 def _terminate_as_interrupt():
     """SIGTERM (CI cancellation, `timeout`) ends a sweep as Ctrl-C does: the workers are stopped
     and the finished cases kept, instead of this process dying and leaving its workers running."""
+    import os
     import signal
     import threading
 
+    pid = os.getpid()
+
     def interrupt(signum, frame):
+        if os.getpid() != pid:   # a forked worker that has not yet reset the handler
+            os._exit(128 + signum)
         raise Terminated
 
     if threading.current_thread() is not threading.main_thread():
