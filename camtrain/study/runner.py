@@ -229,14 +229,15 @@ def _records(executor, fn, work: list, route):
 
 def _work(sweep: Sweep, todo: list[Case], keep: set[int], key: str, route, jobs: int | None):
     """What the executor maps: one Job per case, or chunks of cases as BatchJobs (about eight
-    per process, so the workers share them out as they start; each chunk runs in sub-batches
-    sized for memory)."""
+    per process, so the workers share them out as they start; ``jobs`` None: a cluster of
+    unknown size; each chunk runs in sub-batches sized for memory)."""
     if route is None or not route.batch:
         return [Job(sweep.raw, tuple(sweep.params), c, sweep.name, sweep.base_dir,
                     c.index in keep, key) for c in todo], run_case
     from camtrain.study.batch import BatchJob, run_batch
 
-    procs = max(1, jobs or 1)
+    # a cluster (jobs unknown) gets as many chunks as four eight-process machines would
+    procs = 32 if jobs is None else max(1, jobs)
     size = max(1, min(_BATCH_CHUNK, -(-len(todo) // (8 * procs)))) if procs > 1 else _BATCH_CHUNK
     chunks = [tuple(todo[i:i + size]) for i in range(0, len(todo), size)]
     return [BatchJob(sweep.raw, tuple(sweep.params), chunk, sweep.name, sweep.base_dir,
