@@ -113,12 +113,13 @@ def _ready() -> int:
 
 
 def _fork_is_safe() -> bool:
-    """Forking is safe while this process runs no other Python thread (a thread holding a lock
-    at the fork would leave the child's copy locked forever)."""
-    import multiprocessing
+    """Forking is safe on Linux while this process runs no other Python thread (a thread
+    holding a lock at the fork would leave the child's copy locked forever). On macOS the
+    system libraries are not fork-safe (Python spawns there by default), so workers spawn."""
+    import sys
     import threading
 
-    return "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+    return sys.platform.startswith("linux") and threading.active_count() == 1
 
 
 class ProcessExecutor:
