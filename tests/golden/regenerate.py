@@ -33,6 +33,18 @@ DATA = Path(__file__).resolve().parent / "data"
 RTOL = float(os.environ.get("CAMTRAIN_GOLDEN_RTOL", "1e-9"))
 #: values this far below a column's largest magnitude are compared absolutely (round-off near 0)
 FLOOR = 1e-12
+#: other library versions than the files were written with (`make test-oldest`)
+OTHER_VERSIONS = "CAMTRAIN_GOLDEN_RTOL" in os.environ
+#: decks whose result is a march stopped at a convergence tolerance, not a fixed sequence of
+#: operations: deck -> (that tolerance, residual metrics). Their contact changes and active sets
+#: are decided by comparisons, so another library's round-off can move where the march stops
+#: within the tolerance (measured on the declared minimum versions: the two-way coupled camshaft,
+#: coupling_tolerance 1e-4, lands within 3.6e-5 of each column's largest value and 1.3e-6 of each
+#: metric). On other versions they are compared to their tolerance against each column's largest
+#: magnitude, without the residual itself; on the versions the files were written with, to RTOL.
+CONVERGED: dict[str, tuple[float, tuple[str, ...]]] = {
+    "zeta_intake_camshaft_coupled": (1e-4, ("coupling_change",)),
+}
 
 
 #: name -> (shipped deck, changed fields as {section: {field: value}} in deck units)
@@ -98,11 +110,11 @@ def load(name: str) -> tuple[dict, dict[str, np.ndarray]]:
     return meta, arrays
 
 
-def close(a, b) -> np.ndarray:
-    """Elementwise: |a - b| <= RTOL max(|b|, FLOOR max|b|) (NaN equal to NaN)."""
+def close(a, b, rtol: float = RTOL, floor: float = FLOOR) -> np.ndarray:
+    """Elementwise: |a - b| <= rtol max(|b|, floor max|b|) (NaN equal to NaN)."""
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     scale = np.nanmax(np.abs(b)) if b.size and np.any(np.isfinite(b)) else 0.0
-    tol = RTOL * np.maximum(np.abs(b), FLOOR * scale)
+    tol = rtol * np.maximum(np.abs(b), floor * scale)
     same = (a == b) | (np.abs(a - b) <= tol) | (np.isnan(a) & np.isnan(b))
     return same
 
@@ -147,8 +159,14 @@ def differences(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> list[st
         for k in sorted(set(new) - set(old)):
             out.append(f"{name}: new {kind} {k!r}")
     noise = _round_off_harmonics(gold_meta["metrics"])
+    rtol, floor, residuals = RTOL, FLOOR, ()
+    if OTHER_VERSIONS and name in CONVERGED:
+        rtol, residuals = CONVERGED[name]
+        floor = 1.0
     for k in sorted(set(meta["metrics"]) & set(gold_meta["metrics"])):
         new, old = meta["metrics"][k], gold_meta["metrics"][k]
+        if k in residuals:
+            continue
         if k in noise:
             if abs(new["value"] or 0.0) > noise[k]:
                 out.append(f"{name}: metric {k!r} value {old['value']!r} -> {new['value']!r} "
@@ -158,7 +176,8 @@ def differences(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> list[st
             out.append(f"{name}: metric {k!r} unit {old['unit']} -> {new['unit']}")
         for part in ("value", "angle"):
             a, b = new[part], old[part]
-            if (a is None) != (b is None) or (a is not None and not close(a, b).all()):
+            if (a is None) != (b is None) or (a is not None
+                                              and not close(a, b, rtol, floor).all()):
                 out.append(f"{name}: metric {k!r} {part} {b!r} -> {a!r}")
     for k in sorted(set(meta["columns"]) & set(gold_meta["columns"])):
         if meta["columns"][k]["unit"] != gold_meta["columns"][k]["unit"]:
@@ -168,7 +187,7 @@ def differences(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> list[st
         if a.shape != b.shape:
             out.append(f"{name}: column {k!r} shape {b.shape} -> {a.shape}")
             continue
-        bad = ~close(a, b)
+        bad = ~close(a, b, rtol, floor)
         if bad.any():
             rel = np.abs(a - b) / np.maximum(np.abs(b), 1e-300)
             out.append(f"{name}: column {k!r} differs at {int(bad.sum())} of {b.size} points "
