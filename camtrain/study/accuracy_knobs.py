@@ -1,0 +1,262 @@
+"""The resolution knobs `camtrain accuracy` studies: the deck field each sets, its ladder, the
+decks it applies to, and the key metrics read from every rung (camtrain.study.accuracy runs them).
+
+Plain data and small predicates on a raw deck dictionary; nothing here imports numpy.
+"""
+from __future__ import annotations
+
+import copy
+from collections.abc import Callable
+from dataclasses import dataclass
+
+#: Metrics studied when a run produces them (scalar results a designer acts on).
+KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
+               "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift",
+               "shaft_deflection_max", "shaft_twist_max",
+               "min_film", "max_eccentricity", "power_mean", "bearings_power_total",
+               # engine decks: crank-train loads and crank bearings
+               "big_end_max_load", "big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
+               "total_power_dynamic", "total_power_steady",
+               # transient cam film
+               "film_at_zero_entrainment_1", "film_max",
+               # engine decks: piston assembly and FLAME
+               "piston_power_total", "ring_1_min_film_flooded", "inter_ring_pressure_1_peak",
+               "flame_total",
+               # valve-train dynamics
+               "separation_angle")
+
+#: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
+BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean",
+                   # the elastic camshaft: load from the shaft and its orders 1 and 4
+                   "reaction_max", "reaction_order_1", "reaction_order_4")
+
+
+
+@dataclass(frozen=True)
+class Knob:
+    """One resolution knob: the deck field it sets and its ladder, coarsest first.
+
+    ``step`` maps a knob value to the discretisation size h (smaller is finer), so the ladder's
+    refinement ratio and the observed order are in terms of h.
+    """
+
+    name: str
+    path: str
+    ladder: tuple[float, ...]
+    step: Callable[[float], float]
+    applies: Callable[[dict], bool]
+    description: str
+    integer: bool = False
+    #: sets the knob's value in a raw deck when one path is not enough (default: set_path)
+    setter: Callable[[dict, object], dict] | None = None
+    #: time a rung's second run (caches warm): for knobs whose first run builds a table
+    warm: bool = False
+    #: a deck-specific ladder (None: ``ladder``), e.g. a cheaper one where a rung is costly
+    ladder_for: Callable[[dict], tuple | None] | None = None
+
+    def ladder_of(self, raw: dict) -> tuple:
+        """The ladder this knob climbs on the deck ``raw``."""
+        special = self.ladder_for(raw) if self.ladder_for is not None else None
+        return tuple(special) if special else self.ladder
+
+
+def _valve_train(raw: dict) -> bool:
+    return raw.get("kind", "valve_train") == "valve_train"
+
+
+def _engine(raw: dict) -> bool:
+    return raw.get("kind") == "engine"
+
+
+def _engine_orbits(raw: dict) -> bool:
+    methods = raw.get("solver", {}).get("methods", ("dynamic",))
+    return _engine(raw) and "dynamic" in methods
+
+
+def _choice_step(choices: tuple[str, ...]) -> Callable[[str], float]:
+    """A model choice has no step size: the rungs are ranked in ladder order (the last, the
+    default, is the reference), so errors are differences from the default model."""
+    return lambda v: float(len(choices) - choices.index(v))
+
+
+def _lift_form(raw: dict) -> str:
+    return str(raw.get("lift", {}).get("form", ""))
+
+
+def _iterates(raw: dict) -> bool:
+    # Only followers whose contact load depends on friction iterate (pivoted, pushrod, desmo).
+    return raw.get("mechanism", {}).get("type") in ("finger", "rocker", "pushrod", "desmodromic")
+
+
+def _elastic_camshaft(raw: dict) -> bool:
+    return "flexibility" in raw.get("camshaft", {})
+
+
+def _coupled_camshaft(raw: dict) -> bool:
+    """Every lobe's elastic train on the elastic shaft (two-way coupling)."""
+    return raw.get("camshaft", {}).get("flexibility", {}).get("coupling") == "two_way"
+
+
+#: ladders of the coupled camshaft (one rung marches every lobe's train with the shaft; 8
+#: stations per span cost twelve times the default, 2 steps per degree leave the contact
+#: ringing unresolved)
+COUPLED_LADDERS = {"shaft_stations": (0, 1, 2, 4), "steps_per_degree": (6.0, 12.0, 24.0, 48.0)}
+
+
+def _coupled_ladder(name: str) -> Callable[[dict], tuple | None]:
+    return lambda raw: COUPLED_LADDERS[name] if _coupled_camshaft(raw) else None
+
+
+def _smoothing_spline(raw: dict) -> bool:
+    table = raw.get("lift", {}).get("table", {})
+    return _lift_form(raw) == "table" and table.get("derivative", "smoothing_spline") == \
+        "smoothing_spline"
+
+
+def _bearing_section(raw: dict) -> tuple[str, str] | None:
+    """(section path, field prefix) of the deck's journal-bearing film options, or None when
+    the deck has no bearing with a film (no bearings, or the Petroff method only)."""
+    if raw.get("kind") == "journal_bearing":
+        where = ("solver", "")
+    elif raw.get("camshaft", {}).get("bearings"):
+        where = ("camshaft", "bearing_")
+    elif raw.get("kind") == "engine":
+        where = ("solver", "bearing_")
+        if list(raw.get("solver", {}).get("methods", ("dynamic",))) == ["petroff"]:
+            return None
+    else:
+        return None
+    node = raw.get(where[0], {})
+    return None if node.get("method", "mobility") == "petroff" else where
+
+
+def _camshaft_orbits(raw: dict) -> bool:
+    """The deck marches camshaft-bearing orbits (the mobility method)."""
+    cs = raw.get("camshaft", {})
+    return bool(cs.get("bearings")) and cs.get("method", "mobility") == "mobility"
+
+
+def _set_film(raw: dict, **fields) -> dict:
+    section, prefix = _bearing_section(raw)
+    out = copy.deepcopy(raw)
+    out.setdefault(section, {}).update({prefix + k: v for k, v in fields.items()})
+    return out
+
+
+def _mesh_rung(raw: dict, n_theta) -> dict:
+    """The finite film at n_theta around and n_theta/12 along a half land (the default 72 x 6)."""
+    return _set_film(raw, model="finite", n_theta=int(n_theta), n_z=max(2, round(n_theta / 12)))
+
+
+#: rungs of the model knob: the short film, the finite film at the deck's mesh, and the finite
+#: film at the finest mesh of the bearing_mesh ladder (the reference)
+MODEL_RUNGS = ("short", "finite", "finite:288")
+
+
+def _model_step(value) -> float:
+    """Steps of the model rungs: short 1, finite at the deck's mesh 0.5, finite:N 1/N (unequal
+    ratios, so no order is read across models)."""
+    model, _, n_theta = str(value).partition(":")
+    return 1.0 / int(n_theta) if n_theta else (1.0 if model == "short" else 0.5)
+
+
+def _model_rung(raw: dict, value) -> dict:
+    model, _, n_theta = str(value).partition(":")
+    return _mesh_rung(raw, int(n_theta)) if n_theta else _set_film(raw, model=model)
+
+
+def _film_model(raw: dict) -> str:
+    return str(raw.get("tribology", {}).get("film_model", "steady"))
+
+
+def _transient_film(raw: dict) -> bool:
+    return _film_model(raw) in ("squeeze", "averaged_reynolds")
+
+
+def _averaged_reynolds(raw: dict) -> bool:
+    return _film_model(raw) == "averaged_reynolds"
+
+
+def _dynamics(raw: dict) -> bool:
+    return "dynamics" in raw
+
+
+def _spring_chain(raw: dict) -> bool:
+    return int(raw.get("dynamics", {}).get("spring_elements", 0)) > 0
+
+
+def _adaptive(raw: dict) -> bool:
+    return raw.get("dynamics", {}).get("integrator") in ("lsoda", "radau")
+
+
+KNOBS: dict[str, Knob] = {k.name: k for k in (
+    Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
+         lambda v: 1.0 / v, _valve_train,
+         "cam angles over one revolution (angle step 360 deg / n)", integer=True),
+    Knob("friction_tolerance", "solver.friction_tolerance",
+         (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8), lambda v: v, _iterates,
+         "relative tolerance of the friction/load iteration"),
+    Knob("table_smoothing", "lift.table.smoothing", (4.0, 2.0, 1.0, 0.5, 0.25),
+         lambda v: v, _smoothing_spline,
+         "smoothing level of the lift-table spline (relative to the data precision)"),
+    Knob("shaft_stations", "camshaft.flexibility.nodes_per_span", (0, 1, 2, 4, 8),
+         lambda v: 1.0 / (v + 1), _elastic_camshaft,
+         "extra stations per span of the elastic camshaft (element length / (n + 1))",
+         integer=True, ladder_for=_coupled_ladder("shaft_stations")),
+    Knob("bearing_mesh", "solver.n_theta | camshaft.bearing_n_theta (n_z = n_theta / 12)",
+         (36, 72, 144, 288), lambda v: 1.0 / v, lambda raw: _bearing_section(raw) is not None,
+         "finite journal-bearing film mesh, model = finite (time: the orbit with the map "
+         "cached; building a map costs ~200 Reynolds solutions once per b/d and mesh)",
+         integer=True, setter=_mesh_rung, warm=True),
+    Knob("bearing_model", "solver.model | camshaft.bearing_model | engine solver.bearing_model",
+         MODEL_RUNGS,
+         _model_step,
+         lambda raw: _bearing_section(raw) is not None,
+         "journal-bearing film model: short (Ocvirk) and finite at the deck's mesh against "
+         "the finite film at 288 x 24", setter=_model_rung, warm=True),
+    Knob("orbit_points", "camshaft.orbit_points", (90, 180, 360, 720, 1440), lambda v: 1.0 / v,
+         _camshaft_orbits, "load-diagram angles per revolution the camshaft-bearing orbits are "
+         "marched on (the run's grid resampled; a rung at or above the run's grid marches on "
+         "it)", integer=True),
+    Knob("crank_step", "solver.crank_step", (4.0, 2.0, 1.0, 0.5, 0.25), lambda v: v, _engine,
+         "crank-angle step of the load diagrams and orbits [deg]"),
+    Knob("period_tolerance", "solver.period_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, _engine_orbits,
+         "cycle-to-cycle change of eps that counts as a periodic crank-bearing orbit"),
+    Knob("step_tolerance", "solver.step_tolerance", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9),
+         lambda v: v, _engine_orbits, "error per time step of the crank-bearing orbit march"),
+    Knob("pressure_interpolation", "solver.pressure_interpolation",
+         ("linear", "periodic_cubic"), _choice_step(("linear", "periodic_cubic")), _engine,
+         "cylinder pressure between table angles (model choice; reference: periodic_cubic)"),
+    Knob("mobility", "solver.mobility", ("booker", "exact"),
+         _choice_step(("booker", "exact")), _engine_orbits,
+         "short-bearing mobility (model choice; reference: the exact pi-film inversion)"),
+    # transient film (docs/transient_film.md)
+    Knob("film_angle_step", "solver.film_angle_step", (2.0, 1.0, 0.5, 0.25, 0.125),
+         lambda v: v, _transient_film, "cam-angle step of the transient film march [deg]"),
+    Knob("film_nodes", "solver.film_nodes", (51, 101, 201, 401, 801, 1601),
+         lambda v: 1.0 / (v - 1), _averaged_reynolds,
+         "nodes across the contact zone of the averaged Reynolds film", integer=True),
+    Knob("film_zone_width", "solver.film_zone_width", (2.0, 4.0, 8.0, 16.0),
+         lambda v: 1.0 / v, _averaged_reynolds,
+         "half width of the averaged Reynolds zone in Hertz half widths"),
+    Knob("film_tolerance", "solver.film_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8),
+         lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
+    Knob("piston_crank_step", "piston.solver.crank_step", (4.0, 2.0, 1.0, 0.5),
+         lambda v: v, lambda raw: "piston" in raw,
+         "crank-angle step of the inter-ring gas and ring-film marches [deg]"),
+    Knob("ring_tolerance", "piston.solver.ring_tolerance", (1e-2, 1e-3, 1e-4, 1e-5, 1e-6),
+         lambda v: v, lambda raw: "piston" in raw,
+         "cyclic tolerance of the ring-film march"),
+    Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, lambda raw: "piston" in raw,
+         "iteration and cyclic tolerance of the inter-ring gas march"),
+    Knob("steps_per_degree", "dynamics.steps_per_degree", (2.0, 4.0, 8.0, 16.0, 32.0, 64.0),
+         lambda v: 1.0 / v, lambda raw: _dynamics(raw) and not _adaptive(raw),
+         "time steps per degree of cam of the valve-train dynamics",
+         ladder_for=_coupled_ladder("steps_per_degree")),
+    Knob("spring_elements", "dynamics.spring_elements", (4, 8, 16, 32), lambda v: 1.0 / v,
+         _spring_chain, "elements of the valve-spring chain (surge)", integer=True),
+    Knob("dynamics_rtol", "dynamics.rtol", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9), lambda v: v,
+         _adaptive, "relative tolerance of the adaptive dynamics integrator"),
+)}
