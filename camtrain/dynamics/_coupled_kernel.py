@@ -19,6 +19,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from camtrain.numerics.roots import false_position, illinois_update
+
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
 MAX_SWITCHES = 8
 
@@ -270,17 +272,8 @@ def _crossing(k, c, d0, dd0, d1, dd1, h):
         px = _psi(k, c, val, der)
         if abs(px) <= 1e-13 * (abs(plo) + abs(phi)) or hi - lo < 1e-12:
             break
-        if (px > 0.0) == (plo > 0.0):
-            lo, plo = x, px
-            if side == -1:
-                phi *= 0.5
-            side = -1
-        else:
-            hi, phi = x, px
-            if side == 1:
-                plo *= 0.5
-            side = 1
-        x = lo + (hi - lo) * plo / (plo - phi)
+        lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
+        x = false_position(lo, plo, hi, phi)
     return x
 
 

@@ -27,6 +27,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from camtrain.numerics.roots import false_position, illinois_update
+
 MAX_SWITCHES = 8
 
 
@@ -313,17 +315,8 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                     - level
                 if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
                     break
-                if (px > 0.0) == (plo > 0.0):
-                    lo, plo = x, px
-                    if side == -1:
-                        phi *= 0.5
-                    side = -1
-                else:
-                    hi, phi = x, px
-                    if side == 1:
-                        plo *= 0.5
-                    side = 1
-                x = lo + (hi - lo) * plo / (plo - phi) if plo != phi else 0.5 * (lo + hi)
+                lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
+                x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
             hx = x * h
             work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
                                rat) * 0.5 * hx

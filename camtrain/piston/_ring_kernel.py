@@ -12,6 +12,8 @@ import math
 import numpy as np
 from numba import njit
 
+from camtrain.numerics.roots import false_position_mean, illinois_update
+
 RUPTURE_SCAN = 16
 #: Films below this [m] count as equal in the cyclic convergence of a self-fed ring: a dry ring
 #: (the march's floor is 0.1 nm), three orders below any ring's roughness.
@@ -80,23 +82,14 @@ def _illinois(kind, lo, hi, f_lo, f_hi, tol, p0, p1, p2, p3, p4, p5, p6, p7):
     side = 0
     x = lo
     for _ in range(200):
-        x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+        x = false_position_mean(lo, f_lo, hi, f_hi)
         if kind == 0:
             fx = _rupture_residual(x, p0, p1, p2, p3, p4, p5, p6)
         else:
             fx = _reform_residual(x, p0, p1, p2, p3, p4, p5, p6)
         if fx == 0.0 or hi - lo < tol:
             return x
-        if (fx > 0.0) == (f_lo > 0.0):
-            lo, f_lo = x, fx
-            if side == -1:
-                f_hi *= 0.5
-            side = -1
-        else:
-            hi, f_hi = x, fx
-            if side == 1:
-                f_lo *= 0.5
-            side = 1
+        lo, f_lo, hi, f_hi, side = illinois_update(lo, f_lo, hi, f_hi, x, fx, side)
     return x
 
 
@@ -235,21 +228,13 @@ def state(h, V, U, eta, p_above, p_below, layer, height, radius, x_min, tension,
         if r_hi <= 0.0:
             side = 0
             for _ in range(60):
-                mid = (lo * r_hi - hi * r_lo) / (r_hi - r_lo)
+                mid = false_position_mean(lo, r_lo, hi, r_hi)
                 f_mid = film(h, V, u, eta, p_in, p_out, height, x_c, radius, mid, striated,
                              starved)
                 r_mid = f_mid[7] - supply
-                if r_mid > 0.0:
-                    lo, r_lo = mid, r_mid
-                    if side == -1:
-                        r_hi *= 0.5
-                    side = -1
-                else:
-                    hi, r_hi = mid, r_mid
+                lo, r_lo, hi, r_hi, side = illinois_update(lo, r_lo, hi, r_hi, mid, r_mid, side)
+                if side == 1:                   # the inlet at mid draws no more than the layer
                     x1, f = mid, f_mid
-                    if side == 1:
-                        r_lo *= 0.5
-                    side = 1
                 if hi - lo < 1e-9 * height or r_mid == 0.0:
                     break
     gas = 0.0
@@ -301,20 +286,11 @@ def step(h0, g0, dth, w, trapezoid, U, eta, pa, pb, layer, height, radius, x_min
     elif hi > lo and r_hi != r_lo:                                  # Illinois regula falsi in log h
         side = 0
         for _ in range(200):
-            x = (lo * r_hi - hi * r_lo) / (r_hi - r_lo)
+            x = false_position_mean(lo, r_lo, hi, r_hi)
             fx = _residual(x, *args)
             if fx == 0.0 or hi - lo < 1e-10:
                 break
-            if (fx > 0.0) == (r_lo > 0.0):
-                lo, r_lo = x, fx
-                if side == -1:
-                    r_hi *= 0.5
-                side = -1
-            else:
-                hi, r_hi = x, fx
-                if side == 1:
-                    r_lo *= 0.5
-                side = 1
+            lo, r_lo, hi, r_hi, side = illinois_update(lo, r_lo, hi, r_hi, x, fx, side)
     h1 = math.exp(x)
     g = 2.0 * (h1 - h0) / dth - g0 if trapezoid else (h1 - h0) / dth
     return h1, g

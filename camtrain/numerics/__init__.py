@@ -1,0 +1,1 @@
+"""Compiled scalar numerics shared by the physics kernels (numba); below every physics package."""
