@@ -241,6 +241,8 @@ def finite_steady(bearing: JournalBearing, load: float, omega_journal: float,
 def _root_logit(gap, e0: float, tol: float, load: float) -> float:
     """Root of the increasing ``gap(eps)`` on (0, 1): bracket outward from ``e0`` in
     x = log(eps / (1 - eps)), then Illinois false position until the bracket is < tol in eps."""
+    from camtrain.numerics.roots import false_position, illinois_update  # numba: load on use
+
     def ex(x):
         return 1.0 / (1.0 + math.exp(-x))
 
@@ -262,23 +264,14 @@ def _root_logit(gap, e0: float, tol: float, load: float) -> float:
     (a, ga), (b, gb) = sorted(((x0, g0), (x1, g1)))
     side = 0
     for _ in range(100):
-        x = b - gb * (b - a) / (gb - ga)
+        x = false_position(b, gb, a, ga)
         g = gap(ex(x))
         if g == 0.0:
             return ex(x)
-        if (g < 0.0) == (ga < 0.0):
-            a, ga = x, g
-            if side == -1:
-                gb *= 0.5
-            side = -1
-        else:
-            b, gb = x, g
-            if side == 1:
-                ga *= 0.5
-            side = 1
+        a, ga, b, gb, side = illinois_update(a, ga, b, gb, x, g, side)
         if ex(b) - ex(a) < tol or abs(g) < 1e-13:
             break
-    return ex(a - ga * (b - a) / (gb - ga))
+    return ex(false_position(a, ga, b, gb))
 
 
 def _poiseuille(field: FilmField) -> float:
