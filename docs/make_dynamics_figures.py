@@ -30,6 +30,16 @@ def _period(u, dt):
     return float((t[-1] - t[0]) / (t.size - 1))
 
 
+def _finish(fig, ax, xlabel, ylabel, title, name):
+    """Label a log-log convergence plot, add its legend and grid, and write it to docs/img."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+    fig.savefig(IMG / name, dpi=110)
+
+
 def sdof_figure():
     import numpy as np
     from matplotlib.figure import Figure
@@ -56,12 +66,9 @@ def sdof_figure():
     ax.axhline(0.1, color="grey", ls="--", lw=0.8)
     ax.axvline(2 * math.pi / math.sqrt(12e-3), color="grey", ls=":", lw=0.8)
     ax.text(60, 0.12, "0.1 % from 57.4 steps per period", fontsize=8)
-    ax.set_xlabel("steps per natural period T/Δt [-]")
-    ax.set_ylabel("period error [%]")
-    ax.set_title("Single-mass train: period against the step (k_e by the series rule)")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3, which="both")
-    fig.savefig(IMG / "dynamics_sdof_period.png", dpi=110)
+    _finish(fig, ax, "steps per natural period T/Δt [-]", "period error [%]",
+            "Single-mass train: period against the step (k_e by the series rule)",
+            "dynamics_sdof_period.png")
     slope = np.polyfit(np.log(1.0 / per), np.log(err["newmark"]), 1)[0]
     at58 = 100 * err["newmark"][list(per).index(58)]
     print(f"SDOF: newmark period error slope {slope:.3f}; at T/58 {at58:.3g} %")
@@ -93,12 +100,8 @@ def surge_figure():
     ax.loglog(ns, 100 * np.abs(modes[2] / f1 - 1) * (8.0 / ns) ** 2, ":", color="grey",
               label="N⁻²")
     ax.axhline(1.0, color="grey", ls="--", lw=0.8)
-    ax.set_xlabel("spring elements N [-]")
-    ax.set_ylabel("error against the continuum [%]")
-    ax.set_title("Zeta valve spring as an N-mass chain")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3, which="both")
-    fig.savefig(IMG / "dynamics_surge.png", dpi=110)
+    _finish(fig, ax, "spring elements N [-]", "error against the continuum [%]",
+            "Zeta valve spring as an N-mass chain", "dynamics_surge.png")
     print("surge: " + ", ".join(f"N={n}: {m:.2f} Hz ({100 * (m / f1 - 1):+.2f} %)"
                                 for n, m in zip(ns, modes, strict=True)))
 
