@@ -18,9 +18,14 @@ from camtrain.dynamics.contact_law import (
     line_contact_approach,
     line_contact_compliance,
 )
-from camtrain.dynamics.findings import findings
 from camtrain.errors import InputError
-from tests.dynamics.conftest import SINGLE_RATE, deck_of, kinematics_of, zeta_raw
+from tests.dynamics.conftest import (
+    SINGLE_RATE,
+    assert_integrators_agree,
+    deck_of,
+    kinematics_of,
+    zeta_raw,
+)
 
 HERTZ = {"contact_model": "hertz_line", "contact_stiffness": None}
 #: Zeta cam and follower (Yang 1992 App C): compliances (1 - nu^2)/E, cam width, dome radius
@@ -100,18 +105,7 @@ def test_integrators_agree_with_the_hertz_contact(zeta_hertz):
     load within 0.5 %, first separation within 0.2 deg (reference notes L10), two revolutions
     from rest (the same transient for all three)."""
     deck, kin = zeta_hertz
-    out = {}
-    for name, refine in (("newmark", 1), ("central_difference", 2), ("lsoda", 1)):
-        s = dynamic_setup(deck, kin, omega=2000.0 * math.pi / 30,
-                          overrides={"integrator": name, "cycles_min": 2, "cycles_max": 2})
-        resp = march(s.model, s.cam, s.base,
-                     replace(s.settings, substeps=s.settings.substeps * refine))
-        flights = [x for x in findings(resp).separations if x.in_flight]
-        out[name] = (float(np.max(resp.contact_force[0])), flights[0].loss)
-    peak, angle = out["lsoda"]
-    for name in ("newmark", "central_difference"):
-        assert out[name][0] == pytest.approx(peak, rel=5e-3)
-        assert abs(math.degrees(out[name][1] - angle)) < 0.2
+    assert_integrators_agree(deck, kin, rpm=2000.0, cycles=2)
 
 
 @pytest.mark.parametrize(("changes", "field"), [
