@@ -96,20 +96,34 @@ def run_chunk(fn: Callable, chunk: list) -> list:
     return [fn(job) for job in chunk]
 
 
-def _worker_started() -> None:
-    """In each worker, first: SIGTERM ends it at once. (A forked worker inherits the sweep's
-    handler, which turns SIGTERM into an interrupt for the parent to clean up after.)"""
+def _serve(conn) -> None:
+    """A worker's life: SIGTERM ends it at once (a forked worker inherits the sweep's handler,
+    which turns SIGTERM into an interrupt for the parent to clean up after); import what a case
+    needs, say so, then run chunks until told to stop or the sweep has gone."""
     import signal
 
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
-
-
-def _ready() -> int:
-    """A worker's first task: it has started and imported what a case needs."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)   # Ctrl-C reaches the whole group: the parent decides
     import camtrain.runner  # noqa: F401 - the import is the work
     import camtrain.study.case_model  # noqa: F401
 
-    return os.getpid()
+    conn.send(("ready", os.getpid()))
+    while True:
+        try:
+            task = conn.recv()
+        except (EOFError, OSError):   # the sweep has ended or been killed
+            return
+        if task is None:
+            return
+        fn, chunk = task
+        try:
+            reply = ("done", run_chunk(fn, chunk))
+        except BaseException as exc:  # noqa: BLE001 - reported to the parent, which raises it
+            reply = ("raised", f"{type(exc).__name__}: {exc}")
+        try:
+            conn.send(reply)
+        except OSError:   # the sweep has gone
+            return
 
 
 def _fork_is_safe() -> bool:
@@ -122,78 +136,121 @@ def _fork_is_safe() -> bool:
     return sys.platform.startswith("linux") and threading.active_count() == 1
 
 
+class _Worker:
+    """One worker process and this process's end of its pipe; at most one chunk in flight."""
+
+    def __init__(self, context):
+        parent_end, child_end = context.Pipe()
+        self.process = context.Process(target=_serve, args=(child_end,), daemon=True)
+        self.process.start()
+        child_end.close()
+        self.conn = parent_end
+        self.ready = False
+        self.chunk: list | None = None
+
+    def died(self) -> str:
+        return f"a sweep worker (pid {self.process.pid}) died (exit code {self.process.exitcode})"
+
+
 class ProcessExecutor:
     """``--jobs N``: this process and N - 1 worker processes share the cases.
 
     The workers start when the executor is made and each first reports that it is ready; only
-    then do they get cases. The cases go out in chunks (about eight per process); this process
-    works through chunks from the end of the queue from the start, the ready workers take chunks
-    from the front, and when the queue is empty, chunks that no worker has started yet are taken
-    back and run here. A sweep that this process finishes before the workers are ready does not
-    wait for them. Workers are forked while this process runs no other thread (they start at
-    once, with everything imported and the deck loaded) and spawned otherwise: forking a
-    threaded process can deadlock. Results arrive in completion order (the output layer sorts
-    by case).
+    then do they get cases. The cases go out in chunks (about eight per process): each ready
+    worker holds one chunk at a time, taken from the front of the queue, while this process
+    works through chunks from the end. A sweep that this process finishes before the workers
+    are ready does not wait for them. Workers are forked while this process runs no other
+    thread (they start at once, with everything imported and the deck loaded) and spawned
+    otherwise: forking a threaded process can deadlock.
+
+    Each worker talks over a pipe of its own and this process reads them itself, with no
+    helper thread: a worker killed while it sends (SIGTERM to the sweep) leaves no thread
+    waiting on half a message, so an interrupted sweep always exits. Results arrive in
+    completion order (the output layer sorts by case).
     """
 
     def __init__(self, jobs: int):
         import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
 
         self.jobs = jobs
         method = "fork" if _fork_is_safe() else "spawn"
         self.description = f"{jobs} processes (this one and {jobs - 1} {method}ed workers)"
-        self._pool = ProcessPoolExecutor(max_workers=max(jobs - 1, 1),
-                                         mp_context=multiprocessing.get_context(method),
-                                         initializer=_worker_started)
-        self._ready = [self._pool.submit(_ready) for _ in range(max(jobs - 1, 1))]
+        context = multiprocessing.get_context(method)
+        self._workers = [_Worker(context) for _ in range(max(jobs - 1, 1))]
+
+    def _receive(self, worker: _Worker) -> list:
+        """What a worker has sent: its ready report, or a finished chunk's records."""
+        try:
+            kind, payload = worker.conn.recv()
+        except (EOFError, OSError):
+            raise RuntimeError(worker.died()) from None
+        if kind == "ready":
+            worker.ready = True
+            return []
+        worker.chunk = None
+        if kind == "raised":
+            raise RuntimeError(f"in a sweep worker: {payload}")
+        return payload
+
+    def _poll(self, timeout: float | None) -> list:
+        """Records of the chunks finished within ``timeout`` (None: wait for the first)."""
+        from multiprocessing.connection import wait
+
+        waiting = {w.conn: w for w in self._workers if not w.ready or w.chunk is not None}
+        if not waiting:
+            return []
+        sentinels = {w.process.sentinel: w for w in waiting.values()}
+        ready = wait([*waiting, *sentinels], timeout)
+        out: list = []
+        for conn in (c for c in ready if c in waiting):
+            out += self._receive(waiting[conn])
+        for worker in (sentinels[s] for s in ready if s in sentinels):
+            # ended: what it sent before it ended was read above (a dead pipe reads as EOF)
+            if worker.conn not in ready:
+                raise RuntimeError(worker.died())
+        return out
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
         from collections import deque
-        from concurrent.futures import FIRST_COMPLETED, wait
 
         jobs = list(jobs)
         size = max(1, min(100, len(jobs) // (8 * self.jobs)))
         pending = deque(jobs[i:i + size] for i in range(0, len(jobs), size))
-        inflight: dict = {}
-        try:
-            while pending or inflight:
-                ready = sum(f.done() and not f.exception() for f in self._ready)
-                while pending and len(inflight) < 2 * ready:
-                    chunk = pending.popleft()
-                    inflight[self._pool.submit(run_chunk, fn, chunk)] = chunk
-                for fut in [f for f in inflight if f.done()]:
-                    del inflight[fut]
-                    yield from fut.result()
-                if pending:
-                    yield from run_chunk(fn, pending.pop())
-                    continue
-                idle = [f for f in inflight if f.cancel()]   # not started by any worker
-                for fut in idle:
-                    yield from run_chunk(fn, inflight.pop(fut))
-                if inflight and not idle:
-                    wait(list(inflight), return_when=FIRST_COMPLETED)
-        finally:
-            for fut in inflight:
-                fut.cancel()
+        while pending or any(w.chunk is not None for w in self._workers):
+            for worker in self._workers:
+                if worker.ready and worker.chunk is None and pending:
+                    worker.chunk = pending.popleft()
+                    worker.conn.send((fn, worker.chunk))
+            yield from self._poll(0)
+            if pending:
+                yield from run_chunk(fn, pending.pop())
+            else:   # the queue is empty: wait for the chunks still out
+                yield from self._poll(None)
 
     def close(self) -> None:
-        if all(f.done() for f in self._ready):
-            self._pool.shutdown(wait=True, cancel_futures=True)
-        else:   # a worker still starting has nothing to finish: stop it rather than wait
-            self.abort()
+        """Tell ready workers to stop and wait for them; stop those still starting."""
+        for worker in self._workers:
+            if worker.ready and worker.chunk is None:
+                try:
+                    worker.conn.send(None)
+                except OSError:
+                    pass
+        for worker in self._workers:
+            if worker.ready and worker.chunk is None:
+                worker.process.join(timeout=10)
+        self.abort()
 
     def abort(self) -> None:
-        """Stop at once: cancel what has not started and terminate the workers."""
-        processes = list((getattr(self._pool, "_processes", None) or {}).values())
-        self._pool.shutdown(wait=False, cancel_futures=True)
-        for proc in processes:
-            if proc.is_alive():
-                proc.terminate()
-        for proc in processes:
-            proc.join(timeout=5)
-            if proc.is_alive():
-                proc.kill()
+        """Stop at once: terminate the workers (what they were running is dropped)."""
+        for worker in self._workers:
+            if worker.process.is_alive():
+                worker.process.terminate()
+        for worker in self._workers:
+            worker.process.join(timeout=5)
+            if worker.process.is_alive():
+                worker.process.kill()
+                worker.process.join(timeout=5)
+            worker.conn.close()
 
 
 class DaskExecutor:

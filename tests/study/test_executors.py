@@ -1,0 +1,51 @@
+"""The local process pool of `sweep --jobs N`: no helper thread, a dead worker is reported."""
+from __future__ import annotations
+
+import os
+import threading
+import time
+
+import pytest
+
+from camtrain.study.executors import ProcessExecutor, SerialExecutor
+
+PARENT = os.getpid()
+
+
+def _square(x: int) -> int:
+    time.sleep(0.002)
+    return x * x
+
+
+def _dies_in_a_worker(x: int) -> int:
+    if os.getpid() != PARENT:
+        os._exit(9)
+    time.sleep(0.02)
+    return x
+
+
+def test_process_pool_gives_every_result_and_runs_no_thread_of_its_own():
+    # a thread reading the workers' pipes could be left waiting on half a message when a
+    # worker is killed mid-send, and would then keep an interrupted sweep from exiting
+    pool = ProcessExecutor(3)
+    try:
+        results, threads = [], set()
+        for value in pool.map(_square, range(200)):
+            results.append(value)
+            threads.add(threading.active_count())
+    finally:
+        pool.close()
+    assert sorted(results) == [x * x for x in range(200)]
+    assert sorted(results) == sorted(SerialExecutor().map(_square, range(200)))
+    assert threads == {1}
+    assert not any(w.process.is_alive() for w in pool._workers)
+
+
+def test_a_worker_that_dies_is_reported_not_waited_for():
+    pool = ProcessExecutor(2)
+    try:
+        with pytest.raises(RuntimeError, match=r"sweep worker \(pid \d+\) died \(exit code 9\)"):
+            list(pool.map(_dies_in_a_worker, range(400)))
+    finally:
+        pool.abort()
+    assert not any(w.process.is_alive() for w in pool._workers)
