@@ -10,7 +10,7 @@ import os
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
-from camtrain.errors import CamtrainError
+from camtrain.errors import EXIT_INTERNAL, CamtrainError
 from camtrain.study.sweep import Case, Parameter
 
 #: Per-angle columns kept for the overlay plots (film, load, stress; lift for kinematics-only runs).
@@ -96,6 +96,13 @@ def run_chunk(fn: Callable, chunk: list) -> list:
     return [fn(job) for job in chunk]
 
 
+class WorkerLost(CamtrainError):
+    """A worker process ended without finishing its chunk (killed from outside, out of memory,
+    a crash in compiled code): the sweep stops, its finished cases kept."""
+
+    exit_code = EXIT_INTERNAL
+
+
 def _serve(conn) -> None:
     """A worker's life: SIGTERM ends it at once (a forked worker inherits the sweep's handler,
     which turns SIGTERM into an interrupt for the parent to clean up after); import what a case
@@ -148,8 +155,11 @@ class _Worker:
         self.ready = False
         self.chunk: list | None = None
 
-    def died(self) -> str:
-        return f"a sweep worker (pid {self.process.pid}) died (exit code {self.process.exitcode})"
+    def died(self) -> WorkerLost:
+        self.process.join(timeout=1)
+        return WorkerLost(f"a sweep worker (pid {self.process.pid}) died (exit code "
+                          f"{self.process.exitcode}); the finished cases are in sweep.csv, "
+                          "continue with --resume")
 
 
 class ProcessExecutor:
@@ -183,7 +193,7 @@ class ProcessExecutor:
         try:
             kind, payload = worker.conn.recv()
         except (EOFError, OSError):
-            raise RuntimeError(worker.died()) from None
+            raise worker.died() from None
         if kind == "ready":
             worker.ready = True
             return []
@@ -207,7 +217,7 @@ class ProcessExecutor:
         for worker in (sentinels[s] for s in ready if s in sentinels):
             # ended: what it sent before it ended was read above (a dead pipe reads as EOF)
             if worker.conn not in ready:
-                raise RuntimeError(worker.died())
+                raise worker.died()
         return out
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
@@ -220,7 +230,10 @@ class ProcessExecutor:
             for worker in self._workers:
                 if worker.ready and worker.chunk is None and pending:
                     worker.chunk = pending.popleft()
-                    worker.conn.send((fn, worker.chunk))
+                    try:
+                        worker.conn.send((fn, worker.chunk))
+                    except OSError:   # it ended since it last reported
+                        raise worker.died() from None
             yield from self._poll(0)
             if pending:
                 yield from run_chunk(fn, pending.pop())

@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from camtrain.study.executors import ProcessExecutor, SerialExecutor
+from camtrain.study.executors import ProcessExecutor, SerialExecutor, WorkerLost
 
 PARENT = os.getpid()
 
@@ -44,7 +44,7 @@ def test_process_pool_gives_every_result_and_runs_no_thread_of_its_own():
 def test_a_worker_that_dies_is_reported_not_waited_for():
     pool = ProcessExecutor(2)
     try:
-        with pytest.raises(RuntimeError, match=r"sweep worker \(pid \d+\) died \(exit code 9\)"):
+        with pytest.raises(WorkerLost, match=r"sweep worker \(pid \d+\) died \(exit code 9\)"):
             list(pool.map(_dies_in_a_worker, range(400)))
     finally:
         pool.abort()

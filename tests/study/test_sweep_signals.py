@@ -42,3 +42,25 @@ def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_pat
     assert not alive, f"workers still running after SIGTERM: {[p.pid for p in alive]}"
     assert proc.returncode == 143, err.decode()
     assert b"--resume" in err and b"Traceback" not in err
+
+
+def test_a_worker_killed_from_outside_ends_the_sweep_with_a_message(fast_flat, tmp_path):
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(fast_flat), "-p", "speed",
+           "--range", "1000:3000:20000", "-j", "2", "--no-plots", "-q", "--out", str(tmp_path / "s")]
+    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    parent = psutil.Process(proc.pid)
+    workers: list = []
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None and not workers:
+        workers = [p for p in parent.children(recursive=True)
+                   if "resource_tracker" not in " ".join(p.cmdline())]
+        time.sleep(0.2)
+    assert workers, f"the sweep never started its worker: {proc.poll()}"
+    time.sleep(0.5)
+    assert proc.poll() is None, "the sweep ended before its worker could be killed"
+    workers[0].kill()
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == 70, err.decode()
+    assert b"died (exit code -9)" in err and b"--resume" in err and b"Traceback" not in err
+    assert (tmp_path / "s" / "sweep.csv").exists()
