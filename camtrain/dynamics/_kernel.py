@@ -286,11 +286,9 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
             if first < 0 or switches >= MAX_SWITCHES:
                 if first >= 0:
                     cut += 1
-                # accept: cam work by the trapezoid rule over the (sub)step
-                work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
-                                   rat) * 0.5 * h
-                work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt, law, hz,
-                                   rad, rat) * 0.5 * h
+                # accept the (sub)step
+                work = _cam_work(work, u, v, u1, v1, act, node, k, c, off, b, bd, n, tau, h,
+                                 dt, law, hz, rad, rat)
                 u[:] = u1
                 v[:] = v1
                 a[:] = a1
@@ -318,10 +316,8 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                 lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
                 x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
             hx = x * h
-            work += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
-                               rat) * 0.5 * hx
-            work += _cam_power(us, vs, act, node, k, c, off, b, bd, n, tau + hx, dt, law, hz,
-                               rad, rat) * 0.5 * hx
+            work = _cam_work(work, u, v, us, vs, act, node, k, c, off, b, bd, n, tau, hx, dt,
+                             law, hz, rad, rat)
             u[:] = us
             v[:] = vs
             tau += hx
@@ -365,6 +361,18 @@ def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat)
     else:
         g = k[0] * delta
     return (g + c[0] * (bdj - v[node[0]])) * bdj
+
+
+@njit(cache=True)
+def _cam_work(work, u0, v0, u1, v1, act, node, k, c, off, b, bd, n, tau, h, dt, law, hz, rad,
+              rat):
+    """``work`` plus the cam's work over a (sub)step of length h by the trapezoid rule (the
+    two halves added in turn, as the march always has)."""
+    work += _cam_power(u0, v0, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat) \
+        * 0.5 * h
+    work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt, law, hz, rad, rat) \
+        * 0.5 * h
+    return work
 
 
 @njit(cache=True)
