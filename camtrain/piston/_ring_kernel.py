@@ -192,6 +192,17 @@ def _half_sommerfeld(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, c1, c2, c3
 
 
 @njit(cache=True)
+def _partial_film(f, phi, p_out, b):
+    """A film filling the fraction ``phi`` of the circumference (streamers): its hydrodynamic
+    load, shear and flows scale with phi; the gas on the face past its rupture line does not."""
+    gas = 0.0
+    if f[5] and f[4] == f[3] and f[3] < b:
+        gas = max(p_out, 0.0) * (b - f[3])
+    return (gas + phi * (f[0] - gas), phi * f[1], phi * f[2], f[3], f[4], f[5], f[6],
+            phi * f[7])
+
+
+@njit(cache=True)
 def _frame(U, x_min, height, p_above, p_below):
     if U >= 0.0:
         return 1.0, x_min, p_above, p_below
@@ -214,18 +225,27 @@ def state(h, V, U, eta, p_above, p_below, layer, height, radius, x_min, tension,
     if starved:
         x1 = inlet_position(2.0 * layer, h, x_c, radius)
     f = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x1, striated, starved)
-    if starved and f[7] > u * layer and x1 < x_c:
+    if starved and f[7] > u * layer:
         # continuity (Yang 5.34): the ring cannot draw more oil through its inlet meniscus than
         # the layer brings; move the inlet downstream (less inlet film) until the flows match
-        # (Illinois regula falsi on the excess inflow; at the minimum gap if even there it draws
-        # more)
+        # (Illinois regula falsi on the excess inflow)
         supply = u * layer
         lo, r_lo = x1, f[7] - supply
-        f_hi = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x_c, striated, starved)
+        f_hi = f
+        if x1 < x_c:
+            f_hi = film(h, V, u, eta, p_in, p_out, height, x_c, radius, x_c, striated, starved)
         hi, r_hi = x_c, f_hi[7] - supply
         x1 = x_c
         f = f_hi
-        if r_hi <= 0.0:
+        if r_hi > 0.0:
+            # no inlet position satisfies continuity: the layer cannot fill the conjunction even
+            # from the minimum gap. The film splits into streamers (the finger pattern of Yang
+            # §5.3.2.3) that fill a fraction phi = supply / inflow of the circumference: the
+            # ring's load beyond them rests on its asperities, and the oil drawn is the layer
+            # brought (eq. 5.34 with equality); phi = 1 is the full film with its inlet at the
+            # minimum gap, and phi -> 0 no film at all
+            f = _partial_film(f_hi, supply / f_hi[7], p_out, height)
+        elif lo < hi:
             side = 0
             for _ in range(60):
                 mid = false_position_mean(lo, r_lo, hi, r_hi)

@@ -73,3 +73,60 @@ def test_cavitated_film_satisfies_its_boundary_conditions(V, p_in, p_out):
     film = ring_film(*args)
     assert film.cavitated and not film.fallback
     assert film.load == pytest.approx(_numeric_load(*args, film), rel=1e-5)
+
+
+def _starved_state(h, layer, p_in=2e5, p_out=6e6, u=5.0, V=0.0):
+    """One starved instant of the Zeta top ring on the downstroke (the state kernel of the
+    march; ``U < 0``: the inlet is the crankcase-side flank)."""
+    from camtrain.piston import _ring_kernel as K
+
+    b, R, x_min, T = 1.484e-3, 0.063, 0.742e-3, 0.2e6
+    return K.state(h, V, -u, 0.005, p_out, p_in, layer, b, R, x_min, T, True), (b, x_min, T)
+
+
+def _film_from_the_minimum_gap(h, p_in=2e5, p_out=6e6, u=5.0, V=0.0):
+    from camtrain.piston import _ring_kernel as K
+
+    return K.film(h, V, u, 0.005, p_in, p_out, 1.484e-3, 0.742e-3, 0.063, 0.742e-3, True, True)
+
+
+def _threshold(h):
+    """The layer whose flow a film with its inlet at the minimum gap draws exactly."""
+    return _film_from_the_minimum_gap(h)[7] / 5.0
+
+
+@pytest.mark.parametrize("h, fraction", [(1e-9, 0.5), (50e-9, 0.3), (0.5e-6, 0.9)])
+def test_a_layer_too_thin_for_any_inlet_feeds_streamers_with_all_it_brings(h, fraction):
+    """Derived (Yang eq. 5.34, §5.3.2.3): a layer thinner than even an inlet at the minimum gap
+    draws cannot fill the conjunction; the film splits into streamers filling the fraction
+    phi = supply / inflow of the circumference: the inlet draws exactly the layer's flow
+    (continuity with equality), and the hydrodynamic load and shear are phi times the full
+    film's, the gas past the rupture line unchanged."""
+    u = 5.0
+    layer = fraction * _threshold(h)
+    ((load, shear, _, *_, inflow), _, _, gas), _ = _starved_state(h, layer)
+    full = _film_from_the_minimum_gap(h)
+    full_load, full_shear, full_gas = full[0], full[1], 6e6 * (1.484e-3 - full[3])
+    assert inflow == pytest.approx(u * layer, rel=1e-12)
+    assert gas == pytest.approx(full_gas, rel=1e-12)
+    assert load - gas == pytest.approx(fraction * (full_load - full_gas), rel=1e-12)
+    assert shear == pytest.approx(fraction * full_shear, rel=1e-12)
+
+
+@pytest.mark.parametrize("h", [1e-9, 50e-9, 0.5e-6])
+def test_the_starved_film_is_continuous_where_the_inlet_reaches_the_minimum_gap(h):
+    """Derived: at the layer that an inlet at the minimum gap draws exactly, the streamers
+    (phi -> 1) and the full film (inlet -> minimum gap) carry the same load and radial force, so
+    the film march meets no jump there."""
+    below, _ = _starved_state(h, _threshold(h) * (1 - 1e-7))
+    above, _ = _starved_state(h, _threshold(h) * (1 + 1e-7))
+    assert below[0][0] == pytest.approx(above[0][0], rel=1e-5)
+    assert below[1] == pytest.approx(above[1], rel=1e-5)
+def test_a_layer_thick_enough_forms_a_film_that_draws_no_more_than_it_brings():
+    """Derived (Yang eq. 5.34): where an inlet position exists the starved film forms and its
+    inlet draws no more than the layer brings; the film carries load."""
+    h, u = 50e-9, 5.0
+    for layer in (1.2 * _threshold(h), 2.0 * h, 10.0 * h):
+        ((load, _, _, *_, inflow), _, _, gas), _ = _starved_state(h, layer)
+        assert 0.0 < inflow <= u * layer * (1 + 1e-9)
+        assert load - gas > 0.0
