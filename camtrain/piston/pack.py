@@ -3,7 +3,9 @@
 Each ring leaves an oil layer h_l = Q/|U| on the liner behind it (eq. 5.35; h_m/2 when the film
 ruptures). The ring that follows meets that layer with its inlet where the face gap equals twice
 the layer ('elementary geometry'), and never draws more oil through its inlet than the layer
-brings (continuity, eq. 5.34; enforced in the film kernel by moving the inlet downstream). On
+brings (continuity, eq. 5.34; enforced in the film kernel by moving the inlet downstream, and
+where even an inlet at the minimum gap draws more, by streamers that fill only part of the
+circumference and draw all the layer brings). On
 the downstroke the bottom ring is flooded (splash); on the upstroke the top ring has only what it
 left on the liner on its previous downstroke (eq. 5.36). Just after a dead centre a following
 ring has not yet reached its leader's oil (it must travel the ring spacing): it meets what it
@@ -12,8 +14,10 @@ near TDC). Layers are mapped by liner position (depth below the top ring plus pi
 
 Passes (Table 6.1): every ring flooded; starved pass 1 from the bottom ring up; starved pass 2
 from the top ring down. Yang states two starved passes reach the fixed point for any number of
-rings; that holds for every ring but the top one, whose zone within one ring spacing of TDC is
-fed only by itself and drains under continuity pass after pass (docs/piston.md).
+rings; they do not: a ring's film near a dead centre is a squeeze film that remembers its
+previous stroke, so the second ring's downstroke just after TDC (which feeds the top ring) still
+moves when pass 2 changes its starved upstroke, and the top ring's zone within one ring spacing
+of TDC, fed only by itself, drains under continuity (docs/piston.md).
 """
 from __future__ import annotations
 
