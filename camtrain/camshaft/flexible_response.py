@@ -34,7 +34,7 @@ from camtrain.errors import field_error
 
 from .flexible import BeamShaft, ShaftSection, TorsionShaft, beam_shaft
 
-__all__ = ["camstar", "BendingResponse", "bending_response", "bearing_split",
+__all__ = ["camstar", "BendingResponse", "bending_response", "bearing_split", "lobe_receptance",
            "PendulumDamper", "torsion_response", "drive_acceleration"]
 
 
@@ -282,3 +282,33 @@ def torsion_response(shaft: TorsionShaft, torques, omega: float, dampers=(),
     phi = np.zeros((n_nodes, n))
     phi[shaft.free] = np.fft.irfft(X, n=n, axis=-1)
     return phi
+
+
+def lobe_receptance(shaft: BeamShaft, nodes, omega: float, orders) -> np.ndarray:
+    """Receptance of one bending plane between force stations: H[k, i, j] [m/N] is the
+    deflection of node ``nodes[i]`` at order k under a unit harmonic force at ``nodes[j]``
+    (the shaft's dynamic compliance, (K + i k w C - (k w)^2 M)^-1 restricted to those nodes).
+    The staggered coupling uses it for its interface Jacobian."""
+    from scipy.linalg import solve_banded
+
+    where = {int(dof): i for i, dof in enumerate(shaft.free)}
+    rows = np.array([where[int(shaft.v_index[int(n)])] for n in nodes])
+    K, M, C = shaft.K, shaft.M, shaft.C
+    size = K.shape[0]
+    pattern = (np.abs(K) + np.abs(M) + np.abs(C)) != 0
+    r, c = np.nonzero(pattern)
+    band = int(np.max(np.abs(r - c))) if r.size else 0
+    ab = np.zeros((3, 2 * band + 1, size))
+    for d in range(-band, band + 1):
+        for m, A in enumerate((K, M, C)):
+            ab[m, band - d, max(0, d):size + min(0, d)] = np.diagonal(A, d)
+    unit = np.zeros((size, rows.size))
+    unit[rows, np.arange(rows.size)] = 1.0
+    orders = np.asarray(orders)
+    H = np.empty((orders.size, rows.size, rows.size), dtype=complex)
+    for i, k in enumerate(orders):
+        w = float(k) * omega
+        X = solve_banded((band, band), ab[0] - (w * w) * ab[1] + 1j * w * ab[2], unit,
+                         check_finite=False)
+        H[i] = X[rows]
+    return H

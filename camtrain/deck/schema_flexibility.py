@@ -72,6 +72,16 @@ class CamshaftFlexibility:
         "Acceleration of the shaft/train iteration: quasi_newton (IQN-ILS, least-squares "
         "inverse Jacobian), aitken (adaptive relaxation) or fixed (constant relaxation)",
         default="quasi_newton")
+    coupling_preconditioner: Literal["interface_newton", "none"] = option(
+        "Staggered iteration: interface_newton (each pass's update is a Newton step of the "
+        "linear shaft and trains, cam contacts closed: it holds the iteration where the "
+        "contact drives a lightly damped shaft mode) or none (the raw residual)",
+        default="interface_newton")
+    coupling_start: Literal["rigid", "monolithic"] = option(
+        "Staggered iteration's start: rigid (the shaft's answer to every train's load on a "
+        "rigid shaft) or monolithic (the monolithic march's periodic state: the staggered "
+        "passes then check and refine it, and coupling_start_gap reports how far they moved)",
+        default="rigid")
     relaxation: float = quantity(
         "Relaxation of the lobe loads in the first pass of the shaft/train iteration; later "
         "passes adapt it (Aitken)", "-", default=0.5, gt=0, le=1)

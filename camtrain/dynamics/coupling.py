@@ -80,7 +80,9 @@ def lobe_input_perturbation(displacement, twist, ratio, valve_d1):
 
 def staggered(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *,
               tol: float = 1e-4, max_iterations: int = 30, relaxation: float = 0.5,
-              method: str = "quasi_newton", min_relaxation: float = 1e-3) -> CoupledState:
+              method: str = "quasi_newton", min_relaxation: float = 1e-3,
+              precondition: Callable[[np.ndarray], np.ndarray] | None = None,
+              columns: int = 0) -> CoupledState:
     """Fixed point x = H(x) of the shaft/train pass H (module notes).
 
     The interface unknown is the lobes' motion, not their loads: the shaft filters it, so it is
@@ -97,6 +99,10 @@ def staggered(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *
             ``method = "fixed"``).
         method: ``quasi_newton``, ``aitken`` or ``fixed`` (module notes).
         min_relaxation: smallest factor Aitken's rule may take.
+        precondition: a map of the residual H(x) - x to an update, e.g. the interface Newton
+            step (I - J)^-1 of :func:`camtrain.dynamics.interface.interface_newton`; the
+            passes then run on the preconditioned residual (the change is still the raw one).
+        columns: most past passes the quasi-Newton method keeps (0: all of them).
     """
     if method not in COUPLING_METHODS:
         raise ValueError(f"unknown coupling method {method!r}")
@@ -116,9 +122,14 @@ def staggered(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *
         history.append(change)
         if change <= tol:
             return CoupledState(new, it, change, True, tuple(history))
+        if precondition is not None:
+            residual = np.asarray(precondition(residual), dtype=float).reshape(x.shape)
+            new = x + residual
         if method == "quasi_newton":
             residuals.append(residual.ravel())
             outputs.append(new.ravel())
+            if columns and len(residuals) > columns + 1:
+                del residuals[0], outputs[0]
             if len(residuals) > 1:
                 V = np.column_stack([residuals[-1] - r for r in residuals[:-1]])
                 W = np.column_stack([outputs[-1] - o for o in outputs[:-1]])

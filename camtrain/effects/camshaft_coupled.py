@@ -109,8 +109,14 @@ def run(deck, inputs, res):
         return _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
                            contact, omega, theta)
     n = len(lobes)
-    start = np.array([shift_curve(np.maximum(single, 0.0), g) for g in gammas])
-    along0, twist0 = motion(solve_shaft(start))
+    marched = None
+    if f.coupling_start == "monolithic":
+        marched = _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
+                              contact, omega, theta, report=False)
+        along0, twist0 = motion(solve_shaft(marched))
+    else:
+        rigid = np.array([shift_curve(np.maximum(single, 0.0), g) for g in gammas])
+        along0, twist0 = motion(solve_shaft(rigid))
     # rows scaled so a pass's change weighs displacement and twist alike
     scale = np.array([max(float(np.max(np.abs(along0))), 1e-15),
                       max(float(np.max(np.abs(twist0))), 1e-15)])
@@ -120,9 +126,18 @@ def run(deck, inputs, res):
         along, twist = motion(solve_shaft(loads))
         return np.vstack([along / scale[0], twist / scale[1]])
 
-    state = staggered(one_pass, np.vstack([along0 / scale[0], twist0 / scale[1]]),
+    precondition = None
+    if f.coupling_preconditioner == "interface_newton":
+        precondition = _interface_newton(shaft, run_setup.model, axes, ratio, omega,
+                                         theta.size, n)
+    start = np.vstack([along0 / scale[0], twist0 / scale[1]])
+    if precondition is not None and marched is None:
+        # the start is the pass from the rigid shaft's motion (zero): take its Newton step
+        start = precondition(start)
+    state = staggered(one_pass, start,
                       tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
-                      relaxation=f.relaxation, method=f.coupling_method)
+                      relaxation=f.relaxation, method=f.coupling_method,
+                      precondition=precondition)
     loads = solve_trains(state.motion[:n] * scale[0], state.motion[n:] * scale[1])
     out = solve_shaft(loads)
     add_shaft(res, shaft, out, theta, cs.orders, omega)
@@ -130,6 +145,11 @@ def run(deck, inputs, res):
                      for j, g in enumerate(gammas)]
     _report(res, loads, accelerations, theta, "staggered iteration", state.iterations,
             state.change, state.converged, f.coupling_tolerance)
+    if marched is not None:
+        gap = float(np.max(np.abs(loads - marched))) / max(float(np.max(marched)), 1e-300)
+        res.add_metric("coupling_start_gap", gap, "-",
+                       "largest difference of any lobe's load between the staggered iteration "
+                       "and the monolithic march it started from, over the largest marched load")
     for j, g in enumerate(gammas):
         seps = findings(responses[j]).separations
         res.add_metric("separations", len(seps), "-",
@@ -138,6 +158,24 @@ def run(deck, inputs, res):
             res.add_event("contact_loss", math.remainder(s.loss + g, 2 * math.pi),
                           f"lobe {j + 1}: the cam loses the follower", component=f"lobe_{j + 1}")
     return out
+
+
+def _interface_newton(shaft, model, axes, ratio, omega, points, n):
+    """The staggered pass's linear Jacobian on the lobes' motion along their follower axes
+    (camtrain.dynamics.interface): shaft receptance between the lobes (both planes, projected
+    on the axes) times each train's dynamic contact stiffness, R^2 g."""
+    import numpy as np
+
+    from camtrain.camshaft.flexible_response import lobe_receptance
+    from camtrain.dynamics.interface import contact_stiffness, interface_newton
+
+    orders = np.arange(points // 2 + 1)
+    plane = lobe_receptance(shaft.beam, shaft.lobe_nodes, omega, orders)
+    along = plane * np.cos(axes[:, None] - axes[None, :])[None]
+    r2 = float(np.mean(ratio)) ** 2
+    train = contact_stiffness(model, omega, orders) * r2
+    # the load pushes the lobe away from its follower: -S G
+    return interface_newton(-along * train[:, None, None], slice(0, n))
 
 
 def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, change: float,
@@ -166,8 +204,9 @@ def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, ch
 
 
 def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, contact,
-                omega, theta):
-    """Every train and the shaft marched together (camtrain.dynamics.monolithic)."""
+                omega, theta, report: bool = True):
+    """Every train and the shaft marched together (camtrain.dynamics.monolithic); without
+    ``report`` only every lobe's marched load (shaft frame) is returned."""
     import numpy as np
 
     from camtrain.build.shaft import answer
@@ -224,6 +263,8 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
         torques.append(shift_curve(np.asarray(torque, dtype=float), g))
         loads.append(shift_curve(w, g))
     torques = np.array(torques)
+    if not report:
+        return np.array(loads)
     out = answer(deck, shaft, forces, torques, torques.sum(axis=0), omega, theta)
     add_shaft(res, shaft, out, theta, cs.orders, omega)
     _report(res, loads, result.valve_acceleration, theta, "monolithic march", result.cycles,
