@@ -140,8 +140,12 @@ def _start_index(lift: np.ndarray) -> int:
     return best
 
 
-def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings) -> TrainResponse:
-    """Periodic response of ``model`` driven by ``cam`` (see the module docstring)."""
+def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
+          start: TrainResponse | None = None) -> TrainResponse:
+    """Periodic response of ``model`` driven by ``cam`` (see the module docstring). ``start``:
+    a periodic response under a nearby input (e.g. the previous pass of an iteration); the
+    fixed-step march then starts from its state at the start angle instead of from rest, and
+    needs fewer revolutions (still at least ``cycles_min``)."""
     if settings.integrator not in INTEGRATORS:
         raise ValueError(f"unknown integrator {settings.integrator!r}")
     grid = cam.theta.size
@@ -169,6 +173,11 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings) 
     geometry = _geometry(model, cam, base, t, theta0)
     if settings.integrator in ("newmark", "central_difference"):
         runner = _FixedStep(model, inputs, rates, dt, sub, settings.integrator, geometry)
+        if start is not None and settings.integrator == "newmark":
+            runner.u = np.array(start.u[:, i0], dtype=float)
+            runner.v = np.array(start.v[:, i0], dtype=float)
+            runner.a = np.array(start.a[:, i0], dtype=float)
+            runner.act = start.contact_force[:, i0] > 0.0
     else:
         from camtrain.dynamics.adaptive import Adaptive
 
