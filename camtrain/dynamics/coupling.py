@@ -25,6 +25,10 @@ contact stiffness over the shaft's, exceeds 1). Two accelerations are offered (`
   w_k = -w_(k-1) r_(k-1).(r_k - r_(k-1)) / |r_k - r_(k-1)|^2, kept in [w_min, 1]; enough for a
   loop gain near 1.
 
+Either runs on the raw residual or on a preconditioned one (``precondition``): the interface
+Newton step of the linear shaft and trains (:mod:`camtrain.dynamics.interface`), without which
+no acceleration holds the iteration where a contact drives a lightly damped shaft mode.
+
 A stiff shaft makes p and phi vanish and returns every train's single-train solution (the limit
 the tests hold). The functions here take callables for the two halves, so neither knows the
 other's model.
