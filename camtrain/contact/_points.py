@@ -14,6 +14,6 @@ import numpy as np
 def at(value, use):
     """``value`` at the points ``use`` (a boolean mask over the field's shape) when it is an
     array of parameters, else ``value`` itself."""
-    if np.ndim(value) == 0:
+    if type(value) is float or np.ndim(value) == 0:   # a plain number: the single run's case
         return value
     return np.broadcast_to(value, np.shape(use))[use]

@@ -24,14 +24,21 @@ LOG_FLOAT_MAX = float(np.log(np.finfo(float).max))
 LOG_FLOAT_TINY = float(np.log(np.finfo(float).tiny))
 
 
+_FLOAT = np.dtype(float)
+_ndarray = np.ndarray
+
+
 def arr(x) -> np.ndarray:
     """Return ``x`` as a float ndarray (0-d for scalars); no copy when already float."""
+    if type(x) is _ndarray and x.dtype is _FLOAT:   # the chain's case: nothing to convert
+        return x
     return np.asarray(x, dtype=float)
 
 
 def out(x):
     """Return a Python float for 0-d results, the array otherwise (fluids-style scalar in, scalar out)."""
-    x = np.asarray(x)
+    if type(x) is not _ndarray:
+        x = np.asarray(x)
     return float(x) if x.ndim == 0 else x
 
 
@@ -42,6 +49,7 @@ def _first_bad(x: np.ndarray, bad: np.ndarray) -> tuple[int, float]:
 
 
 _TRUSTED: ContextVar[bool] = ContextVar("camtrain_trusted_inputs", default=False)
+_trusted = _TRUSTED.get
 
 
 @contextmanager
@@ -66,7 +74,7 @@ def check(name: str, x, ok, expected: str, hint: str = "") -> np.ndarray:
     """Raise a field error if any element of ``x`` fails ``ok`` (a boolean array or callable);
     inside :func:`trusted_inputs` only convert ``x``."""
     x = arr(x)
-    if _TRUSTED.get():
+    if _trusted():
         return x
     good = ok(x) if callable(ok) else np.asarray(ok)
     good = good & ~np.isnan(x)
@@ -79,15 +87,21 @@ def check(name: str, x, ok, expected: str, hint: str = "") -> np.ndarray:
 
 def positive(name: str, x, hint: str = "") -> np.ndarray:
     """Finite and strictly positive."""
+    if _trusted():   # the chain's inputs: converted, not checked (see check)
+        return arr(x)
     return check(name, x, lambda v: np.isfinite(v) & (v > 0), "a finite value > 0", hint)
 
 
 def non_negative(name: str, x, hint: str = "") -> np.ndarray:
     """Finite and >= 0."""
+    if _trusted():
+        return arr(x)
     return check(name, x, lambda v: np.isfinite(v) & (v >= 0), "a finite value >= 0", hint)
 
 
 def finite(name: str, x, hint: str = "") -> np.ndarray:
+    if _trusted():
+        return arr(x)
     return check(name, x, np.isfinite, "a finite number", hint)
 
 

@@ -45,9 +45,13 @@ def bounce_speeds(kin, mu=0.0, *, rate, preload_compression, valve_mass, body_in
     safe = np.where(ok, denom, 1.0)
     a, b = g0 / safe, g2 / safe
     limited = ok & (a > 0.0) & (b < 0.0)
-    speeds = np.full(np.broadcast_shapes(a.shape, b.shape, limited.shape), np.inf)
-    a, b = np.broadcast_to(a, speeds.shape), np.broadcast_to(b, speeds.shape)
-    limited = np.broadcast_to(limited, speeds.shape)
+    shape = limited.shape
+    if a.shape != shape or b.shape != shape:   # a batch's parameters: (cases, angles)
+        shape = np.broadcast_shapes(a.shape, b.shape, shape)
+        a, b = np.broadcast_to(a, shape), np.broadcast_to(b, shape)
+        limited = np.broadcast_to(limited, shape)
+    speeds = np.empty(shape)
+    speeds.fill(np.inf)
     speeds[limited] = np.sqrt(a[limited] / -b[limited])
     return speeds
 

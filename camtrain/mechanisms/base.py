@@ -39,6 +39,7 @@ arm_normal * q', valve_d1 = arm_valve * q', |V_s| = omega * (friction_arm - arm_
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
 from functools import cached_property
@@ -75,7 +76,7 @@ def kept(values: np.ndarray) -> np.ndarray:
 
 def check_speed(omega: float) -> None:
     """The camshaft speed must be a positive number of rad/s."""
-    if not (np.isfinite(omega) and omega > 0.0):
+    if not (omega > 0.0 and math.isfinite(omega)):
         raise field_error("speed.camshaft", "camshaft speed must be positive",
                           f"{omega * 60.0 / (2.0 * np.pi):g} rpm", "> 0 rpm")
 

@@ -8,6 +8,8 @@ train drives the valve.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from camtrain.errors import field_error
@@ -108,6 +110,13 @@ def unit_circle(theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.cos(theta), np.sin(theta)
 
 
+def _infinite(follower_radius) -> bool:
+    """A flat face: an infinite follower radius (one radius, or one per sweep case)."""
+    if type(follower_radius) is float:
+        return math.isinf(follower_radius)
+    return bool(np.all(np.isinf(follower_radius)))
+
+
 # ---------------------------------------------------------------- kernel shared with push rods
 def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offset, omega,
                         shape="spherical", taper_angle=None):
@@ -119,7 +128,7 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
     c, sn = unit_circle(theta)
     ax, ay, bx, by = -sn, c, c, sn       # follower axis and offset directions in the cam frame
     rb, e = base_radius, offset
-    if np.all(np.isinf(follower_radius)):   # (one radius, or one per sweep case)
+    if _infinite(follower_radius):
         rc = flat_cam_radius(s, s2, rb)
         vc, vf = flat_surface_velocities(s, s2, rb, omega)
         h = rb + s
@@ -127,8 +136,11 @@ def translating_contact(theta, s, s1, s2, *, base_radius, follower_radius, offse
         nx, ny = ax, ay
         ecc = s1 + e
         R = rc.copy()
-        rx, ry = R, np.full_like(s, np.inf)
-        rf_arr = np.full_like(s, np.inf)
+        # the flat face's radius and the transverse radius: one read-only array of inf serves
+        # both (the Kinematics freezes its fields)
+        ry = np.empty_like(s)
+        ry.fill(np.inf)
+        rx, rf_arr = R, ry
         load_factor = None   # the whole normal load acts in the plane
     else:
         rf = follower_radius
@@ -177,7 +189,7 @@ def check_translating_inputs(base_radius, follower_radius, offset, omega, shape=
     if shape not in FOLLOWER_SHAPES:
         raise field_error("mechanism.follower_shape", "unknown follower face shape", shape,
                           " or ".join(FOLLOWER_SHAPES))
-    if not np.isinf(follower_radius) and abs(offset) >= base_radius + follower_radius:
+    if not _infinite(follower_radius) and abs(offset) >= base_radius + follower_radius:
         raise field_error("mechanism.offset", "offset reaches beyond the follower's centre of "
                           "curvature on the base circle", offset,
                           f"|offset| < base radius + follower radius = "
