@@ -66,7 +66,7 @@ def steady_film(contact, kin, load=None) -> FilmField:
                       R_s=Ry[ok])
     h_min = np.full(u.shape, np.nan)
     h_cen = None if m_cen is None else np.full(u.shape, np.nan)
-    if ok.any():
+    if np.count_nonzero(ok):
         if m_cen is None:
             h_min[ok] = film_thickness(method=m_min, **inputs)
         else:

@@ -56,7 +56,7 @@ def hertz_field(contact, kin, load) -> HertzField:
     loaded = load > 0.0
     use = good_r & loaded
     pmax, bx, by = np.zeros(load.shape), np.zeros(load.shape), np.zeros(load.shape)
-    if use.any():
+    if np.count_nonzero(use):
         if line:
             h = hertz_line(load[use], R[use], at(E_r, use), L=at(width, use))
             pmax[use], bx[use] = h.max_pressure, h.half_width
@@ -69,6 +69,6 @@ def hertz_field(contact, kin, load) -> HertzField:
                 pmax[use] = hertz_point_max_pressure(load[use], R[use], Ry[use], at(E_r, use),
                                                      method="ball_1988")
     bad = ~good_r & loaded
-    if bad.any():
+    if np.count_nonzero(bad):
         pmax[bad] = bx[bad] = by[bad] = np.nan
     return HertzField(pmax=pmax, half_width=bx, half_length=by, bad=bad, line=line)

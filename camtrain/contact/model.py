@@ -76,7 +76,7 @@ class CamContact:
         h = film.for_shear
         use = (load > 0.0) & np.isfinite(h) & np.isfinite(hertz.pmax)
         force = np.zeros(load.shape)
-        if use.any():
+        if np.count_nonzero(use):
             if film.friction is not None:   # the film law solved the contact
                 force[use] = film.friction[use]
             else:

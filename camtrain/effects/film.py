@@ -57,8 +57,8 @@ def run(deck, inputs, res):
     from camtrain.components import MAIN, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm
-    from camtrain.loads import ContactLoad
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
 
     train, loads = inputs[TrainKinematics], inputs.get(ContactLoad)
     pairs = loads.pairs() if loads is not None else ((MAIN, None),)
@@ -77,7 +77,7 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     import numpy as np
 
     from camtrain.contact.hertz import is_line
-    from camtrain.formulas import film_parameter
+    from camtrain.formulas.friction import film_parameter
 
     no_width = load is not None and contact.width is None and is_line(kin)
     if no_width:
@@ -97,14 +97,17 @@ def run_pair(contact, kin, load, res, component: str | None = None):
         col("film_central", film.central, "m",
                        f"central film thickness, {film.central_method}{tag}")
     fin = np.isfinite(film.min)
-    lam = np.full(film.min.shape, np.nan)
-    if fin.all():
+    finite = np.count_nonzero(fin)
+    if finite == fin.size:
         lam = film_parameter(film.min, contact.lubricant.roughness)
-    elif fin.any():
-        lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
+    else:
+        lam = np.empty(film.min.shape)
+        lam.fill(np.nan)
+        if finite:
+            lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
     col("lambda", lam, "-",
                    "film parameter h_min / sigma (< 1: boundary regime)" + tag)
-    if fin.any():
+    if finite:
         h = np.where(fin, film.min, np.inf)
         i = int(h.argmin())
         met("film_min", h[i], "m",

@@ -24,8 +24,8 @@ def run(deck, inputs, res):
     from camtrain.components import pair_label, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
-    from camtrain.loads import ContactLoad
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
 
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     hertz, films = inputs[ContactHertz], inputs[ContactFilm]
@@ -50,10 +50,10 @@ def run(deck, inputs, res):
         met("boundary_fraction", np.count_nonzero(capped) / max(np.count_nonzero(pos), 1), "-",
                        "share of loaded angles at the boundary friction limit" + tag)
         skipped = pos & ~(field.used | np.isnan(hertz[component].pmax))
-        if skipped.any():
+        if np.count_nonzero(skipped):
             res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "
                      "where the Hertz stress or the film is not finite: friction, torque and "
                      "power_loss_mean count 0 there and understate the loss")
-        if not np.isfinite(force).all():
+        if np.count_nonzero(np.isfinite(force)) != force.size:
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")
     return ContactFriction(tuple(fields), model=CamContact.from_deck(deck).friction_law)

@@ -23,8 +23,8 @@ def run(deck, inputs, res):
     from camtrain.components import pair_label, result_component
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactHertz
-    from camtrain.loads import ContactLoad
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
 
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     fields = []
@@ -41,16 +41,16 @@ def run(deck, inputs, res):
         if not hz.line:
             col("hertz_half_length", hz.half_length, "m",
                            "Hertz semi-axis across the rolling direction" + tag)
-        if hz.bad.any():
+        if np.count_nonzero(hz.bad):
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
         infinite = np.isposinf(hz.pmax)
-        if infinite.any():
+        if np.count_nonzero(infinite):
             res.warn(f"hertz_pmax is infinite{tag} at {int(infinite.sum())} loaded "
                      "angles (a vanishing contact radius or width): the contact cannot carry "
                      "the load there")
         undefined = np.isnan(hz.pmax)
-        p = np.where(undefined, -np.inf, hz.pmax) if undefined.any() else hz.pmax
+        p = np.where(undefined, -np.inf, hz.pmax) if np.count_nonzero(undefined) else hz.pmax
         i = int(p.argmax())
         met("hertz_max", hz.pmax[i], "Pa",
                        "largest Hertz pressure over the cycle" + tag, kin.theta[i])

@@ -185,7 +185,7 @@ def kinematics_columns(k, result, component: str | None = None) -> None:
 
     add = result.add_column
     for name, attr, unit, description in _COLUMNS:
-        if name == "radius_y" and not np.isfinite(k.radius_y).any():
+        if name == "radius_y" and not np.count_nonzero(np.isfinite(k.radius_y)):
             continue  # line contact: nothing to tabulate
         add(name, getattr(k, attr), unit,
             description + (f" ({component} pair)" if component else ""), component=component)
@@ -279,7 +279,7 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
 def run(deck, inputs, result):
     from camtrain.build.mechanism import kinematics
     from camtrain.components import CLOSING, MAIN
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.mechanisms.base import TrainKinematics
 
     law, curve = lift_columns(deck, result)
     valve = curve if deck.lift.measured_at == "valve" else _cached_valve_lift(

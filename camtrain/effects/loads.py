@@ -60,7 +60,8 @@ def solve_loads(deck, kin, kw: dict | None = None, parts=None, depends: bool | N
     Ball's friction/load iteration (§4.2.3.2) started at the boundary coefficient. ``kw``
     (:func:`load_inputs`), ``parts`` (its :func:`camtrain.loads.forces.load_parts`) and
     ``depends`` (the follower has a friction arm) are formed here unless given."""
-    from camtrain.loads import contact_load, iterate_load
+    from camtrain.loads.forces import contact_load
+    from camtrain.loads.iteration import iterate_load
 
     kw = load_inputs(deck) if kw is None else kw
     trib = deck.tribology
@@ -120,9 +121,10 @@ def run_desmodromic(deck, train, res):
 def run(deck, inputs, res):
     import numpy as np
 
-    from camtrain.loads import ContactLoad, bounce_speed, contact_mask, load_parts, valve_force
-    from camtrain.loads.product import runs
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.loads.bounce import bounce_speed
+    from camtrain.loads.forces import contact_mask, load_parts, valve_force
+    from camtrain.loads.product import ContactLoad, runs
+    from camtrain.mechanisms.base import TrainKinematics
     from camtrain.units import rad_s_to_rpm
 
     train = inputs[TrainKinematics]
@@ -135,7 +137,7 @@ def run(deck, inputs, res):
     spring = {k: kw[k] for k in ("rate", "preload_compression", "valve_mass", "body_inertia",
                                  "progressive")}
     parts = load_parts(kin, **spring)
-    depends = bool((kin.arm_friction != 0.0).any())
+    depends = np.count_nonzero(kin.arm_friction) > 0
     sol = solve_loads(deck, kin, kw, parts, depends)
     load = sol.load
     inside = contact_mask(kin.valve_lift, kw["clearance"])
@@ -148,7 +150,7 @@ def run(deck, inputs, res):
                    "the cam takes up the valve clearance; negative = loss of contact)")
     i, j = int(load.argmax()), int(np.where(inside, load, np.inf).argmin())
     res.add_metric("load_max", load[i], "N", "largest contact load", kin.theta[i])
-    if inside.any():
+    if np.count_nonzero(inside):
         res.add_metric("load_min", load[j], "N", "smallest contact load while the cam drives "
                        "the valve", kin.theta[j])
     res.add_metric("load_iterations", sol.iterations, "-",
@@ -160,7 +162,7 @@ def run(deck, inputs, res):
                        "camshaft speed at which the rigid train first loses contact",
                        b.angle)
     lost = inside & (load <= 0.0)
-    if lost.any():
+    if np.count_nonzero(lost):
         for start, end in runs(lost, kin.theta):
             res.add_event("contact_loss", start,
                           "the cam loses contact with the follower (W <= 0)")

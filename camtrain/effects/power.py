@@ -20,8 +20,8 @@ def reason(deck, planned) -> str:
 def run(deck, inputs, res):
     from camtrain.components import MAIN, result_component
     from camtrain.contact.products import CamTorque, ContactFriction
-    from camtrain.loads import ContactLoad
-    from camtrain.mechanisms import TrainKinematics
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
 
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     friction = inputs[ContactFriction]
@@ -45,7 +45,7 @@ def run_pair(kin, load, force, res, component: str | None = None):
 
     import numpy as np
 
-    from camtrain.formulas import cam_torque, cycle_mean, friction_torque
+    from camtrain.formulas.cycle import cam_torque, cycle_mean, friction_torque
 
     tag = f" ({component} pair)" if component else ""
     col = partial(res.add_column, component=component)

@@ -67,7 +67,7 @@ def log_barus_line_integral(a):
     """
     a = non_negative("a", a)
     small = a < _A_SWITCH
-    if small.all():   # the usual case: no contact loaded past the switch
+    if np.count_nonzero(small) == small.size:   # the usual case: no contact loaded past the switch
         return out(np.log(_barus_gl_sum(a)))
     result = np.empty_like(a, dtype=float)
     a_lo = a[small]

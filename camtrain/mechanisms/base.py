@@ -171,7 +171,7 @@ class Kinematics:
     @cached_property
     def line_contact(self) -> bool:
         """No finite transverse radius anywhere: a line contact (flat or cylindrical faces)."""
-        return bool(np.isinf(self.radius_y).all())
+        return np.count_nonzero(np.isinf(self.radius_y)) == self.radius_y.size
 
     @cached_property
     def nose(self) -> int:

@@ -26,7 +26,7 @@ def check_flat_follower_convex(k: Kinematics, base_radius: float,
                                field: str = "cam.base_radius") -> None:
     """A flat face needs r_c = r_B + l + l'' > 0 everywhere (Ball §2.2.1, Williams §4)."""
     rc = k.cam_radius
-    if (rc > 0.0).all():
+    if np.count_nonzero(rc > 0.0) == rc.size:
         return
     i = int(np.argmin(rc))
     needed = base_radius - float(rc[i])
