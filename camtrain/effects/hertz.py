@@ -44,7 +44,7 @@ def run(deck, inputs, res):
         if np.count_nonzero(hz.bad):
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
-        infinite = np.isposinf(hz.pmax)
+        infinite = hz.pmax == np.inf
         if np.count_nonzero(infinite):
             res.warn(f"hertz_pmax is infinite{tag} at {int(infinite.sum())} loaded "
                      "angles (a vanishing contact radius or width): the contact cannot carry "

@@ -140,12 +140,11 @@ class Kinematics:
         shape = np.shape(self.theta)
         ndarray = np.ndarray
         for name, value in self.__dict__.items():   # the fields (nothing else is set yet)
-            if type(value) is ndarray or isinstance(value, ndarray):
+            if isinstance(value, ndarray):
                 if value.shape != shape:
                     raise ValueError(f"Kinematics.{name} has shape {value.shape}, "
                                      f"theta has {shape}")
-                if value.flags.writeable:
-                    value.flags.writeable = False
+                value.setflags(write=False)   # (cheaper than reading the flags first)
         for name, value in self.inertia.items():
             if np.shape(value) != shape:
                 raise ValueError(f"Kinematics.inertia[{name!r}] has the wrong shape")

@@ -196,6 +196,13 @@ def check_translating_inputs(base_radius, follower_radius, offset, omega, shape=
                           f"{base_radius + follower_radius}")
 
 
+def _ones(like: np.ndarray) -> np.ndarray:
+    """np.ones_like without its Python-level wrapper."""
+    ones = np.empty_like(like)
+    ones.fill(1.0)
+    return ones
+
+
 def _translating(lift: LiftCurve, name: str, *, base_radius, follower_radius, offset, omega,
                  rotation, shape="spherical", taper_angle=None) -> Kinematics:
     check_translating_inputs(base_radius, follower_radius, offset, omega, shape)
@@ -204,14 +211,18 @@ def _translating(lift: LiftCurve, name: str, *, base_radius, follower_radius, of
         fields = translating_contact(lc.theta, lc.lift, lc.d1, lc.d2, base_radius=base_radius,
                                      follower_radius=follower_radius, offset=offset,
                                      omega=omega, shape=shape, taper_angle=taper_angle)
-        with np.errstate(divide="ignore"):
-            ratio = 1.0 / fields["arm_normal"]
+        arm = fields["arm_normal"]
+        if np.count_nonzero(arm) == arm.size:   # the usual case: no errstate context needed
+            ratio = 1.0 / arm
+        else:
+            with np.errstate(divide="ignore"):
+                ratio = 1.0 / arm
         # the valve, cam and follower coordinates of a direct-acting follower are one lift
         lift, d1, d2 = kept(lc.lift), kept(lc.d1), kept(lc.d2)
         return Kinematics(
             mechanism=name, rotation="clockwise", omega=float(omega), theta=kept(lc.theta),
             valve_lift=lift, valve_d1=d1, valve_d2=d2, valve_d3=kept(lc.d3), cam_lift=lift,
-            cam_d1=d1, cam_d2=d2, rocker_ratio=ratio, arm_valve=np.ones_like(lc.lift),
+            cam_d1=d1, cam_d2=d2, rocker_ratio=ratio, arm_valve=_ones(lc.lift),
             q=lift, q_d1=d1, q_d2=d2, inertia={"follower_mass": d2}, **fields)
 
     return analyse(lift, rotation, kernel)
