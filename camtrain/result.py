@@ -133,6 +133,37 @@ class Result:
                                   "axis": axis, "name": name, "component": component})
         self.columns[name if component is None else f"{component}_{name}"] = column
 
+    def add_columns(self, columns, component: str | None = None) -> None:
+        """Several columns on the first axis, each ``(name, values, unit, description)``: what
+        :meth:`add_column` does, in one loop (an effect adds tens of columns per run)."""
+        axis = self.axes[0] if self.axes else None
+        into = self.columns
+        for name, values, unit, description in columns:
+            if axis is None:
+                self.add_column(name, values, unit, description, component=component)
+                axis = self.axes[0]
+                continue
+            if type(values) is not _ndarray or values.dtype is not _FLOAT:
+                values = np.asarray(values, dtype=float)
+            column = _new(Column)
+            _set(column, "__dict__", {"values": values, "unit": unit,
+                                      "description": description, "axis": axis, "name": name,
+                                      "component": component})
+            into[name if component is None else f"{component}_{name}"] = column
+
+    def add_metrics(self, metrics, component: str | None = None) -> None:
+        """Several metrics, each ``(name, value, unit, description[, angle])``, as
+        :meth:`add_metric` adds one."""
+        into = self.metrics
+        for name, value, unit, description, *angle in metrics:
+            at = angle[0] if angle else None
+            metric = _new(Metric)
+            _set(metric, "__dict__", {"value": float(value), "unit": unit,
+                                      "description": description,
+                                      "angle": None if at is None else float(at),
+                                      "name": name, "component": component})
+            into[name if component is None else f"{component}_{name}"] = metric
+
     def add_metric(self, name: str, value: float, unit: str, description: str,
                    angle: float | None = None, *, component: str | None = None) -> None:
         metric = _new(Metric)

@@ -64,8 +64,12 @@ def steady_film(contact, kin, load=None) -> FilmField:
     else:
         inputs = dict(common, W=np.asarray(load)[ok], Rx=R[ok], Ry=Ry[ok], R_e=R[ok],
                       R_s=Ry[ok])
-    h_min = np.full(u.shape, np.nan)
-    h_cen = None if m_cen is None else np.full(u.shape, np.nan)
+    h_min = np.empty(u.shape)   # NaN where no film is computed (np.full without its wrapper)
+    h_min.fill(np.nan)
+    h_cen = None
+    if m_cen is not None:
+        h_cen = np.empty(u.shape)
+        h_cen.fill(np.nan)
     if np.count_nonzero(ok):
         if m_cen is None:
             h_min[ok] = film_thickness(method=m_min, **inputs)

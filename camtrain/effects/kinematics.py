@@ -63,12 +63,9 @@ def lift_columns(deck, result, points: int | None = None):
     """
     points = points or deck.solver.angle_points
     columns, metrics, warnings = _lift_outputs(deck.lift, points)
-    add_column, add_metric = result.add_column, result.add_metric
     result.add_axis(*columns[0])
-    for args in columns[1:]:
-        add_column(*args)
-    for args in metrics:
-        add_metric(*args)
+    result.add_columns(columns[1:])
+    result.add_metrics(metrics)
     for message in warnings:
         result.warn(message)
     return _cached_law(deck.lift), _cached_curve(deck.lift, points)
@@ -183,56 +180,57 @@ def kinematics_columns(k, result, component: str | None = None) -> None:
     desmodromic train)."""
     import numpy as np
 
-    add = result.add_column
-    for name, attr, unit, description in _COLUMNS:
-        if name == "radius_y" and not np.count_nonzero(np.isfinite(k.radius_y)):
-            continue  # line contact: nothing to tabulate
-        add(name, getattr(k, attr), unit,
-            description + (f" ({component} pair)" if component else ""), component=component)
+    tag = f" ({component} pair)" if component else ""
+    tabulate_y = np.count_nonzero(np.isfinite(k.radius_y))   # none finite: line contact
+    result.add_columns(((name, getattr(k, attr), unit, description + tag)
+                        for name, attr, unit, description in _COLUMNS
+                        if tabulate_y or name != "radius_y"), component)
 
 
 def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
     """Scalar results a valve-train engineer looks for first."""
-    from functools import partial
-
     import numpy as np
 
     theta = k.theta
     nose = k.nose
+    at_nose = theta[nose]
 
     label = f" of the {component} pair" if component else ""
-    add = partial(result.add_metric, component=component)
-    add("max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label,
-        theta[nose])
-    add("cam_radius_at_max_lift", k.cam_radius[nose], "m",
-        "cam radius of curvature at maximum lift" + label, theta[nose])
-    add("equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
-        "equivalent radius at maximum lift" + label, theta[nose])
     i = int(k.cam_radius.argmin())
-    add("cam_radius_min", k.cam_radius[i], "m",
-        "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
-        theta[i])
-    i = int(np.abs(k.eccentricity).argmax())
-    add("eccentricity_max", abs(k.eccentricity[i]), "m",
-        "largest distance of the contact from the face centre" + label, theta[i])
-    i = int(np.abs(k.pressure_angle).argmax())
-    add("pressure_angle_max", abs(k.pressure_angle[i]), "rad",
-        "largest pressure angle" + label, theta[i])
+    j = int(np.abs(k.eccentricity).argmax())
+    m = int(np.abs(k.pressure_angle).argmax())
+    metrics = [
+        ("max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label, at_nose),
+        ("cam_radius_at_max_lift", k.cam_radius[nose], "m",
+         "cam radius of curvature at maximum lift" + label, at_nose),
+        ("equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
+         "equivalent radius at maximum lift" + label, at_nose),
+        ("cam_radius_min", k.cam_radius[i], "m",
+         "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
+         theta[i]),
+        ("eccentricity_max", abs(k.eccentricity[j]), "m",
+         "largest distance of the contact from the face centre" + label, theta[j]),
+        ("pressure_angle_max", abs(k.pressure_angle[m]), "rad",
+         "largest pressure angle" + label, theta[m]),
+    ]
     if deck.mechanism.type == "flat" and component is None:
         # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
-        add("min_base_radius_convex", float((-(k.valve_lift + k.valve_d2)).max()), "m",
-            "smallest base radius for which the cam stays convex under a flat follower")
+        metrics.append(("min_base_radius_convex", float((-(k.valve_lift + k.valve_d2)).max()),
+                        "m", "smallest base radius for which the cam stays convex under a "
+                        "flat follower"))
     zeros = zero_crossings(theta, k.entrainment)
+    metrics += [(f"zero_entrainment_{n + 1}", angle, "rad",
+                 f"cam angle where the entrainment velocity passes through zero{label}", angle)
+                for n, angle in enumerate(zeros)]
+    result.add_metrics(metrics, component)
     model = deck.tribology.film_model
     carried = ("" if model == "steady" or deck.lubricant is None else
                f"; the squeeze film carries the load through it (tribology.film_model = {model})")
-    for j, angle in enumerate(zeros):
-        add(f"zero_entrainment_{j + 1}", angle, "rad",
-            f"cam angle where the entrainment velocity passes through zero{label}", angle)
+    for angle in zeros:
         result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
                          "zero: the steady EHL film vanishes" + carried, component=component)
     if zeros and deck.speed.omega > 0:
-        where = ", ".join(f"{np.degrees(a):.2f}" for a in zeros)
+        where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
         result.warn(f"entrainment velocity passes through zero{label} at {where} deg: the "
                     "steady EHL film vanishes there"
                     + (carried or " (squeeze films are not modelled)"))

@@ -26,6 +26,7 @@ LOG_FLOAT_TINY = float(np.log(np.finfo(float).tiny))
 
 _FLOAT = np.dtype(float)
 _ndarray = np.ndarray
+_min, _max = np.minimum.reduce, np.maximum.reduce   # (ndarray.min/max add a Python wrapper)
 
 
 def arr(x) -> np.ndarray:
@@ -129,6 +130,9 @@ def safe_exp(x) -> np.ndarray:
     function is quiet under ``np.errstate(all="raise")``.
     """
     x = arr(x)
+    if x.ndim and x.size and (LOG_FLOAT_TINY <= _min(x, axis=None)
+                              and _max(x, axis=None) <= LOG_FLOAT_MAX):
+        return np.exp(x)   # all in range (no NaN): the clip and the selections change nothing
     res = np.exp(np.minimum(np.maximum(x, LOG_FLOAT_TINY), LOG_FLOAT_MAX))   # clip, NaN kept
     return np.where(x > LOG_FLOAT_MAX, np.inf, np.where(x < LOG_FLOAT_TINY, 0.0, res))
 
@@ -142,6 +146,8 @@ def capped_exp_product(prefactor, log_factor, cap) -> np.ndarray:
     """
     prefactor, log_factor, cap = _broadcast(arr(prefactor), arr(log_factor), arr(cap))
     pos = (prefactor > 0) & np.isfinite(prefactor)
+    if np.count_nonzero(pos) == pos.size:   # every prefactor positive and finite: no selection
+        return np.minimum(safe_exp(np.log(prefactor) + log_factor), cap)
     logp = np.log(np.where(pos, prefactor, 1.0)) + log_factor
     uncapped = np.where(pos, safe_exp(logp), np.where(prefactor > 0, np.inf, 0.0))
     return np.minimum(uncapped, cap)
@@ -151,5 +157,7 @@ def safe_divide(num, den, zero_den=np.inf) -> np.ndarray:
     """num/den, with ``zero_den`` where den == 0 and num != 0, and 0 where both are 0."""
     num, den = _broadcast(arr(num), arr(den))
     nz = den != 0
+    if nz.ndim and np.count_nonzero(nz) == nz.size:   # no zero denominator: plain division
+        return np.divide(num, den)
     res = np.divide(num, np.where(nz, den, 1.0))
     return np.where(nz, res, np.where(num == 0, 0.0, zero_den))

@@ -47,7 +47,8 @@ def iterate_load(load_of_mu: Callable[[np.ndarray], np.ndarray],
     Where W <= 0 (no contact or loss of contact) the previous mu is kept.
     """
     load = np.asarray(load_of_mu(np.asarray(mu0, dtype=float)), dtype=float)
-    mu = np.full_like(load, mu0)
+    mu = np.empty_like(load)   # (np.full_like is a Python-level wrapper)
+    mu.fill(mu0)
     if friction_of_load is None:
         return LoadSolution(load, None, mu, 1, 0.0, tolerance)
     residual = np.inf
