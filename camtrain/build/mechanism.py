@@ -46,8 +46,13 @@ def _rocker(p: S.Pushrod) -> M.RockerGeometry:
 def kinematics(deck: S.Deck, lift: LiftCurve) -> tuple[M.Kinematics, M.Kinematics | None]:
     """Contact kinematics of the deck's mechanism from the valve lift; the second item is the
     closing pair of a desmodromic train (None otherwise)."""
-    mech, cam = deck.mechanism, deck.cam
-    common = {"omega": deck.speed.omega, "rotation": mech.rotation}
+    return train_kinematics(deck.mechanism, deck.cam, deck.speed, lift)
+
+
+def train_kinematics(mech: S.Mechanism, cam: S.Cam, speed: S.Speed,
+                     lift: LiftCurve) -> tuple[M.Kinematics, M.Kinematics | None]:
+    """:func:`kinematics` from the deck models it reads: [mechanism], [cam] and [speed]."""
+    common = {"omega": speed.omega, "rotation": mech.rotation}
     wheel = mech.grinding_wheel_radius
     if mech.type == "flat":
         return M.flat_faced(lift, base_radius=cam.base_radius, face_length=mech.face_length,

@@ -9,6 +9,8 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+from camtrain.identity_cache import by_identity
+
 
 def missing(deck) -> list[str]:
     return []
@@ -178,13 +180,7 @@ _COLUMNS = (
 def kinematics_columns(k, result, component: str | None = None) -> None:
     """Add the per-angle kinematics of a pair (``component``: None, or the closing pair of a
     desmodromic train)."""
-    import numpy as np
-
-    tag = f" ({component} pair)" if component else ""
-    tabulate_y = np.count_nonzero(np.isfinite(k.radius_y))   # none finite: line contact
-    result.add_columns(((name, getattr(k, attr), unit, description + tag)
-                        for name, attr, unit, description in _COLUMNS
-                        if tabulate_y or name != "radius_y"), component)
+    result.add_columns(_column_rows(k, component), component)
 
 
 def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
@@ -274,15 +270,47 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     return valve
 
 
+@lru_cache(maxsize=8)   # (36 arrays each: a few per process, not a sweep's worth)
+def _cached_kinematics(lift_model, mechanism, cam, speed, points: int):
+    """The pairs' Kinematics (opening, closing or None) on the run's grid: they depend only on
+    the [lift], [mechanism], [cam] and [speed] models and the grid, like the lift curve they come
+    from, so a sweep over anything else (spring, masses, lubricant, materials) or a second run
+    of a deck forms them once. Their arrays are read-only, shared between runs. A geometry
+    error is not kept: it is raised again on every run."""
+    from camtrain.build.mechanism import train_kinematics
+
+    valve = _cached_curve(lift_model, points) if lift_model.measured_at == "valve" else \
+        _cached_valve_lift(lift_model, mechanism, cam.base_radius, points)
+    return train_kinematics(mechanism, cam, speed, valve)
+
+
+@by_identity
+def _deck_kinematics(deck):
+    """:func:`_cached_kinematics` of a deck model, found by its identity on a repeated run
+    (hashing its models costs more than the look-up)."""
+    return _cached_kinematics(deck.lift, deck.mechanism, deck.cam, deck.speed,
+                              deck.solver.angle_points)
+
+
+@by_identity
+def _column_rows(k, component: str | None):
+    """The (name, values, unit, description) rows of a Kinematics, formed once per (shared)
+    Kinematics."""
+    import numpy as np
+
+    tag = f" ({component} pair)" if component else ""
+    tabulate_y = np.count_nonzero(np.isfinite(k.radius_y))   # none finite: line contact
+    return tuple((name, getattr(k, attr), unit, description + tag)
+                 for name, attr, unit, description in _COLUMNS
+                 if tabulate_y or name != "radius_y")
+
+
 def run(deck, inputs, result):
-    from camtrain.build.mechanism import kinematics
     from camtrain.components import CLOSING, MAIN
     from camtrain.mechanisms.base import TrainKinematics
 
-    law, curve = lift_columns(deck, result)
-    valve = curve if deck.lift.measured_at == "valve" else _cached_valve_lift(
-        deck.lift, deck.mechanism, deck.cam.base_radius, deck.solver.angle_points)
-    opening, closing = kinematics(deck, valve)
+    lift_columns(deck, result)
+    opening, closing = _deck_kinematics(deck)
     kinematics_columns(opening, result)
     kinematics_metrics(deck, opening, result)
     pairs = ((MAIN, opening),)
