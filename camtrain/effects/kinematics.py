@@ -185,6 +185,25 @@ def kinematics_columns(k, result, component: str | None = None) -> None:
 
 def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
     """Scalar results a valve-train engineer looks for first."""
+    model = deck.tribology.film_model
+    carried = ("" if model == "steady" or deck.lubricant is None else
+               f"; the squeeze film carries the load through it (tribology.film_model = {model})")
+    metrics, zeros, warning = _metric_rows(k, component,
+                                           deck.mechanism.type == "flat" and component is None,
+                                           carried, deck.speed.omega > 0)
+    result.add_metrics(metrics, component)
+    for angle in zeros:
+        result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
+                         "zero: the steady EHL film vanishes" + carried, component=component)
+    if warning:
+        result.warn(warning)
+
+
+@by_identity
+def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving: bool):
+    """The metric rows, zero-entrainment angles and warning of :func:`kinematics_metrics`: they
+    depend on the (shared, read-only) Kinematics and these few deck facts only, so they are
+    formed once per Kinematics."""
     import numpy as np
 
     theta = k.theta
@@ -209,27 +228,22 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
         ("pressure_angle_max", abs(k.pressure_angle[m]), "rad",
          "largest pressure angle" + label, theta[m]),
     ]
-    if deck.mechanism.type == "flat" and component is None:
+    if convexity:
         # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
         metrics.append(("min_base_radius_convex", float((-(k.valve_lift + k.valve_d2)).max()),
                         "m", "smallest base radius for which the cam stays convex under a "
                         "flat follower"))
-    zeros = zero_crossings(theta, k.entrainment)
+    zeros = tuple(zero_crossings(theta, k.entrainment))
     metrics += [(f"zero_entrainment_{n + 1}", angle, "rad",
                  f"cam angle where the entrainment velocity passes through zero{label}", angle)
                 for n, angle in enumerate(zeros)]
-    result.add_metrics(metrics, component)
-    model = deck.tribology.film_model
-    carried = ("" if model == "steady" or deck.lubricant is None else
-               f"; the squeeze film carries the load through it (tribology.film_model = {model})")
-    for angle in zeros:
-        result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
-                         "zero: the steady EHL film vanishes" + carried, component=component)
-    if zeros and deck.speed.omega > 0:
+    warning = ""
+    if zeros and moving:
         where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
-        result.warn(f"entrainment velocity passes through zero{label} at {where} deg: the "
-                    "steady EHL film vanishes there"
-                    + (carried or " (squeeze films are not modelled)"))
+        warning = (f"entrainment velocity passes through zero{label} at {where} deg: the "
+                   "steady EHL film vanishes there"
+                   + (carried or " (squeeze films are not modelled)"))
+    return tuple(metrics), zeros, warning
 
 
 def zero_crossings(theta, values) -> list[float]:
