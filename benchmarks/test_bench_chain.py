@@ -40,6 +40,31 @@ def test_bench_chain(benchmark, points, target):
     benchmark(api.run, model)
 
 
+def _forget_kinematics() -> None:
+    """Empty the per-process kinematics caches (camtrain.effects.kinematics): the chain then
+    forms the Kinematics, their columns and metrics again, as a deck's first run does."""
+    from camtrain.effects import kinematics
+
+    for cache in (kinematics._deck_kinematics, kinematics._cached_kinematics,
+                  kinematics._column_rows, kinematics._metric_rows):
+        cache.cache_clear()
+
+
+@pytest.mark.parametrize("points", [720, 3600])
+def test_bench_chain_kinematics_formed(benchmark, points):
+    """As test_bench_chain, with the kinematics caches emptied before every run: the cost of a
+    deck's first run (the lift curve stays cached, as before those caches)."""
+    model = harrison_model(points)
+
+    def first_run():
+        _forget_kinematics()
+        return api.run(model)
+
+    timing = paired(first_run, lambda: harrison_floor(points), rounds=300, warmup=5)
+    record(benchmark, f"chain, {points} angles, kinematics formed each run", timing, cpu=True)
+    benchmark(first_run)
+
+
 def _process(*args: str):
     cmd = [sys.executable, *args]
     return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT, env=ENV)
