@@ -118,9 +118,10 @@ def radius(name: str, x) -> np.ndarray:
 def _broadcast(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
     """np.broadcast_arrays, skipped when the shapes already agree (the chain's common case)."""
     shape = arrays[0].shape
-    if all(a.shape == shape for a in arrays[1:]):
-        return arrays
-    return tuple(np.broadcast_arrays(*arrays))
+    for a in arrays[1:]:
+        if a.shape != shape:
+            return tuple(np.broadcast_arrays(*arrays))
+    return arrays
 
 
 def safe_exp(x) -> np.ndarray:
