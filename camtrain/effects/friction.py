@@ -17,8 +17,6 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from functools import partial
-
     import numpy as np
 
     from camtrain.components import pair_label, result_component
@@ -33,22 +31,23 @@ def run(deck, inputs, res):
     for component, load in loads.pairs():
         contact = CamContact.from_deck(deck, component)
         tag = pair_label(component)
-        col = partial(res.add_column, component=result_component(component))
-        met = partial(res.add_metric, component=result_component(component))
+        name = result_component(component)
         load = np.maximum(load, 0.0)
         field = contact.friction(train[component], load, hertz[component], films[component])
         fields.append((component, field))
         force = field.force
         pos = load > 0.0
         mu = np.divide(force, load, out=np.zeros(load.shape), where=pos)
-        col("friction_force", force, "N",
-                       f"cam/follower friction force ({contact.friction_law} model)"
-                       f"{tag}")
-        col("friction_coefficient", mu, "-",
-                       "friction coefficient F/W (0 unloaded)" + tag)
+        res.add_columns((
+            ("friction_force", force, "N",
+             f"cam/follower friction force ({contact.friction_law} model){tag}"),
+            ("friction_coefficient", mu, "-", "friction coefficient F/W (0 unloaded)" + tag)),
+            name)
         capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
-        met("boundary_fraction", np.count_nonzero(capped) / max(np.count_nonzero(pos), 1), "-",
-                       "share of loaded angles at the boundary friction limit" + tag)
+        res.add_metric("boundary_fraction",
+                       np.count_nonzero(capped) / max(np.count_nonzero(pos), 1), "-",
+                       "share of loaded angles at the boundary friction limit" + tag,
+                       component=name)
         skipped = pos & ~(field.used | np.isnan(hertz[component].pmax))
         if np.count_nonzero(skipped):
             res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "

@@ -16,8 +16,6 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from functools import partial
-
     import numpy as np
 
     from camtrain.components import pair_label, result_component
@@ -30,17 +28,17 @@ def run(deck, inputs, res):
     fields = []
     for component, load in loads.pairs():
         kin = train[component]
-        col = partial(res.add_column, component=result_component(component))
-        met = partial(res.add_metric, component=result_component(component))
+        name = result_component(component)
         hz = CamContact.from_deck(deck, component).hertz(kin, np.maximum(load, 0.0))
         fields.append((component, hz))
         tag = pair_label(component)
-        col("hertz_pmax", hz.pmax, "Pa", "maximum Hertz contact pressure" + tag)
-        col("hertz_half_width", hz.half_width, "m",
-                       "Hertz half-width along the rolling direction" + tag)
+        columns = [("hertz_pmax", hz.pmax, "Pa", "maximum Hertz contact pressure" + tag),
+                   ("hertz_half_width", hz.half_width, "m",
+                    "Hertz half-width along the rolling direction" + tag)]
         if not hz.line:
-            col("hertz_half_length", hz.half_length, "m",
-                           "Hertz semi-axis across the rolling direction" + tag)
+            columns.append(("hertz_half_length", hz.half_length, "m",
+                            "Hertz semi-axis across the rolling direction" + tag))
+        res.add_columns(columns, name)
         if np.count_nonzero(hz.bad):
             res.warn(f"Hertz contact undefined{tag} (equivalent radius <= 0 or infinite) at "
                      f"{int(hz.bad.sum())} loaded angles; NaN there")
@@ -52,10 +50,11 @@ def run(deck, inputs, res):
         undefined = np.isnan(hz.pmax)
         p = np.where(undefined, -np.inf, hz.pmax) if np.count_nonzero(undefined) else hz.pmax
         i = int(p.argmax())
-        met("hertz_max", hz.pmax[i], "Pa",
-                       "largest Hertz pressure over the cycle" + tag, kin.theta[i])
         k = kin.nose
-        met("hertz_at_max_lift", hz.pmax[k], "Pa",
-                       "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-                       kin.theta[k])
+        res.add_metrics((
+            ("hertz_max", hz.pmax[i], "Pa", "largest Hertz pressure over the cycle" + tag,
+             kin.theta[i]),
+            ("hertz_at_max_lift", hz.pmax[k], "Pa",
+             "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
+             kin.theta[k])), name)
     return ContactHertz(tuple(fields))

@@ -41,35 +41,29 @@ def run(deck, inputs, res):
 def run_pair(kin, load, force, res, component: str | None = None):
     """Columns and metrics of one pair; returns its cycle-mean friction power [W] and its
     (cam torque, friction torque, power) arrays."""
-    from functools import partial
-
     import numpy as np
 
     from camtrain.formulas.cycle import cam_torque, cycle_mean, friction_torque
 
     tag = f" ({component} pair)" if component else ""
-    col = partial(res.add_column, component=component)
-    met = partial(res.add_metric, component=component)
     load = np.maximum(load, 0.0)
     tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
     total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
                        dtype=float)
     power = tf * abs(kin.omega)
     dissipation = force * np.abs(kin.sliding)
-    col("friction_torque", tf, "N*m",
-                   "friction torque about the cam axis F r" + tag)
-    col("cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag)
-    col("power_loss", power, "W",
-                   "friction power F r omega (Ball eq. 4.8)" + tag)
+    res.add_columns((
+        ("friction_torque", tf, "N*m", "friction torque about the cam axis F r" + tag),
+        ("cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag),
+        ("power_loss", power, "W", "friction power F r omega (Ball eq. 4.8)" + tag)),
+        component)
     i = int(np.abs(tf).argmax())
-    met("friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag,
-                   kin.theta[i])
     mean = float(cycle_mean(power))
-    met("power_loss_mean", mean, "W",
-                   "cycle-mean friction power (Ball eq. 4.9)" + tag)
-    met("dissipation_mean", cycle_mean(dissipation), "W",
-                   "cycle-mean contact dissipation F |V_s| (equals the above for flat "
-                   "followers)" + tag)
-    met("cam_torque_mean", cycle_mean(total), "N*m",
-                   "cycle-mean camshaft torque" + tag)
+    res.add_metrics((
+        ("friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag, kin.theta[i]),
+        ("power_loss_mean", mean, "W", "cycle-mean friction power (Ball eq. 4.9)" + tag),
+        ("dissipation_mean", cycle_mean(dissipation), "W",
+         "cycle-mean contact dissipation F |V_s| (equals the above for flat followers)" + tag),
+        ("cam_torque_mean", cycle_mean(total), "N*m", "cycle-mean camshaft torque" + tag)),
+        component)
     return mean, (total, tf, power)
