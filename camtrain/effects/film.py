@@ -72,8 +72,6 @@ def run(deck, inputs, res):
 
 def run_pair(contact, kin, load, res, component: str | None = None):
     """Columns and metrics of one pair's film; returns its FilmField."""
-    from functools import partial
-
     import numpy as np
 
     from camtrain.contact.hertz import is_line
@@ -87,15 +85,13 @@ def run_pair(contact, kin, load, res, component: str | None = None):
                  "(Ball eq. 4.3), not the EHL film under the contact load")
         load = None
     tag = f" ({component} pair)" if component else ""
-    col = partial(res.add_column, component=component)
-    met = partial(res.add_metric, component=component)
     film = contact.film(kin, None if load is None else np.maximum(load, 0.0))
     what = "out of contact" if load is not None else "non-Hertzian geometry"
-    col("film_min", film.min, "m",
-                   f"minimum film thickness, {film.method} (NaN: {what}){tag}")
+    columns = [("film_min", film.min, "m",
+                f"minimum film thickness, {film.method} (NaN: {what}){tag}")]
     if film.central is not None:
-        col("film_central", film.central, "m",
-                       f"central film thickness, {film.central_method}{tag}")
+        columns.append(("film_central", film.central, "m",
+                        f"central film thickness, {film.central_method}{tag}"))
     fin = np.isfinite(film.min)
     finite = np.count_nonzero(fin)
     if finite == fin.size:
@@ -105,17 +101,20 @@ def run_pair(contact, kin, load, res, component: str | None = None):
         lam.fill(np.nan)
         if finite:
             lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
-    col("lambda", lam, "-",
-                   "film parameter h_min / sigma (< 1: boundary regime)" + tag)
+    columns.append(("lambda", lam, "-", "film parameter h_min / sigma (< 1: boundary regime)"
+                    + tag))
+    res.add_columns(columns, component)
+    metrics = []
     if finite:
         h = np.where(fin, film.min, np.inf)
         i = int(h.argmin())
-        met("film_min", h[i], "m",
-                       "smallest minimum film over the cycle" + tag, kin.theta[i])
+        metrics.append(("film_min", h[i], "m", "smallest minimum film over the cycle" + tag,
+                        kin.theta[i]))
     k = kin.nose
-    met("film_min_at_max_lift", film.min[k], "m",
-                   "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-                   kin.theta[k])
+    metrics.append(("film_min_at_max_lift", film.min[k], "m",
+                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
+                    kin.theta[k]))
+    res.add_metrics(metrics, component)
     if not np.isfinite(film.min[k]):
         why = ("the pair carries no load there" if load is not None and not load[k] > 0.0
                else "the contact is not Hertzian there")

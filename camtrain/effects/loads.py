@@ -8,6 +8,8 @@ friction/load iteration is the contact model's (:mod:`camtrain.contact.friction`
 """
 from __future__ import annotations
 
+from camtrain.identity_cache import by_identity
+
 RIGID = "rigid valve train, D'Alembert balance (Ball 1988 §4.2)"
 DESMODROMIC = "rigid desmodromic train, both pairs (Ball 1988 App D)"
 
@@ -43,6 +45,17 @@ def load_inputs(deck) -> dict:
                 progressive=(deck.spring.progressive_quadratic, deck.spring.progressive_cubic),
                 clearance=0.0 if (c is None or lash) else c.valve_clearance,
                 base_load=c.adjuster_load if lash else 0.0)
+
+
+_SPRING = ("rate", "preload_compression", "valve_mass", "body_inertia", "progressive")
+
+
+@by_identity
+def _load_arguments(deck) -> tuple[dict, dict]:
+    """:func:`load_inputs` of a deck and the spring/inertia part of them (the arguments of
+    :func:`camtrain.loads.forces.load_parts`): deck values, formed once per deck model."""
+    kw = load_inputs(deck)
+    return kw, {k: kw[k] for k in _SPRING}
 
 
 def _friction_callback(deck, kin):
@@ -131,11 +144,9 @@ def run(deck, inputs, res):
     if deck.mechanism.type == "desmodromic":
         return run_desmodromic(deck, train, res)
     kin = train.main
-    kw = load_inputs(deck)
+    kw, spring = _load_arguments(deck)
     # the speed-independent and omega^2 parts of the load balance serve the load (every pass of
     # the iteration) and the bounce speed alike: formed once
-    spring = {k: kw[k] for k in ("rate", "preload_compression", "valve_mass", "body_inertia",
-                                 "progressive")}
     parts = load_parts(kin, **spring)
     depends = np.count_nonzero(kin.arm_friction) > 0
     sol = solve_loads(deck, kin, kw, parts, depends)
