@@ -10,8 +10,6 @@ checks only convert their argument (they cost a third of a 720-angle run otherwi
 """
 from __future__ import annotations
 
-from collections.abc import Iterator
-from contextlib import contextmanager
 from contextvars import ContextVar
 
 import numpy as np
@@ -53,17 +51,20 @@ _TRUSTED: ContextVar[bool] = ContextVar("camtrain_trusted_inputs", default=False
 _trusted = _TRUSTED.get
 
 
-@contextmanager
-def trusted_inputs() -> Iterator[None]:
+class trusted_inputs:   # (lower case: used as a function, ``with trusted_inputs():``)
     """Skip the formula argument checks inside (per thread / task: a context variable).
 
     For callers whose inputs were validated before (the analysis chain); a user calling a
-    formula outside this block always gets the checked entry."""
-    token = _TRUSTED.set(True)
-    try:
-        yield
-    finally:
-        _TRUSTED.reset(token)
+    formula outside this block always gets the checked entry. (A class rather than a
+    generator-based context manager: it is entered once per run.)"""
+
+    __slots__ = ("_token",)
+
+    def __enter__(self) -> None:
+        self._token = _TRUSTED.set(True)
+
+    def __exit__(self, *exc) -> None:
+        _TRUSTED.reset(self._token)
 
 
 def checking() -> bool:
