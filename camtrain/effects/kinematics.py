@@ -64,13 +64,44 @@ def lift_columns(deck, result, points: int | None = None):
     Returns the LiftLaw and the LiftCurve for later effects.
     """
     points = points or deck.solver.angle_points
-    columns, metrics, warnings = _lift_outputs(deck.lift, points)
-    result.add_axis(*columns[0])
-    result.add_columns(columns[1:])
-    result.add_metrics(metrics)
+    formed, law, curve = _deck_lift(deck, points)
+    if result.axes or result.columns or result.metrics:   # a result under way: one by one
+        columns, metrics, warnings = _lift_outputs(deck.lift, points)
+        result.add_axis(*columns[0])
+        result.add_columns(columns[1:])
+        result.add_metrics(metrics)
+        for message in warnings:
+            result.warn(message)
+    else:   # a new result: the lift law's columns and metrics as formed for this law and grid
+        result.axes.extend(formed.axes)
+        result.columns.update(formed.columns)
+        result.metrics.update(formed.metrics)
+        for message in formed.warnings:
+            result.warn(message)
+    return law, curve
+
+
+@by_identity
+def _deck_lift(deck, points: int):
+    """:func:`_formed_lift` of a deck model, found by its identity on a repeated run."""
+    return _formed_lift(deck.lift, points)
+
+
+@lru_cache(maxsize=32)
+def _formed_lift(lift_model, points: int):
+    """A Result holding only the lift law's axis, columns, metrics and warnings on the grid,
+    with the law and its curve. Columns and metrics are immutable (their arrays read-only), so
+    every run of the law on this grid takes the same ones into its own Result."""
+    from camtrain.result import Result
+
+    formed = Result()
+    columns, metrics, warnings = _lift_outputs(lift_model, points)
+    formed.add_axis(*columns[0])
+    formed.add_columns(columns[1:])
+    formed.add_metrics(metrics)
     for message in warnings:
-        result.warn(message)
-    return _cached_law(deck.lift), _cached_curve(deck.lift, points)
+        formed.warn(message)
+    return formed, _cached_law(lift_model), _cached_curve(lift_model, points)
 
 
 @lru_cache(maxsize=32)
