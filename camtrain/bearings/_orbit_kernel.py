@@ -1,12 +1,11 @@
-"""Compiled march of the journal orbit: one numba kernel, cached on disk (``cache=True``).
+"""Compiled mobility of the journal orbit (numba, cached on disk, ``cache=True``); the march
+itself is :mod:`camtrain.bearings._orbit_march`.
 
-The algorithm is the one documented in :mod:`camtrain.bearings.orbit` (embedded Dormand-Prince
-5(4), interval by interval along the load grid, steps that would reach EPS_LIMIT quartered, cycles
-until two agree to ``period_tol``); the mobilities are those of :mod:`camtrain.bearings.mobility`
-(exact pi-film inversion, Booker's closed form) plus a tabulated map
-(:class:`camtrain.bearings.mobility_map.MobilityMap`). Only this module imports numba, and only
-decks that march an orbit import this module, so the CLI start of other decks does not pay for
-numba. Errors come back as status codes; the Python side turns them into ConvergenceError.
+The mobilities are those of :mod:`camtrain.bearings.mobility` (exact pi-film inversion, Booker's
+closed form) plus a tabulated map (:class:`camtrain.bearings.mobility_map.MobilityMap`). Only
+this module and the march import numba, and only decks that march an orbit import them, so the
+CLI start of other decks does not pay for numba. Errors come back as status codes; the Python
+side turns them into ConvergenceError.
 """
 from __future__ import annotations
 
@@ -23,18 +22,6 @@ STALL_CYCLES = 10
 
 _TWO_PI = 2.0 * math.pi
 _HALF_PI = 0.5 * math.pi
-
-# Dormand-Prince 5(4) tableau (rows of A padded with zeros).
-_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
-_A = np.array([
-    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
-    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
-    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
-    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
-    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
-_E = np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40])
 
 
 @njit(cache=True, error_model="numpy")
@@ -164,15 +151,6 @@ def _squeeze(ex, ey, wx, wy, wbar, kind, gain, state, t_eps, t_mxi, t_mmu):
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(tt, x, y, p0, slope, kind, gain, state, t_eps, t_mxi, t_mmu):
-    wx = p0[0] + slope[0] * tt
-    wy = p0[1] + slope[1] * tt
-    wb = p0[2] + slope[2] * tt
-    vx, vy, _ = _squeeze(x, y, wx, wy, wb, kind, gain, state, t_eps, t_mxi, t_mmu)
-    return vx - wb * y, vy + wb * x
-
-
-@njit(cache=True, error_model="numpy")
 def steady_start(wx, wy, wbar, ocvirk_k):
     """Quasi-static eps vector for the load (wx, wy): the Ocvirk load inverted by the 64-step
     bisection of formulas.bearings.ocvirk_eccentricity, turned by the Ocvirk attitude angle in
@@ -195,98 +173,6 @@ def steady_start(wx, wy, wbar, ocvirk_k):
     att = math.atan2(math.pi * math.sqrt(1.0 - e ** 2), 4.0 * e)
     ang = math.atan2(wy, wx) + math.copysign(att, wbar)
     return e * math.cos(ang), e * math.sin(ang)
-
-
-@njit(cache=True, error_model="numpy")
-def march_orbit(fx, fy, wbar, t, dts, y0x, y0y, kind, gain, tol, period_tol, max_cycles,
-                max_steps, eps_limit, t_eps, t_mxi, t_mmu):
-    """Periodic orbit on the load grid.
-
-    Returns (eps (n, 2), squeeze (n, 3) = [vx, vy, delta] at the grid points, cycles, change,
-    status, time and |eps| where a march failed).
-    """
-    n = t.size
-    state = np.zeros(3)
-    cur = np.empty((n, 2))
-    prev = np.empty((n, 2))
-    ks = np.empty((7, 2))
-    p0 = np.empty(3)
-    slope = np.empty(3)
-    ex, ey = y0x, y0y
-    h = dts[0]
-    change = np.inf
-    cycles = 0
-    best, best_cycle = np.inf, 0
-    for cyc in range(1, max_cycles + 1):
-        cycles = cyc
-        budget = max_steps
-        for i in range(n):
-            cur[i, 0], cur[i, 1] = ex, ey
-            j = (i + 1) % n
-            dt = dts[i]
-            p0[0], p0[1], p0[2] = fx[i], fy[i], wbar[i]
-            slope[0] = (fx[j] - fx[i]) / dt
-            slope[1] = (fy[j] - fy[i]) / dt
-            slope[2] = (wbar[j] - wbar[i]) / dt
-            tl, used = 0.0, 0
-            k1x, k1y = _rhs(0.0, ex, ey, p0, slope, kind, gain, state, t_eps, t_mxi, t_mmu)
-            while tl < dt:
-                if used >= budget:
-                    return cur, np.empty((0, 3)), cycles, change, BUDGET, t[i] + tl, \
-                        math.hypot(ex, ey)
-                used += 1
-                h = min(h, dt - tl)
-                if dt - tl - h < 1e-12 * dt:
-                    h = dt - tl
-                ks[0, 0], ks[0, 1] = k1x, k1y
-                ok = True
-                xs, ys = ex, ey
-                for st in range(1, 7):
-                    sx, sy = 0.0, 0.0
-                    for q in range(st):
-                        sx += _A[st, q] * ks[q, 0]
-                        sy += _A[st, q] * ks[q, 1]
-                    xs, ys = ex + h * sx, ey + h * sy
-                    if math.hypot(xs, ys) >= eps_limit:
-                        ok = False
-                        break
-                    ks[st, 0], ks[st, 1] = _rhs(tl + _C[st] * h, xs, ys, p0, slope, kind, gain,
-                                                state, t_eps, t_mxi, t_mmu)
-                if state[2] > 0.0:
-                    return cur, np.empty((0, 3)), cycles, change, OFF_MAP, t[i] + tl, \
-                        math.hypot(xs, ys)
-                if not ok:
-                    h *= 0.25
-                    continue
-                errx, erry = 0.0, 0.0
-                for q in range(7):
-                    errx += _E[q] * ks[q, 0]
-                    erry += _E[q] * ks[q, 1]
-                err = max(abs(h * errx), abs(h * erry)) / tol
-                if err <= 1.0:
-                    tl += h
-                    ex, ey = xs, ys
-                    k1x, k1y = ks[6, 0], ks[6, 1]
-                h *= min(5.0, max(0.2, 0.9 * (err + 1e-300) ** -0.2))
-            budget -= used
-            h = max(h, 1e-9 * dt)
-        if cyc > 1:
-            change = 0.0
-            for i in range(n):
-                change = max(change, math.hypot(cur[i, 0] - prev[i, 0], cur[i, 1] - prev[i, 1]))
-            if change <= period_tol:
-                break
-            if change < best:
-                best, best_cycle = change, cyc
-            elif cyc - best_cycle >= STALL_CYCLES:
-                break   # the change stopped falling: it sits at the march's own error
-        prev[:, :] = cur
-    vel = np.empty((n, 3))
-    for i in range(n):
-        vel[i, 0], vel[i, 1], vel[i, 2] = _squeeze(cur[i, 0], cur[i, 1], fx[i], fy[i], wbar[i],
-                                                   kind, gain, state, t_eps, t_mxi, t_mmu)
-    status = OK if change <= period_tol else NOT_PERIODIC
-    return cur, vel, cycles, change, status, 0.0, 0.0
 
 
 @njit(cache=True, error_model="numpy")

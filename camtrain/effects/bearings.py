@@ -123,12 +123,14 @@ def run(deck, inputs, res):
         met("max_load", mag[j], "N", f"{what}: largest load", theta[j])
         petroff = float(bearing_petroff_power(brg, omega))
         met("petroff_power", petroff, "W", f"{what}: Petroff power (concentric journal)")
+        # step error 1e-3 of the periodicity tolerance: the free steps' global error on these
+        # decks is about 300 step errors (measured: 1.5e-6 to 3.8e-6 at 1e-8), below it
         try:
             with deck_terms(CAMSHAFT_DECK_TERMS, f"camshaft.bearings[{i}] (its load)"):
                 orbit = solve_bearing(brg, bx[i], by[i], theta, omega, 0.0, angle_rate=abs(omega),
                                       period=TWO_PI, method=cs.method, film=cs.film,
                                       mobility=cs.mobility,
-                                      tol=min(1e-7, 1e-2 * cs.bearing_tolerance),
+                                      tol=min(1e-8, 1e-3 * cs.bearing_tolerance),
                                       period_tol=cs.bearing_tolerance, max_cycles=cs.max_cycles,
                                       options=options, march_points=cs.orbit_points)
         except ConvergenceError as exc:

@@ -3,9 +3,10 @@ mobility (tabulated maps), numba imported only for decks that march an orbit.
 
 tests/bearings/data/orbit_reference.json holds orbits computed by the pure-Python march of
 camtrain 0.1 (interpreted Dormand-Prince, same algorithm) before it was compiled; it is a
-regression file and is not regenerated from the compiled kernel. The compiled march must agree
-to 1e-12 in eps (the march's own step tolerance is 1e-7: any larger difference is a change of
-algorithm, not round-off).
+regression file and is not regenerated from the compiled kernel. The compiled march with the
+same steps (``steps="grid"``: every step ends on a grid angle, the load linear between them)
+must agree to 1e-12 in eps (the march's own step tolerance is 1e-7:
+any larger difference is a change of algorithm, not round-off).
 """
 from __future__ import annotations
 
@@ -34,10 +35,10 @@ def _march(name: str, case: dict):
         fx = 4000 * np.cos(th)
         fy = -6000 - 8000 * np.exp(-(((th - 2 * math.pi) / 0.5) ** 2))
         return bearing_orbit(brg, fx, fy, th, 300.0 + 20 * np.sin(th), 10.0, angle_rate=300.0,
-                             period=4 * math.pi, terms="all")
+                             period=4 * math.pi, terms="all", steps="grid")
     fx = 0.3 * case["load"] * np.sin(2 * TH)
     fy = -case["load"] * (1.2 + np.cos(TH))
-    return bearing_orbit(brg, fx, fy, TH, 157.0, **case["options"])
+    return bearing_orbit(brg, fx, fy, TH, 157.0, steps="grid", **case["options"])
 
 
 @pytest.mark.parametrize("name", sorted(REFERENCE))
