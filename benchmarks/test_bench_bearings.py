@@ -44,9 +44,9 @@ def test_bench_bearing_orbit(benchmark):
 @pytest.mark.parametrize(("points", "orbit_points"), [(1440, 0), (1440, 360), (720, 0)])
 def test_bench_zeta_camshaft(benchmark, points, orbit_points):
     """decks/zeta_intake_camshaft.toml in process (eight cams, five bearing orbits), warm, on
-    the default grid (1440 angles) and on the 720 of the target's setting (the orbit march
-    steps through every interval of the load diagram, so its cost follows the grid), and with
-    the orbits marched on 360 load angles (``camshaft.orbit_points``, within 0.05 % here)."""
+    the default grid (1440 angles) and on the 720 of the target's setting (the orbit's steps
+    span load intervals, so its cost no longer follows the grid; the chain's still does), and
+    with the orbits marched on 360 load angles (``camshaft.orbit_points``, within 0.05 % here)."""
     import dataclasses
     import time
 

@@ -2,11 +2,12 @@
 
 The algorithm is the one documented in :mod:`camtrain.bearings.orbit`: embedded Dormand-Prince
 5(4) with absolute error control on eps, steps that would reach EPS_LIMIT quartered, cycles until
-two agree to ``period_tol``. The load and speeds come as one cubic per load interval (the
-periodic spline of :func:`periodic_spline`, or linear). A linear diagram is marched interval by
-interval; a spline lets the steps run free of the load grid, the grid samples taken from the
-method's continuous extension, and from the third cycle each cycle first replays the previous
-cycle's steps (see :func:`march_orbit`). The mobility is :func:`._orbit_kernel._squeeze`.
+two agree to ``period_tol``. The load and speeds come as one cubic per load interval (linear, or
+:func:`periodic_spline`, or the shape-preserving Hermite of ``orbit.periodic_pchip``). The steps
+either end on every grid angle (:func:`_grid_cycle`) or run free of the load grid
+(:func:`_free_cycle`: a step ends on the last grid angle it reaches, the grid angles inside it
+sampled by the continuous extension, and from the third cycle each cycle first replays the
+previous cycle's steps). The mobility is :func:`._orbit_kernel._squeeze`.
 """
 from __future__ import annotations
 
@@ -48,6 +49,22 @@ REPLAY_FROM = 3
 #: cycle (or of the load interval): a long trial step may probe beyond the orbit, a short one
 #: that still leaves the map follows an orbit that does
 _MAP_STEP = 1e-6
+
+@njit(cache=True, error_model="numpy")
+def linear_coefficients(t, period, fx, fy, wbar):
+    """Coefficients (n, 4, 3) of the load x, y and wbar linear in each interval of the times t
+    (cycle ``period``): c0 the value at the interval's start, c1 the slope, c2 = c3 = 0."""
+    n = t.size
+    coef = np.zeros((n, 4, 3))
+    for i in range(n):
+        j = i + 1 if i + 1 < n else 0
+        dt = (t[i + 1] if i + 1 < n else period) - t[i]
+        coef[i, 0, 0], coef[i, 0, 1], coef[i, 0, 2] = fx[i], fy[i], wbar[i]
+        coef[i, 1, 0] = (fx[j] - fx[i]) / dt
+        coef[i, 1, 1] = (fy[j] - fy[i]) / dt
+        coef[i, 1, 2] = (wbar[j] - wbar[i]) / dt
+    return coef
+
 
 @njit(cache=True, error_model="numpy")
 def periodic_spline(t, period, f):
@@ -259,7 +276,8 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
     controller for the rest of the cycle. Replaying makes a settled cycle the same map of its
     start every time, so the cycle-to-cycle change falls to zero instead of sitting at the
     step error (steps placed afresh each cycle would move the samples by about the error).
-    Returns (ex, ey, h, status, time of a failure, accepted steps = the new m)."""
+    Returns (ex, ey, h, status, time of a failure, accepted steps = the new m, ends (grown
+    when this cycle took more steps than it held))."""
     n = t.size
     cur[0, 0], cur[0, 1] = ex, ey
     nxt, seg, tl, used, steps = 1, 0, 0.0, 0, 0
@@ -267,7 +285,7 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
     k1x, k1y = _rhs(0, 0.0, ex, ey, coef, kind, gain, state, t_eps, t_mxi, t_mmu)
     while tl < period:
         if used >= budget:
-            return ex, ey, h, BUDGET, tl, steps
+            return ex, ey, h, BUDGET, tl, steps, ends
         used += 1
         end = ends[steps] if replay else _step_end(t, period, seg, tl, h)
         h = end - tl
@@ -280,7 +298,7 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
                 replay = False
                 h *= 0.25
                 continue
-            return xs, ys, h, OFF_MAP, tl, steps
+            return xs, ys, h, OFF_MAP, tl, steps, ends
         if not inside:
             replay = False
             h *= 0.25
@@ -292,6 +310,10 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
             if nxt < n and t[nxt] == end:   # the step ends on a grid angle
                 cur[nxt, 0], cur[nxt, 1] = xs, ys
                 nxt += 1
+            if steps == ends.size:  # room for more steps than the last cycle's
+                grown = np.empty(2 * ends.size)
+                grown[:steps] = ends[:steps]
+                ends = grown
             ends[steps] = end
             steps += 1
             replay = replay and steps < m
@@ -302,7 +324,7 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
         else:
             replay = False
         h = _grow(h, err)
-    return ex, ey, h, OK, 0.0, steps
+    return ex, ey, h, OK, 0.0, steps, ends
 
 
 @njit(cache=True, error_model="numpy")
@@ -323,7 +345,7 @@ def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, per
     cur = np.empty((n, 2))
     prev = np.empty((n, 2))
     ks = np.empty((7, 2))
-    ends = np.empty(0 if grid_steps else max_steps)
+    ends = np.empty(4 * n + 64)   # step ends of the last free cycle (grown when needed)
     ex, ey = y0x, y0y
     h = dts[0]
     change = np.inf
@@ -336,7 +358,7 @@ def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, per
                 cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, tol, max_steps,
                 t_eps, t_mxi, t_mmu)
         else:
-            ex, ey, h, status, t_fail, steps = _free_cycle(
+            ex, ey, h, status, t_fail, steps, ends = _free_cycle(
                 cur, ex, ey, h, t, period, coef, ks, ends, steps if cyc >= REPLAY_FROM else 0,
                 kind, gain, state, eps_limit, tol, max_steps, t_eps, t_mxi, t_mmu)
         if status != OK:

@@ -213,18 +213,16 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
 
 def load_coefficients(t, period: float, fx, fy, wbar, interpolation: str) -> np.ndarray:
     """(n, 4, 3) cubic coefficients of the load x, y and wbar in each interval of the time grid
-    ``t`` (cycle ``period``): the periodic cubic spline, or the linear interpolant (c2 = c3 = 0)."""
-    from ._orbit_march import periodic_spline
+    ``t`` (cycle ``period``): linear (c2 = c3 = 0), the periodic cubic spline, or the periodic
+    shape-preserving Hermite."""
+    from ._orbit_march import linear_coefficients, periodic_spline
 
+    if interpolation == "linear":
+        return linear_coefficients(t, float(period), fx, fy, wbar)
     f = np.column_stack((fx, fy, wbar))
     if interpolation == "pchip":
         return periodic_pchip(t, period, f)
-    if interpolation == "spline":
-        return periodic_spline(t, float(period), f)
-    coef = np.zeros((t.size, 4, 3))
-    coef[:, 0] = f
-    coef[:, 1] = (np.roll(f, -1, axis=0) - f) / np.append(np.diff(t), period - t[-1])[:, None]
-    return coef
+    return periodic_spline(t, float(period), f)
 
 
 def periodic_pchip(t, period: float, f, groups=((0, 1), (2,))) -> np.ndarray:
