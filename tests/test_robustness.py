@@ -193,15 +193,40 @@ def test_bearing_solver_errors_name_deck_fields_not_symbols(method, code, fields
     assert not (tmp_path / "o").exists()
 
 
-def test_a_bearing_march_that_cannot_reach_its_period_tolerance_stops_early(tmp_path):
-    """Tolerances below the march's own error used to march all 1000 cycles (20-37 s)."""
+def test_a_bearing_march_reaches_a_period_tolerance_below_its_step_error(tmp_path):
+    """Tolerances below the march's own error used to march all 1000 cycles (20-37 s), then
+    stopped when the change stopped falling. The free-step march replays a settled cycle's
+    steps, so the cycle-to-cycle change falls to round-off and 1e-11 is reached in a few
+    cycles."""
+    from camtrain import api
+
     deck = _set(BEARING, "load_y", "[-500.0, 500.0, -500.0, 500.0]")
     deck += "max_cycles = 1000\nperiod_tolerance = 1e-11\nstep_tolerance = 1e-11\n"
-    res = _run(deck, tmp_path, "-q")
-    assert res.exit_code == 4, res.output
-    cycles = int(re.search(r"after (\d+) cycles", res.output).group(1))
-    assert cycles < 100 and "stopped falling" in res.output
-    assert "solver.period_tolerance" in res.output
+    res = api.run(api.loads(deck))
+    assert not res.warnings
+    assert res.metrics["cycles"].value < 20
+    assert res.metrics["periodicity_error"].value <= 1e-11
+
+
+def test_a_bearing_march_that_cannot_reach_its_period_tolerance_stops_early():
+    """The march that ends a step on every load angle (``steps="grid"``) places its steps
+    afresh each cycle, so its change sits at the step error: below that the march stops when
+    the change stops falling (it used to march all max_cycles) and says which tolerance to
+    raise. The deck above at 1500 rpm: the change stalls at 1.7e-10 after 19 cycles."""
+    import math
+
+    import numpy as np
+
+    from camtrain.bearings import JournalBearing, bearing_orbit
+    from camtrain.errors import ConvergenceError
+
+    th = np.arange(4) * (math.pi / 2)
+    with pytest.raises(ConvergenceError, match="stopped falling") as err:
+        bearing_orbit(JournalBearing(25e-3, 18e-3, 25e-6, 0.01), np.zeros(4),
+                      np.array([-500.0, 500.0, -500.0, 500.0]), th, 1500 * math.pi / 30, tol=1e-11,
+                      period_tol=1e-11, max_cycles=1000, steps="grid")
+    cycles = int(re.search(r"after (\d+) cycles", str(err.value)).group(1))
+    assert cycles < 100 and "raise period_tol" in str(err.value)
 
 
 # ---------------------------------------------------------------- a fresh machine
