@@ -16,9 +16,12 @@ twist and every train are uncoupled but for the contacts), again with the contac
 low-rank update."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
+from camtrain.dynamics._coupled_film_kernel import film_step, table_coefficient
 from camtrain.numerics.roots import false_position, illinois_update
 
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
@@ -295,18 +298,49 @@ def _coefficient(table, j, s, ln_first, ln_step, w):
 
 
 @njit(cache=True)
+def _film_coefficient(table, col, unit_film, exponent, w, h, ln_first, ln_step, ln_r0, d_ln_r):
+    """Friction coefficient under the cam-level load ``w`` [N] with the film ``h`` [m]: from
+    the table over film ratios h/F and loads (F = ``unit_film`` w^``exponent`` the steady
+    film), ``col`` the fractional grid column of the angle."""
+    if w <= 0.0:
+        return 0.0
+    F = unit_film * w ** exponent
+    ln_r = math.log(h / F) if 0.0 < F < math.inf else 0.0
+    return table_coefficient(table, col, math.log(w), ln_r, ln_first, ln_step, ln_r0, d_ln_r)
+
+
+@njit(cache=True)
 def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv,
                f0, b, bd, gx, gy, gphi, fric_tab, fric_corr, ln_first, ln_step, arm, ratio, cosa,
                sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
-               valve_dof, substeps, out_load, out_acc):
+               valve_dof, substeps, out_load, out_acc, film_on, squeeze_on, film_h, film_a, film_e,
+               film_speed, film_tab, film_col, ln_r0, d_ln_r, out_film, hub_basis, hub_x, hub_y,
+               hub_cos, hub_sin, hub_radius):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
     steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
     at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`
     plus ``fric_corr`` (n_lobes, steps), times the last step's load. State arrays (q, v, acc, the contact
     states act_c/act_s, the last loads w_prev) are updated in place. ``P`` = A^-1 M and
     ``Q`` = A^-1 C are block diagonal (shaft planes, twist, each train): ``blocks`` holds the
-    block boundaries, so only the diagonal blocks are multiplied. Returns the contact changes
-    located in the revolution and the steps that had more than MAX_SWITCHES."""
+    block boundaries, so only the diagonal blocks are multiplied.
+
+    Level-1 squeeze film (``film_on``): ``film_h`` (n_lobes) is every contact's film [m], carried
+    from step to step and updated once per accepted step by :func:`film_step` (implicit Euler
+    of Teodorescu's eq. 5 as a relaxation law) towards the steady film F = ``film_a`` (W R)^
+    ``film_e`` of the step's end load (``squeeze_on`` False: h = F, the quasi-steady limit),
+    with the entrainment speed ``film_speed`` (n_lobes, steps). The friction coefficient is
+    then read from ``film_tab`` (film ratios h/F, load levels, grid angles of the lobe's own
+    frame; ``film_col`` (n_lobes, steps) the fractional column of each step) at the last load
+    and film, plus ``fric_corr``; the film at the grid samples goes to ``out_film``.
+
+    Drive hub load (``hub_x`` >= 0: the drive station's bending coordinates): the belt's
+    tight-minus-slack part |T| / ``hub_radius`` along (``hub_cos``, ``hub_sin``), T the summed
+    lobe torque W l' + mu W r of the last step (explicit by one step, as the friction; the
+    preload part is constant and sits in ``f0``); ``hub_basis`` holds A^-1 at those two
+    coordinates.
+
+    Returns the contact changes located in the revolution and the steps that had more than
+    MAX_SWITCHES."""
     n = q.size
     lobes = ix.size
     steps = b.shape[1]
@@ -332,11 +366,19 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     cut = 0
     G = _basis_rows(ainv_basis, ix, iy, iphi, ifol, ival)
     zf = np.zeros(5 * lobes)
+    hub = np.zeros(2)
     for s in range(steps):
         # friction of every lobe from its last load (explicit): constant over the step
+        torque = 0.0
         for j in range(lobes):
-            mu = _coefficient(fric_tab, j, s, ln_first, ln_step, w_prev[j]) + fric_corr[j, s]
+            if film_on:
+                mu = _film_coefficient(film_tab, film_col[j, s], film_a[j, s], film_e,
+                                       ratio[j, s] * w_prev[j], film_h[j], ln_first, ln_step, ln_r0,
+                                       d_ln_r) + fric_corr[j, s]
+            else:
+                mu = _coefficient(fric_tab, j, s, ln_first, ln_step, w_prev[j]) + fric_corr[j, s]
             fr_j[j] = mu * ratio[j, s] * w_prev[j]
+            torque += w_prev[j] * gphi[j, s] + fr_j[j] * arm[j, s]
             sgn = 1.0 if arm[j, s] >= 0 else -1.0
             tang_j[j] = -turn * fr_j[j] * sgn
             arm_j[j] = arm[j, s]
@@ -353,6 +395,11 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 for e in range(lo, hi):
                     total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
                 base[i] = total
+        if hub_x >= 0:      # the belt's torque-dependent pull at the drive station
+            pull = abs(torque) / hub_radius
+            hub[0], hub[1] = pull * hub_cos, pull * hub_sin
+            for i in range(n):
+                base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
         for j in range(lobes):      # friction on the lobe's coordinates
             zf[5 * j] = -tang_j[j] * sina[j]
             zf[5 * j + 1] = tang_j[j] * cosa[j]
@@ -377,6 +424,9 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 v[i] = v1[i]
         else:
             _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j)
+            if hub_x >= 0:
+                fric[hub_x] += hub[0]
+                fric[hub_y] += hub[1]
             tau = 0.0
             switches = 0
             while True:
@@ -450,9 +500,18 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                                  iphi, ifol, j)
                 w = kc * d + cc * dd
             w_prev[j] = w if w > 0.0 else 0.0
+            if film_on:     # the film of the accepted step, at its end load and speed
+                wc = ratio[j, s] * w_prev[j]
+                F = film_a[j, s] * wc ** film_e if wc > 0.0 else math.inf
+                if squeeze_on:
+                    film_h[j] = film_step(film_h[j], F, film_speed[j, s], dt)
+                elif 0.0 < F < math.inf:
+                    film_h[j] = F
         if (s + 1) % substeps == 0:
             g = ((s + 1) // substeps) % grid
             for j in range(lobes):
                 out_load[j, g] = w_prev[j]
                 out_acc[j, g] = acc[valve_dof[j]]
+                if film_on:
+                    out_film[j, g] = film_h[j]
     return switches_total, cut

@@ -20,9 +20,12 @@ compiled revolution at a time (:mod:`._coupled_kernel`). The linear part's effec
 inverted once; the active contacts enter each step as a
 low-rank update (Woodbury), because every contact's gradient lies in a fixed four-vector
 subspace (x_j, y_j, phi_j, u_follower,j) with time-varying coefficients. Friction of each
-contact enters as a tangential force mu_j(theta) W_j on the shaft and a torque mu W r, with
-mu_j(theta) from the contact model on the previous revolution's loads (consistent at the
-periodic state). Revolutions are marched from rest until two agree at the grid samples.
+contact enters as a tangential force mu_j W_j on the shaft and a torque mu W r, with mu_j from
+the contact's current load (a steady film) or its current load and film (the level-1 squeeze
+film, carried per contact as state: :mod:`.coupled_film`), explicit by one step. The drive's
+hub load (a belt: |T|/r + 2 preload along the hub-load angle, T the summed lobe torque) acts at
+the drive station, its torque-dependent part explicit by one step. Revolutions are marched from
+the single train's periodic state until two agree at the grid samples.
 """
 from __future__ import annotations
 
@@ -31,7 +34,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["MonolithicResult", "march_coupled"]
+from .monolithic_tables import FRICTION_LEVELS, own_columns, periodic, table_at
+
+__all__ = ["MonolithicResult", "march_coupled", "FRICTION_LEVELS"]
 
 
 @dataclass(frozen=True)
@@ -39,7 +44,9 @@ class MonolithicResult:
     """Periodic state on the run's grid: ``loads`` (n_lobes, n) valve-referred cam contact
     loads [N]; ``valve_acceleration`` (n_lobes, n) [m/s^2]; revolutions marched, converged,
     the last relative change; steps per revolution; contact changes located in the last
-    revolution and the steps of it that had more than the kernel's limit of them."""
+    revolution and the steps of it that had more than the kernel's limit of them; ``film``
+    (n_lobes, n) every contact's level-1 film [m] (held where the contact is open), or None
+    without the squeeze film."""
 
     loads: np.ndarray
     valve_acceleration: np.ndarray
@@ -49,101 +56,36 @@ class MonolithicResult:
     steps: int
     switches: int = 0
     cut: int = 0
+    film: np.ndarray | None = None
 
 
-def _periodic(values, theta_grid):
-    """Periodic linear interpolant of grid values (for the ratio and friction coefficient)."""
-    values = np.asarray(values, dtype=float) * np.ones_like(theta_grid)
+@dataclass(frozen=True)
+class _System:
+    """The assembled march: matrices (M, K, C, f0) and the state indices of every lobe's shaft
+    coordinates (ix, iy, iphi), follower (ifol), seat (ival) and valve, the block boundaries
+    and the drive station's bending coordinates (hub_x, hub_y; -1 at a rigid support)."""
 
-    def at(theta):
-        return np.interp(theta, theta_grid, values, period=2.0 * math.pi)
-
-    return at
-
-
-#: valve-referred load levels [N] of the friction tables (ratio 10^(1/8): the coefficient
-#: between levels is linear in ln W)
-FRICTION_LEVELS = np.geomspace(0.1, 1.0e5, 49)
-
-
-def _table_at(table, levels, w, cols):
-    """The tabulated coefficient (``table`` (levels, grid)) at loads ``w`` and grid columns
-    ``cols`` (same shape), linear in ln W as the kernel reads it, held beyond the levels."""
-    x = np.clip(np.log(np.maximum(w, levels[0]) / levels[0]) / math.log(levels[1] / levels[0]),
-                0.0, levels.size - 1.0)
-    i = np.minimum(x.astype(int), levels.size - 2)
-    t = x - i
-    return (1.0 - t) * table[i, cols] + t * table[i + 1, cols]
-
-
-def _own_columns(theta_grid, phases):
-    """Grid column, in each lobe's own angle frame, of every grid angle of the shaft."""
-    step = 2.0 * math.pi / theta_grid.size
-    local = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
-    return np.rint((local - theta_grid[0]) / step).astype(int) % theta_grid.size
+    M: np.ndarray
+    K: np.ndarray
+    C: np.ndarray
+    f0: np.ndarray
+    ix: np.ndarray
+    iy: np.ndarray
+    iphi: np.ndarray
+    ifol: np.ndarray
+    ival: np.ndarray
+    valve: np.ndarray
+    blocks: np.ndarray
+    nb: int
+    t0: int
+    tr0: int
+    hub_x: int
+    hub_y: int
 
 
-def _periodic_start(K, M, C, forces, omega, orders: int = 100):
-    """Displacement and velocity at the first grid angle of the linear system's periodic
-    response to ``forces`` (n_dof, grid) (harmonic balance, orders up to ``orders``: the
-    shaft's answer to the higher ones is far smaller than its start-up error)."""
-    n = forces.shape[-1]
-    Fk = np.fft.rfft(forces, axis=-1)[:, :min(orders, n // 2 - 1) + 1]
-    k = np.arange(Fk.shape[-1])
-    w = k * omega
-    Z = (K[None] - (w * w)[:, None, None] * M[None] + 1j * w[:, None, None] * C[None])
-    X = np.linalg.solve(Z, Fk.T[:, :, None])[:, :, 0]          # (orders, n_dof)
-    weight = np.where(k == 0, 1.0, 2.0)[:, None] / n
-    q = np.sum(weight * X.real, axis=0)
-    v = -np.sum(weight * (w[:, None] * X.imag), axis=0)
-    return q, v
-
-
-def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, substeps: int,
-                  friction=None, friction_arm=None, turn: float = 1.0, cycles_max: int = 30,
-                  period_tol: float = 1e-5, start=None,
-                  friction_table=None) -> MonolithicResult:
-    """March the shaft and one copy of ``train`` per lobe to their common periodic state.
-
-    Args:
-        shaft: :class:`~camtrain.camshaft.elastic.ElasticShaft` (lobes in the order of
-            ``phases``).
-        train: the lumped train of every lobe (:class:`~camtrain.dynamics.train.TrainModel`).
-        cam: its rigid valve-lift input (:class:`~camtrain.dynamics.excitation.CamInput`), in
-            the lobe's own angle frame (maximum lift at 0).
-        ratio: rocker ratio on the grid (valve motion per follower motion at the cam).
-        axes, phases: each lobe's follower-axis angle and angle of maximum lift [rad].
-        omega: constant camshaft speed [rad/s].
-        substeps: time steps per grid interval.
-        friction_table: callable(load levels [N], valve-referred) -> the friction coefficient
-            (levels, n) of the contact under each constant load on the grid, in the lobe's own
-            angle frame (the steady film and the deck's friction law depend only on the angle's
-            kinematics and load). The march takes each contact's coefficient from its current
-            load at every step (linear in ln W between the levels of
-            :data:`FRICTION_LEVELS`).
-        friction: callable(loads (n_lobes, n) in the shaft's frame) -> the contact model's
-            friction coefficient (n_lobes, n) under those loads. With ``friction_table`` it
-            corrects the table after every revolution by the table's error at that
-            revolution's loads (the interpolation between levels errs most at a kink of the
-            law, e.g. where the boundary cap takes over), so that the coefficient is the
-            contact model's own at the periodic state; alone (a film with a history, which no
-            table holds) it gives the coefficient on the previous revolution's loads. Neither:
-            no friction.
-        friction_arm: the friction force's arm about the cam axis on the grid [m] (signed).
-        turn: +1 anticlockwise shaft rotation, -1 clockwise.
-        start: the single train's periodic response on a rigid shaft
-            (:class:`~camtrain.dynamics.integrators.TrainResponse` on ``cam.theta``), or None.
-            Given, every train starts from it at its lobe's angle and the shaft from its
-            periodic answer to those trains' loads, so the march starts near the coupled
-            periodic state instead of at rest (the shaft's torsion, lightly damped and slow,
-            would otherwise take most of the revolutions to settle).
-    """
-    from ._coupled_kernel import revolution
+def _assemble(shaft, train, n_lobes: int) -> _System:
     from .train import CAM, SEAT
 
-    theta_grid = cam.theta
-    grid = theta_grid.size
-    n_lobes = len(phases)
     beam, tors = shaft.beam, shaft.torsion
     Kb, Mb, Cb = beam.K, beam.M, beam.C
     nb = Kb.shape[0]
@@ -170,17 +112,93 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         K[s, s] = train.stiffness
         C[s, s] = train.damping
         f0[s] = train.preload
-    # indices of every lobe's shaft coordinates
     free_b = {int(d): i for i, d in enumerate(beam.free)}
     free_t = {int(d): i for i, d in enumerate(tors.free)}
     ix = np.array([free_b[int(beam.v_index[node])] for node in shaft.lobe_nodes])
-    iy = ix + nb
     iphi = np.array([t0 + free_t[int(node)] for node in shaft.lobe_nodes])
-    ifol = tr0 + np.arange(n_lobes) * nt + train.uni_node[CAM]
-    ival = tr0 + np.arange(n_lobes) * nt + train.uni_node[SEAT]
-    valve_dof = tr0 + np.arange(n_lobes) * nt + train.valve
+    hub = free_b.get(int(beam.v_index[shaft.drive_node]), -1)
+    # the linear part is block diagonal: both bending planes, the twist, each train
+    blocks = np.array([0, nb, 2 * nb, tr0] + [tr0 + (j + 1) * nt for j in range(n_lobes)],
+                      dtype=np.int64)
+    trains = tr0 + np.arange(n_lobes) * nt
+    return _System(M, K, C, f0, ix, ix + nb, iphi, trains + train.uni_node[CAM],
+                   trains + train.uni_node[SEAT], trains + train.valve, blocks, nb, t0, tr0,
+                   int(hub), int(hub + nb) if hub >= 0 else -1)
+
+
+def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, substeps: int,
+                  friction=None, friction_arm=None, turn: float = 1.0, cycles_max: int = 30,
+                  period_tol: float = 1e-5, start=None, friction_table=None, film=None,
+                  drive=None) -> MonolithicResult:
+    """March the shaft and one copy of ``train`` per lobe to their common periodic state.
+
+    Args:
+        shaft: :class:`~camtrain.camshaft.elastic.ElasticShaft` (lobes in the order of
+            ``phases``).
+        train: the lumped train of every lobe (:class:`~camtrain.dynamics.train.TrainModel`).
+        cam: its rigid valve-lift input (:class:`~camtrain.dynamics.excitation.CamInput`), in
+            the lobe's own angle frame (maximum lift at 0).
+        ratio: rocker ratio on the grid (valve motion per follower motion at the cam).
+        axes, phases: each lobe's follower-axis angle and angle of maximum lift [rad].
+        omega: constant camshaft speed [rad/s].
+        substeps: time steps per grid interval.
+        friction_table: callable(load levels [N], valve-referred) -> the friction coefficient
+            (levels, n) of the contact under each constant load on the grid, in the lobe's own
+            angle frame (the steady film and the deck's friction law depend only on the angle's
+            kinematics and load). The march takes each contact's coefficient from its current
+            load at every step (linear in ln W between the levels of
+            :data:`FRICTION_LEVELS`).
+        film: a :class:`~camtrain.dynamics.coupled_film.SqueezeFilmModel` (the level-1 squeeze
+            film), or None. Given, every contact carries its film as state, marched once per
+            accepted step, and its coefficient comes from its current load and film at every
+            step (``friction_table`` and ``friction`` are then not used).
+        friction: callable(loads (n_lobes, n) in the shaft's frame) -> the contact model's
+            friction coefficient (n_lobes, n) under those loads. With ``friction_table`` it
+            corrects the table after every revolution by the table's error at that
+            revolution's loads, so that the coefficient is the contact model's own at the
+            periodic state; alone (a film with a history other than the level-1 film, which
+            no table holds) it gives the coefficient on the previous revolution's loads.
+            Neither (nor ``film``): no friction.
+        friction_arm: the friction force's arm about the cam axis on the grid [m] (signed).
+        turn: +1 anticlockwise shaft rotation, -1 clockwise.
+        start: the single train's periodic response on a rigid shaft
+            (:class:`~camtrain.dynamics.integrators.TrainResponse` on ``cam.theta``), or None.
+            Given, every train starts from it at its lobe's angle and the shaft from its
+            periodic answer to those trains' loads, so the march starts near the coupled
+            periodic state instead of at rest (the shaft's torsion, lightly damped and slow,
+            would otherwise take most of the revolutions to settle).
+        drive: (pitch radius [m], hub-load angle [rad], preload [N]) of a belt drive at the
+            shaft's drive station (:func:`camtrain.camshaft.loads.pulley_load`), or None (no
+            hub load).
+
+    Why the tables are corrected after every revolution: the friction laws have kinks (where
+    Ball's boundary cap takes over, where Greenwood-Tripp asperity contact starts at lambda
+    = 3) and there the interpolation between the table's levels errs by up to about 10 % of
+    the coefficient. The correction by the table's error at the last revolution's loads (and
+    films) makes the coefficient at every grid angle the contact model's own at the periodic
+    state, and costs one evaluation of the law per revolution.
+    """
+    from ._coupled_kernel import revolution
+    from .monolithic_start import warm_start
+
+    theta_grid = cam.theta
+    grid = theta_grid.size
+    n_lobes = len(phases)
+    sysm = _assemble(shaft, train, n_lobes)
+    M, K, C, f0 = sysm.M, sysm.K, sysm.C, sysm.f0.copy()
+    n = M.shape[0]
+    ix, iy, iphi, ifol, ival = sysm.ix, sysm.iy, sysm.iphi, sysm.ifol, sysm.ival
+    from .train import CAM, SEAT
     kc, cc, offc = train.uni_k[CAM], train.uni_c[CAM], train.uni_offset[CAM]
     ks, cs_, offs = train.uni_k[SEAT], train.uni_c[SEAT], train.uni_offset[SEAT]
+    hub_x = hub_y = -1
+    hub_dir, hub_radius = (0.0, 0.0), 1.0
+    if drive is not None and sysm.hub_x >= 0:
+        hub_radius, angle, preload = (float(v) for v in drive)
+        hub_x, hub_y = sysm.hub_x, sysm.hub_y
+        hub_dir = (math.cos(angle), math.sin(angle))
+        f0[hub_x] += 2.0 * preload * hub_dir[0]       # the preload's part: constant
+        f0[hub_y] += 2.0 * preload * hub_dir[1]
 
     steps = grid * int(substeps)
     period = 2.0 * math.pi / omega
@@ -188,25 +206,28 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     a0, a1 = 4.0 / dt ** 2, 2.0 / dt
     Ainv = np.linalg.inv(K + a1 * C + a0 * M)
     P, Q, x_f0 = Ainv @ M, Ainv @ C, Ainv @ f0
-    # the linear part is block diagonal: both bending planes, the twist, each train
-    blocks = np.array([0, nb, 2 * nb, tr0] + [tr0 + (j + 1) * nt for j in range(n_lobes)],
-                      dtype=np.int64)
     Minv = np.linalg.inv(M)      # block diagonal as M (the acceleration after a switch)
     # A^-1 of every basis vector a contact gradient is made of: (x, y, phi, follower, valve)
     ainv_basis = np.empty((n, 5 * n_lobes))
     for j in range(n_lobes):
         for k, dof in enumerate((ix[j], iy[j], iphi[j], ifol[j], ival[j])):
             ainv_basis[:, 5 * j + k] = Ainv[:, dof]
+    hub_basis = (np.ascontiguousarray(Ainv[:, [hub_x, hub_y]]) if hub_x >= 0
+                 else np.zeros((n, 2)))
     # the inputs at every step of a revolution, in each lobe's own angle frame
     theta = theta_grid[0] + omega * dt * np.arange(1, steps + 1)
     local = theta[None, :] - np.asarray(phases, dtype=float)[:, None]
     lift, d1, _ = cam.evaluate(local)
-    r = _periodic(ratio, theta_grid)(local)
-    arm = _periodic(np.zeros(grid) if friction_arm is None else friction_arm, theta_grid)(local)
+    r = periodic(ratio, theta_grid)(local)
+    arm_grid = np.zeros(grid) if friction_arm is None else friction_arm
+    arm = periodic(arm_grid, theta_grid)(local)
     cosa, sina = np.cos(axes), np.sin(axes)
     gx, gy = r * cosa[:, None], r * sina[:, None]
     # friction coefficient tables (n_lobes, levels, steps): in the current load, or lagged
     ln_first, ln_step = 0.0, 1.0
+    grid_mu = None
+    if film is not None:
+        friction_table = friction = None
     if friction_table is not None:
         levels = FRICTION_LEVELS
         ln_first, ln_step = math.log(levels[0]), math.log(levels[1] / levels[0])
@@ -215,6 +236,9 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                                  for row in grid_mu]) for j in range(n_lobes)])
     else:
         mu = np.zeros((n_lobes, 1, steps))
+    fs = _film_state(film, theta_grid, local, n_lobes, grid)
+    if film is not None:
+        ln_first, ln_step = math.log(film.levels[0]), math.log(film.levels[1] / film.levels[0])
     # the table's error at the last revolution's loads, when the exact law is also given
     corr = np.zeros((n_lobes, steps))
     q, v, acc = np.zeros(n), np.zeros(n), np.zeros(n)  # at rest: the start-up transient decays
@@ -222,42 +246,53 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     act_s = np.ones(n_lobes, dtype=bool)
     if start is not None:
         drag = None
-        if friction_table is not None:
-            drag = (grid_mu, FRICTION_LEVELS,
-                    np.zeros(grid) if friction_arm is None else friction_arm, float(turn))
-        q, v, acc, act_c, act_s = _warm_start(
-            start, cam, theta_grid, phases, ratio, axes, shaft, train, M, K, C, f0, omega,
-            dict(ix=ix, iy=iy, iphi=iphi, ifol=ifol, ival=ival, nb=nb, t0=t0, tr0=tr0),
-            lift[:, -1], d1[:, -1] * omega, gx[:, -1], gy[:, -1], d1[:, -1], drag)
+        if grid_mu is not None:
+            drag = (grid_mu, FRICTION_LEVELS, arm_grid, float(turn), False)
+        elif film is not None:
+            one = int(np.argmin(np.abs(np.log(fs["ratios"]))))
+            drag = (film.table[one], film.levels, arm_grid, float(turn), True)
+        q, v, acc, act_c, act_s = warm_start(
+            start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, omega, sysm,
+            lift[:, -1], d1[:, -1] * omega, gx[:, -1], gy[:, -1], d1[:, -1], drag,
+            None if hub_x < 0 else (hub_radius, hub_dir, f0[hub_x], f0[hub_y]))
+        if film is not None:
+            fs["h"][:] = _start_film(film, start, theta_grid, phases, ratio, omega)
     w_prev = np.zeros(n_lobes)
     if start is not None and friction is not None and friction_table is None:
         # the lagged coefficient on the start's loads
         at = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
         grid_mu = friction(np.interp(at, start.theta, np.maximum(start.contact_force[CAM], 0.0),
                                      period=2.0 * math.pi))
-        mu = np.array([_periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
+        mu = np.array([periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
         mu = mu[:, None, :]
     switches = cut = 0
     loads = np.zeros((n_lobes, grid))
     valve_acc = np.zeros((n_lobes, grid))
+    films = np.zeros((n_lobes, grid))
     previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
         switches, cut = revolution(
-            q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv, f0,
-            lift,
-            d1 * omega, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina, float(turn), kc,
-            cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival, valve_dof, int(substeps), loads,
-            valve_acc)
-        if friction is not None and friction_table is not None:
+            q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, sysm.blocks, ainv_basis, K, C, M, Minv,
+            f0, lift, d1 * omega, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina,
+            float(turn), kc, cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
+            sysm.valve, int(substeps), loads, valve_acc, film is not None,
+            film is not None and film.squeeze, fs["h"], fs["unit"], fs["exponent"], fs["speed"],
+            fs["table"], fs["col"], fs["ln_r0"], fs["d_ln_r"], films, hub_basis, hub_x, hub_y,
+            hub_dir[0], hub_dir[1], hub_radius)
+        if film is not None:
+            # correct the table by its error at this revolution's loads and films
+            error = _film_table_error(film, loads, films, ratio, theta_grid, phases)
+            corr = np.array([periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
+        elif friction is not None and friction_table is not None:
             # correct the table by its error at this revolution's loads: the coefficient is
             # the contact model's own at the periodic state, and follows the load in between
             exact = friction(loads)
-            tabled = _table_at(grid_mu, FRICTION_LEVELS, loads, _own_columns(theta_grid, phases))
+            tabled = table_at(grid_mu, FRICTION_LEVELS, loads, own_columns(theta_grid, phases))
             error = np.where(loads > 0.0, exact - tabled, 0.0)
-            corr = np.array([_periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
+            corr = np.array([periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
         elif friction is not None:  # the coefficient on this revolution's loads, for the next
             grid_mu = friction(loads)
-            mu = np.array([_periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
+            mu = np.array([periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
             mu = mu[:, None, :]
         if previous is not None:
             scale = max(float(np.max(np.abs(loads))), 1e-12)
@@ -266,92 +301,65 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                 break
         previous = loads.copy()
     return MonolithicResult(loads.copy(), valve_acc.copy(), cycle, change <= period_tol,
-                            change, steps, int(switches), int(cut))
+                            change, steps, int(switches), int(cut),
+                            films.copy() if film is not None else None)
 
 
+def _film_state(film, theta_grid, local, n_lobes: int, grid: int) -> dict:
+    """The kernel's film arguments: the steady film under 1 N, the entrainment speed and the
+    fractional grid column of every step in each lobe's own frame, the table and its film
+    ratios, the film state h (placeholders without a film)."""
+    from .coupled_film import FILM_RATIOS
+
+    if film is None:
+        z = np.zeros((n_lobes, 1))
+        return dict(h=np.ones(n_lobes), unit=z, exponent=0.0, speed=z, table=np.zeros((2, 2, 1)),
+                    col=z, ln_r0=0.0, d_ln_r=1.0, ratios=FILM_RATIOS)
+    two_pi = 2.0 * math.pi
+    step = two_pi / grid
+    speed = np.array([np.interp(row, theta_grid, film.speed, period=two_pi) for row in local])
+    radius = np.array([np.interp(row, theta_grid, film.radius, period=two_pi) for row in local])
+    return dict(
+        h=np.ones(n_lobes),
+        unit=film.unit_of(radius, speed),
+        exponent=float(film.exponent),
+        speed=speed,
+        table=np.ascontiguousarray(film.table),
+        col=np.mod((local - theta_grid[0]) / step, grid),
+        ln_r0=math.log(FILM_RATIOS[0]), d_ln_r=math.log(FILM_RATIOS[1] / FILM_RATIOS[0]),
+        ratios=FILM_RATIOS)
 
 
-def _warm_start(start, cam, theta_grid, phases, ratio, axes, shaft, train, M, K, C, f0, omega, idx,
-                b0, bd0, gx0, gy0, gphi0, drag=None):
-    """State at the march's first angle from the single train's periodic response (see
-    :func:`march_coupled`): each train at its lobe's angle, the shaft at its periodic answer
-    to the trains' contact forces and torques (with their friction when ``drag`` = (coefficient
-    table (levels, grid) in the lobe's frame, load levels, friction arm on the grid, turn) is
-    given), the follower (and an open valve) moved with the lobe, the contact states from
-    their indicators and the acceleration from the equilibrium."""
+def _shift(values, theta_grid, by):
+    """Periodic curves ``values`` (n_lobes, grid) read at theta + by_j (row j)."""
+    return np.array([np.interp(theta_grid + b, theta_grid, row, period=2.0 * math.pi)
+                     for row, b in zip(values, by, strict=True)])
+
+
+def _start_film(film, start, theta_grid, phases, ratio, omega):
+    """Every contact's film at the march's first angle: the periodic level-1 film of the
+    single train's load (on the grid), at its lobe's angle."""
+    from camtrain.lubrication import squeeze_film_march
+
     from .train import CAM
 
-    n_lobes = len(phases)
-    n = M.shape[0]
-    nt = train.size
-    q, v = np.zeros(n), np.zeros(n)
-    theta0 = float(theta_grid[0])
-    period = 2.0 * math.pi
-    for j, g in enumerate(phases):
-        at = theta0 - float(g)
-        s = slice(idx["tr0"] + j * nt, idx["tr0"] + (j + 1) * nt)
-        q[s] = [np.interp(at, start.theta, row, period=period) for row in start.u]
-        v[s] = [np.interp(at, start.theta, row, period=period) for row in start.v]
-    # the trains' forces on the shaft over the revolution, in the shaft's frame
-    local = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
-    w = np.interp(local, start.theta, np.maximum(start.contact_force[CAM], 0.0), period=period)
-    rr = np.interp(local, theta_grid, np.asarray(ratio, dtype=float) * np.ones_like(theta_grid),
-                   period=period)
-    lift_rate = cam.evaluate(local)[1]
-    nb, t0 = idx["nb"], idx["t0"]
-    fb = np.zeros((2 * nb, theta_grid.size))
-    ft = np.zeros((M.shape[0] - 2 * nb, theta_grid.size))
-    for j in range(n_lobes):
-        fb[idx["ix"][j]] -= w[j] * rr[j] * math.cos(axes[j])
-        fb[idx["iy"][j]] -= w[j] * rr[j] * math.sin(axes[j])
-        ft[idx["iphi"][j] - t0] -= w[j] * lift_rate[j]
-    if drag is not None:     # friction: the tangential force and the torque mu W r
-        table, levels, arm_grid, turn = drag
-        arm = np.interp(local, theta_grid, arm_grid, period=period)
-        mu_all = _table_at(table, levels, w, _own_columns(theta_grid, phases))
-        for j in range(n_lobes):
-            fr = mu_all[j] * rr[j] * w[j]
-            tang = -turn * fr * np.where(arm[j] >= 0.0, 1.0, -1.0)
-            fb[idx["ix"][j]] -= tang * math.sin(axes[j])
-            fb[idx["iy"][j]] += tang * math.cos(axes[j])
-            ft[idx["iphi"][j] - t0] -= fr * arm[j]
-    for lo, hi, force in ((0, nb, fb[:nb]), (nb, 2 * nb, fb[nb:])):
-        q[lo:hi], v[lo:hi] = _periodic_start(K[lo:hi, lo:hi], M[lo:hi, lo:hi], C[lo:hi, lo:hi],
-                                             force, omega)
-    hi = idx["tr0"]
-    q[t0:hi], v[t0:hi] = _periodic_start(K[t0:hi, t0:hi], M[t0:hi, t0:hi], C[t0:hi, t0:hi],
-                                         ft[:hi - t0], omega)
-    # the shaft's motion moves each lobe's cam input: the follower (and an open valve) moves
-    # with it, so the contact keeps the single train's compression
-    kc, cc, offc = train.uni_k[0], train.uni_c[0], train.uni_offset[0]
-    ks, cs, offs = train.uni_k[1], train.uni_c[1], train.uni_offset[1]
-    for j in range(n_lobes):
-        ix, iy, iphi, ifol, ival = (idx[k][j] for k in ("ix", "iy", "iphi", "ifol", "ival"))
-        shift = gx0[j] * q[ix] + gy0[j] * q[iy] + gphi0[j] * q[iphi]
-        rate = gx0[j] * v[ix] + gy0[j] * v[iy] + gphi0[j] * v[iphi]
-        moved = [ifol] + ([ival] if ival != ifol and offs - q[ival] < 0.0 else [])
-        for dof in moved:
-            q[dof] += shift
-            v[dof] += rate
-    # contact states and forces at the start
-    force = f0.copy()
-    act_c = np.zeros(n_lobes, dtype=bool)
-    act_s = np.zeros(n_lobes, dtype=bool)
-    for j in range(n_lobes):
-        ix, iy, iphi, ifol, ival = (idx[k][j] for k in ("ix", "iy", "iphi", "ifol", "ival"))
-        d = b0[j] + offc - q[ifol] + gx0[j] * q[ix] + gy0[j] * q[iy] + gphi0[j] * q[iphi]
-        dd = bd0[j] - v[ifol] + gx0[j] * v[ix] + gy0[j] * v[iy] + gphi0[j] * v[iphi]
-        wc = kc * d + cc * dd
-        if min(kc * d, wc) > 0.0:
-            act_c[j] = True
-            force[ifol] += wc
-            force[ix] -= wc * gx0[j]
-            force[iy] -= wc * gy0[j]
-            force[iphi] -= wc * gphi0[j]
-        ds, dds = offs - q[ival], -v[ival]
-        ws = ks * ds + cs * dds
-        if min(ks * ds, ws) > 0.0:
-            act_s[j] = True
-            force[ival] += ws
-    acc = np.linalg.solve(M, force - K @ q - C @ v)
-    return q, v, acc, act_c, act_s
+    w = np.interp(theta_grid, start.theta, np.maximum(start.contact_force[CAM], 0.0),
+                  period=2.0 * math.pi) * np.asarray(ratio, dtype=float)
+    F = film.steady(w)
+    h = squeeze_film_march(theta_grid, F, film.speed, omega, squeeze=film.squeeze).film
+    good = np.isfinite(h) & (h > 0.0)
+    h = np.where(good, h, np.max(h[good]) if np.any(good) else 1e-6)
+    at = theta_grid[0] - np.asarray(phases, dtype=float)
+    return np.interp(at, theta_grid, h, period=2.0 * math.pi)
+
+
+def _film_table_error(film, loads, films, ratio, theta_grid, phases):
+    """The film table's error at one revolution's loads and films (shaft frame, n_lobes x
+    grid): the contact model's coefficient with the marched film minus the table's."""
+    phases = np.asarray(phases, dtype=float)
+    own_w = _shift(loads, theta_grid, phases) * np.asarray(ratio, dtype=float)
+    own_h = _shift(films, theta_grid, phases)
+    exact = film.friction(own_w, own_h)
+    cols = np.broadcast_to(np.arange(theta_grid.size), own_w.shape)
+    error = np.where(own_w > 0.0, exact - film.tabled(own_w, own_h, cols), 0.0)
+    return _shift(error, theta_grid, -phases)

@@ -211,10 +211,11 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     ``report`` only every lobe's marched load (shaft frame) is returned."""
     import numpy as np
 
-    from camtrain.build.shaft import answer
+    from camtrain.build.shaft import answer, drive_of
     from camtrain.camshaft import lobe_force, shift_curve
     from camtrain.dynamics import march
-    from camtrain.dynamics.monolithic import march_coupled
+    from camtrain.dynamics.coupled_film import squeeze_film_model
+    from camtrain.dynamics.monolithic import FRICTION_LEVELS, march_coupled
     from camtrain.effects.shaft_output import add_shaft
     from camtrain.formulas import cam_torque
 
@@ -244,8 +245,13 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
         return np.array(mu)
 
     # a steady film depends on the angle and the load only: the march takes each contact's
-    # friction from its current load at every step; a film with a history lags a revolution
+    # friction from its current load at every step; the level-1 squeeze film is carried per
+    # contact through the march; the averaged Reynolds film lags a revolution
     steady = contact.film_law == "steady"
+    film = None
+    if contact.film_law == "squeeze":
+        film = squeeze_film_model(contact, kin, FRICTION_LEVELS)
+    drive = drive_of(deck)
     sub = run_setup.settings.substeps
     # start from the single train's periodic state on a rigid shaft (fewer revolutions)
     single = march(run_setup.model, run_setup.cam, run_setup.base, run_setup.settings)
@@ -255,7 +261,8 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
                            friction_table=friction_table if steady else None,
                            friction_arm=kin.friction_arm, turn=turn,
                            cycles_max=run_setup.settings.cycles_max,
-                           period_tol=f.coupling_tolerance, start=single)
+                           period_tol=f.coupling_tolerance, start=single, film=film,
+                           drive=None if drive is None else drive[1:])
     forces, torques, loads = [], [], []
     for j, (g, w) in enumerate(zip(gammas, own_frame(result.loads), strict=True)):
         fr = contact.solve(kin, w).force
@@ -271,4 +278,10 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     add_shaft(res, shaft, out, theta, cs.orders, omega)
     _report(res, loads, result.valve_acceleration, theta, "monolithic march", result.cycles,
             result.change, result.converged, f.coupling_tolerance)
+    if result.film is not None:
+        for j, load in enumerate(loads):
+            res.add_column("film", np.where(load > 0.0, result.film[j], np.nan), "m",
+                           f"lobe {j + 1}: level-1 squeeze film of its cam contact, marched "
+                           "with the coupled trains at every step (NaN: out of contact)",
+                           component=f"lobe_{j + 1}")
     return out
