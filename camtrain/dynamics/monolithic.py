@@ -176,7 +176,12 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     = 3) and there the interpolation between the table's levels errs by up to about 10 % of
     the coefficient. The correction by the table's error at the last revolution's loads (and
     films) makes the coefficient at every grid angle the contact model's own at the periodic
-    state, and costs one evaluation of the law per revolution.
+    state, and costs one evaluation of the law per revolution. Below the table's first load
+    level (0.1 N) the table holds that level's coefficient and is not corrected: there the
+    coefficient of a law with a Hertz area A ~ W^1/2 in it (Greenwood-Tripp's tau0 A / W)
+    grows without bound as the load falls (7.8 at the 2e-13 N a grid sample caught as a
+    contact closed), and a correction taken there would be applied at the next revolution's
+    load at that angle, which can be hundreds of newtons.
     """
     from ._coupled_kernel import revolution
     from .monolithic_start import warm_start
@@ -288,7 +293,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             # the contact model's own at the periodic state, and follows the load in between
             exact = friction(loads)
             tabled = table_at(grid_mu, FRICTION_LEVELS, loads, own_columns(theta_grid, phases))
-            error = np.where(loads > 0.0, exact - tabled, 0.0)
+            error = np.where(loads >= FRICTION_LEVELS[0], exact - tabled, 0.0)
             corr = np.array([periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
         elif friction is not None:  # the coefficient on this revolution's loads, for the next
             grid_mu = friction(loads)
@@ -361,5 +366,5 @@ def _film_table_error(film, loads, films, ratio, theta_grid, phases):
     own_h = _shift(films, theta_grid, phases)
     exact = film.friction(own_w, own_h)
     cols = np.broadcast_to(np.arange(theta_grid.size), own_w.shape)
-    error = np.where(own_w > 0.0, exact - film.tabled(own_w, own_h, cols), 0.0)
+    error = np.where(own_w >= film.levels[0], exact - film.tabled(own_w, own_h, cols), 0.0)
     return _shift(error, theta_grid, -phases)
