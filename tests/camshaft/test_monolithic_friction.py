@@ -28,7 +28,7 @@ def test_per_step_and_lagged_friction_reach_one_periodic_state(law, monkeypatch)
     law (both have a kink in the load, where the interpolated table errs most: up to about
     10 % of the coefficient uncorrected). The two paths differ by design inside a grid
     interval, where one follows the load and the other holds the coefficient of the grid
-    angles; that matters only in the impacts. Measured: loads within 0.04-0.10 % of the peak,
+    angles; that matters only in the impacts. Measured: loads within 0.04-0.14 % of the peak,
     twist within 0.03-0.07 %, both in 3 revolutions; held at 0.3 %. Both runs leave out the
     drive's hub load: its torque-dependent part |T|/r has a kink where the summed torque
     passes zero, at lobe 1's nose, where the torque is mostly the friction's, and there the
