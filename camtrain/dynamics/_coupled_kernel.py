@@ -1,8 +1,9 @@
 """Compiled revolution of the monolithic shaft-and-trains march (numba, cached on disk): the
 step of :mod:`camtrain.dynamics.monolithic` (Newmark average acceleration, Woodbury update of
 the factorised linear part for the closed contacts, contact changes located inside the step,
-friction of each contact from its current load, explicit by one step). Only this module and
-the train kernel import numba.
+friction of each contact from its current load, or its current load and level-1 squeeze film
+(:mod:`._coupled_film_kernel`), and the drive's hub load, both explicit by one step). Only the
+compiled kernels import numba.
 
 A step is first taken with the contact states of its start (the linear part's inverse for the
 full step is factorised once: a low-rank update per step). When a contact's indicator
