@@ -15,10 +15,11 @@ psutil = pytest.importorskip("psutil")
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_path):
+def _sweep_with_workers(deck, out, jobs: int):
+    """A long `sweep -j jobs` as a process, once jobs - 1 workers run (and half a second on)."""
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(fast_flat), "-p", "speed",
-           "--range", "1000:3000:20000", "-j", "3", "--no-plots", "-q", "--out", str(tmp_path / "s")]
+    cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(deck), "-p", "speed",
+           "--range", "1000:3000:20000", "-j", str(jobs), "--no-plots", "-q", "--out", str(out)]
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     parent = psutil.Process(proc.pid)
     workers: list = []
@@ -27,12 +28,17 @@ def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_pat
         # forked workers run the sweep's own command line, spawned ones spawn_main
         workers = [p for p in parent.children(recursive=True)
                    if "resource_tracker" not in " ".join(p.cmdline())]
-        if len(workers) >= 2:
+        if len(workers) >= jobs - 1:
             break
         time.sleep(0.2)
-    assert len(workers) >= 2, f"the sweep never started its workers: {proc.poll()}"
+    assert len(workers) >= jobs - 1, f"the sweep never started its workers: {proc.poll()}"
     time.sleep(0.5)
-    assert proc.poll() is None, "the sweep ended before it could be terminated"
+    assert proc.poll() is None, "the sweep ended before the test could act on it"
+    return proc, workers
+
+
+def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_path):
+    proc, workers = _sweep_with_workers(fast_flat, tmp_path / "s", 3)
     proc.send_signal(signal.SIGTERM)
     proc.wait(timeout=30)
     _, alive = psutil.wait_procs(workers, timeout=10)
@@ -45,20 +51,7 @@ def test_sigterm_to_a_parallel_sweep_leaves_no_worker_running(fast_flat, tmp_pat
 
 
 def test_a_worker_killed_from_outside_ends_the_sweep_with_a_message(fast_flat, tmp_path):
-    env = dict(os.environ, PYTHONPATH=str(ROOT))
-    cmd = [sys.executable, "-m", "camtrain.cli", "sweep", str(fast_flat), "-p", "speed",
-           "--range", "1000:3000:20000", "-j", "2", "--no-plots", "-q", "--out", str(tmp_path / "s")]
-    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    parent = psutil.Process(proc.pid)
-    workers: list = []
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline and proc.poll() is None and not workers:
-        workers = [p for p in parent.children(recursive=True)
-                   if "resource_tracker" not in " ".join(p.cmdline())]
-        time.sleep(0.2)
-    assert workers, f"the sweep never started its worker: {proc.poll()}"
-    time.sleep(0.5)
-    assert proc.poll() is None, "the sweep ended before its worker could be killed"
+    proc, workers = _sweep_with_workers(fast_flat, tmp_path / "s", 2)
     workers[0].kill()
     _, err = proc.communicate(timeout=30)
     assert proc.returncode == 70, err.decode()
