@@ -7,6 +7,7 @@ layer sorts by case index.
 from __future__ import annotations
 
 import os
+from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
@@ -103,25 +104,41 @@ class WorkerLost(CamtrainError):
     exit_code = EXIT_INTERNAL
 
 
-def _serve(conn) -> None:
+def _serve(conn, siblings=()) -> None:
     """A worker's life: SIGTERM ends it at once (a forked worker inherits the sweep's handler,
     which turns SIGTERM into an interrupt for the parent to clean up after); import what a case
-    needs, say so, then run chunks until told to stop or the sweep has gone."""
+    needs, say so, then run chunks until told to stop or the sweep has gone.
+
+    A thread reads the chunks as they arrive, so the sweep's process never waits to hand over
+    the next chunk while this one sends its records (the two could otherwise each wait on a full
+    pipe). ``siblings``: the sweep's ends of the pipes (this worker's and the others'), which a
+    forked worker inherits and closes, so that it sees the end of its pipe when the sweep dies."""
+    import queue
     import signal
+    import threading
 
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)   # Ctrl-C reaches the whole group: the parent decides
+    for other in siblings:
+        other.close()
     import camtrain.runner  # noqa: F401 - the import is the work
     import camtrain.study.case_model  # noqa: F401
 
+    tasks: queue.SimpleQueue = queue.SimpleQueue()
+
+    def read() -> None:
+        while True:
+            try:
+                task = conn.recv()
+            except (EOFError, OSError):   # the sweep has ended or been killed
+                task = None
+            tasks.put(task)
+            if task is None:
+                return
+
+    threading.Thread(target=read, daemon=True).start()
     conn.send(("ready", os.getpid()))
-    while True:
-        try:
-            task = conn.recv()
-        except (EOFError, OSError):   # the sweep has ended or been killed
-            return
-        if task is None:
-            return
+    while (task := tasks.get()) is not None:
         fn, chunk = task
         try:
             reply = ("done", run_chunk(fn, chunk))
@@ -144,16 +161,19 @@ def _fork_is_safe() -> bool:
 
 
 class _Worker:
-    """One worker process and this process's end of its pipe; at most one chunk in flight."""
+    """One worker process and this process's end of its pipe, with the chunks it holds."""
 
-    def __init__(self, context):
+    def __init__(self, context, siblings: list):
         parent_end, child_end = context.Pipe()
-        self.process = context.Process(target=_serve, args=(child_end,), daemon=True)
+        # a forked child holds copies of this process's pipe ends (its own and its siblings'):
+        # it closes them, or it would never see its pipe end when this process dies
+        inherited = (*siblings, parent_end) if context.get_start_method() == "fork" else ()
+        self.process = context.Process(target=_serve, args=(child_end, inherited), daemon=True)
         self.process.start()
         child_end.close()
         self.conn = parent_end
         self.ready = False
-        self.chunk: list | None = None
+        self.chunks: deque = deque()   # sent, in the order the worker runs them
 
     def died(self) -> WorkerLost:
         self.process.join(timeout=1)
@@ -167,11 +187,12 @@ class ProcessExecutor:
 
     The workers start when the executor is made and each first reports that it is ready; only
     then do they get cases. The cases go out in chunks (about eight per process): each ready
-    worker holds one chunk at a time, taken from the front of the queue, while this process
-    works through chunks from the end. A sweep that this process finishes before the workers
-    are ready does not wait for them. Workers are forked while this process runs no other
-    thread (they start at once, with everything imported and the deck loaded) and spawned
-    otherwise: forking a threaded process can deadlock.
+    worker holds up to two chunks, taken from the front of the queue (the second is there when
+    it finishes the first, so it never waits for this process to look up from a chunk of its
+    own), while this process works through chunks from the end. A sweep that this process
+    finishes before the workers are ready does not wait for them. Workers are forked while this
+    process runs no other thread (they start at once, with everything imported and the deck
+    loaded) and spawned otherwise: forking a threaded process can deadlock.
 
     Each worker talks over a pipe of its own and this process reads them itself, with no
     helper thread: a worker killed while it sends (SIGTERM to the sweep) leaves no thread
@@ -186,7 +207,9 @@ class ProcessExecutor:
         method = "fork" if _fork_is_safe() else "spawn"
         self.description = f"{jobs} processes (this one and {jobs - 1} {method}ed workers)"
         context = multiprocessing.get_context(method)
-        self._workers = [_Worker(context) for _ in range(max(jobs - 1, 1))]
+        self._workers: list[_Worker] = []
+        for _ in range(max(jobs - 1, 1)):
+            self._workers.append(_Worker(context, [w.conn for w in self._workers]))
 
     def _receive(self, worker: _Worker) -> list:
         """What a worker has sent: its ready report, or a finished chunk's records."""
@@ -197,7 +220,7 @@ class ProcessExecutor:
         if kind == "ready":
             worker.ready = True
             return []
-        worker.chunk = None
+        worker.chunks.popleft()
         if kind == "raised":
             raise RuntimeError(f"in a sweep worker: {payload}")
         return payload
@@ -206,7 +229,7 @@ class ProcessExecutor:
         """Records of the chunks finished within ``timeout`` (None: wait for the first)."""
         from multiprocessing.connection import wait
 
-        waiting = {w.conn: w for w in self._workers if not w.ready or w.chunk is not None}
+        waiting = {w.conn: w for w in self._workers if not w.ready or w.chunks}
         if not waiting:
             return []
         sentinels = {w.process.sentinel: w for w in waiting.values()}
@@ -221,17 +244,15 @@ class ProcessExecutor:
         return out
 
     def map(self, fn: Callable, jobs: Iterable) -> Iterator:
-        from collections import deque
-
         jobs = list(jobs)
         size = max(1, min(100, len(jobs) // (8 * self.jobs)))
         pending = deque(jobs[i:i + size] for i in range(0, len(jobs), size))
-        while pending or any(w.chunk is not None for w in self._workers):
+        while pending or any(w.chunks for w in self._workers):
             for worker in self._workers:
-                if worker.ready and worker.chunk is None and pending:
-                    worker.chunk = pending.popleft()
+                while worker.ready and len(worker.chunks) < 2 and pending:
+                    worker.chunks.append(pending.popleft())
                     try:
-                        worker.conn.send((fn, worker.chunk))
+                        worker.conn.send((fn, worker.chunks[-1]))
                     except OSError:   # it ended since it last reported
                         raise worker.died() from None
             yield from self._poll(0)
@@ -243,13 +264,13 @@ class ProcessExecutor:
     def close(self) -> None:
         """Tell ready workers to stop and wait for them; stop those still starting."""
         for worker in self._workers:
-            if worker.ready and worker.chunk is None:
+            if worker.ready and not worker.chunks:
                 try:
                     worker.conn.send(None)
                 except OSError:
                     pass
         for worker in self._workers:
-            if worker.ready and worker.chunk is None:
+            if worker.ready and not worker.chunks:
                 worker.process.join(timeout=10)
         self.abort()
 

@@ -57,3 +57,14 @@ def test_a_worker_killed_from_outside_ends_the_sweep_with_a_message(fast_flat, t
     assert proc.returncode == 70, err.decode()
     assert b"died (exit code -9)" in err and b"--resume" in err and b"Traceback" not in err
     assert (tmp_path / "s" / "sweep.csv").exists()
+
+
+def test_workers_end_when_the_sweep_is_killed(fast_flat, tmp_path):
+    # SIGKILL cannot be handled: each worker must see its pipe end and stop by itself
+    proc, workers = _sweep_with_workers(fast_flat, tmp_path / "s", 3)
+    proc.kill()
+    proc.communicate(timeout=10)
+    _, alive = psutil.wait_procs(workers, timeout=20)
+    for p in alive:
+        p.kill()
+    assert not alive, f"workers still running after the sweep was killed: {[p.pid for p in alive]}"
