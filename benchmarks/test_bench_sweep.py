@@ -54,6 +54,19 @@ def test_bench_sweep_1000(benchmark, tmp_path, jobs, points):
     benchmark.pedantic(sweep, rounds=1, iterations=1)
 
 
+@pytest.mark.parametrize("points", [1440, 720])
+def test_bench_sweep_jobs_2_against_jobs_1(benchmark, tmp_path, points):
+    """`--jobs 2` against `--jobs 1`, run in turn (five pairs after one of each): the ratio of
+    their medians is the figure, since a few per cent decide it and the load moves both."""
+    grid = None if points == 1440 else points
+    two = _run(_sweep_cmd(tmp_path / "two", 2, grid))
+    one = _run(_sweep_cmd(tmp_path / "one", 1, grid))
+    timing = paired(two, one, rounds=5)
+    record(benchmark, f"sweep, {CASES} cases, {points} angles, --jobs 2 / --jobs 1", timing,
+           "< 1x", cpu=True)
+    benchmark.pedantic(two, rounds=1, iterations=1)
+
+
 def test_bench_sweep_peak_memory(benchmark, tmp_path):
     cmd = [sys.executable, "-c", PEAK, *_sweep_cmd(tmp_path / "out", 2)]
     out = benchmark.pedantic(lambda: subprocess.run(cmd, capture_output=True, check=True,
