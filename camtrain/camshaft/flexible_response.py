@@ -288,7 +288,7 @@ def lobe_receptance(shaft: BeamShaft, nodes, omega: float, orders) -> np.ndarray
     """Receptance of one bending plane between force stations: H[k, i, j] [m/N] is the
     deflection of node ``nodes[i]`` at order k under a unit harmonic force at ``nodes[j]``
     (the shaft's dynamic compliance, (K + i k w C - (k w)^2 M)^-1 restricted to those nodes).
-    The staggered coupling uses it for its interface Jacobian."""
+    The waveform coupling uses it for its interface Jacobian."""
     from scipy.linalg import solve_banded
 
     where = {int(dof): i for i, dof in enumerate(shaft.free)}

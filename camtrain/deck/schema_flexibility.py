@@ -65,21 +65,35 @@ class CamshaftFlexibility:
         "shaft/train iteration that counts as converged", "-", default=1e-4, gt=0, lt=0.1)
     coupling_passes: int = quantity("Most passes of the shaft/train iteration", "-", default=30,
                                     ge=1, le=500)
-    coupling_solver: Literal["monolithic", "staggered"] = option(
-        "two_way coupling: monolithic (trains and shaft marched together in time) or staggered "
-        "(trains and shaft solved in turn to a common periodic state)", default="monolithic")
+    coupling_solver: Literal["monolithic", "staggered", "waveform"] = option(
+        "two_way coupling: monolithic (trains and shaft marched together in time), staggered "
+        "(marched in turn within every time step: the shaft under each contact's predicted "
+        "load, then the trains with the shaft's motion prescribed) or waveform (whole "
+        "revolutions of the trains and the shaft's periodic answer in turn, to a common "
+        "periodic state: converges only for a shaft stiff against the cam contact)",
+        default="monolithic")
+    coupling_predictor: Literal["linear", "constant"] = option(
+        "Staggered solver: the contact load the shaft carries in a step's first pass, "
+        "extrapolated from the last two steps (linear: a second-order splitting error where "
+        "the load is smooth) or the last step's (constant: first order)", default="linear")
+    coupling_iterations: int = quantity(
+        "Staggered solver: passes of a step at most, each predicting the load the last "
+        "produced, until the two agree within 1e-6 of the largest load (strongly coupled: "
+        "the monolithic step but where a contact opens or closes). 1: a single pass, loosely "
+        "coupled, whose linear predictor goes unstable on a shaft whose modes the step does "
+        "not resolve", "-", default=10, ge=1, le=50)
     coupling_method: Literal["quasi_newton", "aitken", "fixed"] = option(
-        "Acceleration of the shaft/train iteration: quasi_newton (IQN-ILS, least-squares "
-        "inverse Jacobian), aitken (adaptive relaxation) or fixed (constant relaxation)",
-        default="quasi_newton")
+        "Waveform solver: acceleration of the shaft/train iteration: quasi_newton (IQN-ILS, "
+        "least-squares inverse Jacobian), aitken (adaptive relaxation) or fixed (constant "
+        "relaxation)", default="quasi_newton")
     coupling_preconditioner: Literal["interface_newton", "none"] = option(
-        "Staggered iteration: interface_newton (each pass's update is a Newton step of the "
+        "Waveform solver: interface_newton (each pass's update is a Newton step of the "
         "linear shaft and trains, cam contacts closed: it holds the iteration where the "
         "contact drives a lightly damped shaft mode) or none (the raw residual)",
         default="interface_newton")
     coupling_start: Literal["rigid", "monolithic"] = option(
-        "Staggered iteration's start: rigid (the shaft's answer to every train's load on a "
-        "rigid shaft) or monolithic (the monolithic march's periodic state: the staggered "
+        "Waveform solver's start: rigid (the shaft's answer to every train's load on a "
+        "rigid shaft) or monolithic (the monolithic march's periodic state: the waveform "
         "passes then check and refine it, and coupling_start_gap reports how far they moved)",
         default="rigid")
     relaxation: float = quantity(

@@ -23,16 +23,17 @@ import numpy as np
 from numba import njit
 
 from camtrain.dynamics._coupled_film_kernel import film_step, table_coefficient
+from camtrain.dynamics._coupled_lowrank import basis_rows, woodbury
+from camtrain.dynamics._coupled_partition import (
+    add_shaft_forces,
+    add_shaft_loads,
+    predict_loads,
+    prescribed_inputs,
+)
 from camtrain.numerics.roots import false_position, illinois_update
 
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
 MAX_SWITCHES = 8
-
-
-@njit(cache=True)
-def _gradient_dot(coef, z, ix, iy, iphi, ifol, ival, j):
-    return (coef[0] * z[ix[j]] + coef[1] * z[iy[j]] + coef[2] * z[iphi[j]]
-            + coef[3] * z[ifol[j]] + coef[4] * z[ival[j]])
 
 
 @njit(cache=True)
@@ -79,89 +80,6 @@ def _psi(k, c, d, dd):
 
 
 @njit(cache=True)
-def _basis_rows(basis, ix, iy, iphi, ifol, ival):
-    """G = the rows of ``basis`` at every lobe's five contact coordinates (5 L x 5 L)."""
-    lobes = ix.size
-    G = np.empty((5 * lobes, 5 * lobes))
-    for j in range(lobes):
-        dofs = (ix[j], iy[j], iphi[j], ifol[j], ival[j])
-        for e in range(5):
-            for c in range(5 * lobes):
-                G[5 * j + e, c] = basis[dofs[e], c]
-    return G
-
-
-@njit(cache=True)
-def _woodbury(x0, basis, G, z, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs,
-              offc, offs, a1, ix, iy, iphi, ifol, ival, x):
-    """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
-    ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y, phi,
-    follower, valve), ``G`` its rows there (:func:`_basis_rows`), ``z`` forces on those
-    coordinates (friction; overwritten), the inputs of every lobe at the step's end (bj ...),
-    a1 = 2 / step. Every contact gradient h lies in its lobe's five coordinates, so the update
-    works on 5 L numbers and touches the full state once."""
-    n = x0.size
-    lobes = ix.size
-    coef = np.zeros((2 * lobes, 5))
-    lobe_of = np.zeros(2 * lobes, dtype=np.int64)
-    kk = np.zeros(2 * lobes)
-    m = 0
-    for j in range(lobes):
-        if act_c[j]:
-            coef[m, 0] = gxj[j]
-            coef[m, 1] = gyj[j]
-            coef[m, 2] = gphij[j]
-            coef[m, 3] = -1.0
-            hq = gxj[j] * q[ix[j]] + gyj[j] * q[iy[j]] + gphij[j] * q[iphi[j]] - q[ifol[j]]
-            hv = gxj[j] * v[ix[j]] + gyj[j] * v[iy[j]] + gphij[j] * v[iphi[j]] - v[ifol[j]]
-            f0 = kc * (bj[j] + offc) + cc * (bdj[j] - a1 * hq - hv)
-            # f_c = -h (k delta + c delta'): its constant part
-            for e in range(4):
-                z[5 * j + e] -= f0 * coef[m, e]
-            kk[m] = kc + a1 * cc
-            lobe_of[m] = j
-            m += 1
-        if act_s[j]:
-            coef[m, 4] = -1.0
-            z[5 * j + 4] += ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
-            kk[m] = ks + a1 * cs
-            lobe_of[m] = j
-            m += 1
-    if m > 0:
-        small = np.zeros((m, m))
-        rhs_small = np.empty(m)
-        for r in range(m):
-            jr = lobe_of[r]
-            small[r, r] = 1.0 / kk[r]
-            dofs = (ix[jr], iy[jr], iphi[jr], ifol[jr], ival[jr])
-            total = 0.0
-            for e in range(5):
-                ce = coef[r, e]
-                if ce == 0.0:
-                    continue
-                row = 5 * jr + e
-                acc_e = x0[dofs[e]]
-                for b in range(5 * lobes):
-                    acc_e += G[row, b] * z[b]
-                total += ce * acc_e
-                for c in range(m):
-                    jc = lobe_of[c]
-                    for f in range(5):
-                        small[r, c] += ce * G[row, 5 * jc + f] * coef[c, f]
-            rhs_small[r] = total
-        y = np.linalg.solve(small, rhs_small)
-        for c in range(m):
-            jc = lobe_of[c]
-            for f in range(5):
-                z[5 * jc + f] -= coef[c, f] * y[c]
-    for i in range(n):
-        total = x0[i]
-        for b in range(5 * lobes):
-            total += basis[i, b] * z[b]
-        x[i] = total
-
-
-@njit(cache=True)
 def _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j):
     """Generalised friction force of every lobe (tangential on the shaft, torque mu W r)."""
     fric[:] = 0.0
@@ -173,9 +91,11 @@ def _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j):
 
 @njit(cache=True)
 def _substep(tau, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, gxj, gyj, gphij,
-             kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, x):
+             kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, x, stagger):
     """A Newmark step of length ``tau`` from (q, v, acc) with the contact states fixed, the
-    linear part solved block by block (inputs bj ... at the sub-step's end)."""
+    linear part solved block by block (inputs bj ... at the sub-step's end). ``stagger``: the
+    shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
+    the sub-step's end as prescribed input (:mod:`._coupled_partition`)."""
     n = q.size
     lobes = ix.size
     a0 = 4.0 / (tau * tau)
@@ -211,14 +131,25 @@ def _substep(tau, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj, g
             for i in range(size):
                 basis[lo + i, col] = S[i, 1 + c]
     z = np.zeros(5 * lobes)     # friction is in the right-hand side already
-    _woodbury(x0, basis, _basis_rows(basis, ix, iy, iphi, ifol, ival), z, act_c, act_s, bj,
-              bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc, offs, a1, ix, iy, iphi, ifol,
-              ival, x)
+    if stagger:     # the shaft's part of x0 is final: no contact column reaches it
+        v0 = np.empty(n)
+        for i in range(n):
+            v0[i] = a1 * (x0[i] - q[i]) - v[i]
+        be, bde = np.empty(lobes), np.empty(lobes)
+        prescribed_inputs(x0, v0, bj, bdj, gxj, gyj, gphij, ix, iy, iphi, be, bde)
+        zero = np.zeros(lobes)
+        woodbury(x0, basis, basis_rows(basis, ix, iy, iphi, ifol, ival), z, act_c, act_s, be,
+                 bde, zero, zero, zero, q, v, kc, cc, ks, cs, offc, offs, a1, ix, iy, iphi,
+                 ifol, ival, x)
+        return
+    woodbury(x0, basis, basis_rows(basis, ix, iy, iphi, ifol, ival), z, act_c, act_s, bj,
+             bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs, offc, offs, a1, ix, iy, iphi, ifol,
+             ival, x)
 
 
 @njit(cache=True)
 def _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj, gyj, gphij, kc,
-                 cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc):
+                 cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc, stagger):
     """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
     block-diagonal inverse of M)."""
     n = q.size
@@ -232,9 +163,10 @@ def _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj,
                              ifol, j)
             w = kc * d + cc * dd
             r[ifol[j]] += w
-            r[ix[j]] -= w * gxj[j]
-            r[iy[j]] -= w * gyj[j]
-            r[iphi[j]] -= w * gphij[j]
+            if not stagger:     # staggered: the shaft carries the predicted load (in fric)
+                r[ix[j]] -= w * gxj[j]
+                r[iy[j]] -= w * gyj[j]
+                r[iphi[j]] -= w * gphij[j]
         if act_s[j]:
             r[ival[j]] += ks * (offs - q[ival[j]]) - cs * v[ival[j]]
     for k in range(blocks.size - 1):
@@ -311,12 +243,153 @@ def _film_coefficient(table, col, unit_film, exponent, w, h, ln_first, ln_step, 
 
 
 @njit(cache=True)
+def _advance(s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C, M, Minv, f0, b,
+             bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
+             fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf, fric, hub,
+             torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger, w_pred,
+             rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero):
+    """Step s of the revolution (:func:`revolution`): the state (q, v, acc, contact states)
+    advanced in place, the inputs bj ... at the step's end. ``stagger``: the shaft under the
+    predicted loads ``w_pred`` first, then the trains with its motion prescribed
+    (:mod:`._coupled_partition`). Returns the contact changes located and whether the step
+    had more than MAX_SWITCHES."""
+    n = q.size
+    lobes = ix.size
+    located = 0
+    cut = 0
+    # the full step with the states of its start (P = A^-1 M, Q = A^-1 C)
+    for i in range(n):
+        rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
+        rhs_c[i] = a1 * q[i] + v[i]
+    for k in range(blocks.size - 1):
+        lo, hi = blocks[k], blocks[k + 1]
+        for i in range(lo, hi):
+            total = x_f0[i]
+            for e in range(lo, hi):
+                total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
+            base[i] = total
+    if hub_x >= 0:      # the belt's torque-dependent pull at the drive station
+        pull = abs(torque) / hub_radius
+        hub[0], hub[1] = pull * hub_cos, pull * hub_sin
+        for i in range(n):
+            base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
+    for j in range(lobes):      # friction on the lobe's coordinates
+        zf[5 * j] = -tang_j[j] * sina[j]
+        zf[5 * j + 1] = tang_j[j] * cosa[j]
+        zf[5 * j + 2] = -fr_j[j] * arm_j[j]
+        zf[5 * j + 3] = 0.0
+        zf[5 * j + 4] = 0.0
+    if stagger:     # the shaft first, under the predicted loads; the trains on its motion
+        add_shaft_loads(zf, w_pred, gxj, gyj, gphij)
+        for i in range(n):
+            total_x = base[i]
+            for c in range(5 * lobes):
+                total_x += ainv_basis[i, c] * zf[c]
+            x[i] = total_x
+            v1[i] = a1 * (x[i] - q[i]) - v[i]
+        prescribed_inputs(x, v1, bj, bdj, gxj, gyj, gphij, ix, iy, iphi, be, bde)
+        woodbury(base, ainv_basis, G, zf, act_c, act_s, be, bde, zero, zero, zero, q, v, kc,
+                 cc, ks, cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
+    else:
+        woodbury(base, ainv_basis, G, zf, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc,
+                 cc, ks, cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
+    for i in range(n):
+        v1[i] = a1 * (x[i] - q[i]) - v[i]
+    changed = False
+    for j in range(lobes):
+        pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, bj[j], bdj[j], gxj[j], gyj[j],
+                                                 gphij[j], kc, cc, ks, cs, offc, offs, ix,
+                                                 iy, iphi, ifol, ival)
+        if (pc > 0.0) != act_c[j] or (ps > 0.0) != act_s[j]:
+            changed = True
+    if not changed:
+        for i in range(n):
+            acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
+            q[i] = x[i]
+            v[i] = v1[i]
+    else:
+        _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j)
+        if hub_x >= 0:
+            fric[hub_x] += hub[0]
+            fric[hub_y] += hub[1]
+        if stagger:
+            add_shaft_forces(fric, w_pred, gxj, gyj, gphij, ix, iy, iphi)
+        tau = 0.0
+        switches = 0
+        while True:
+            h = dt - tau
+            if h <= 1e-12 * dt:
+                break
+            if switches > 0:   # the full step with the start's states is x, v1 already
+                _substep(h, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
+                         gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
+                         ival, x, stagger)
+                for i in range(n):
+                    v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
+            # which contact changes state first inside the (sub)step?
+            first, seat, alpha = -1, False, 2.0
+            for j in range(lobes):
+                b0[j], bd0[j], g0x, g0y, g0p = _inputs(b, bd, gx, gy, gphi, j, s,
+                                                       tau / dt, dt)
+                pc0, d0, dd0, ps0, ds0, dds0 = _indicators(
+                    q, v, j, b0[j], bd0[j], g0x, g0y, g0p, kc, cc, ks, cs, offc, offs, ix,
+                    iy, iphi, ifol, ival)
+                pc1, d1, dd1, ps1, ds1, dds1 = _indicators(
+                    x, v1, j, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], kc, cc, ks, cs, offc,
+                    offs, ix, iy, iphi, ifol, ival)
+                if (pc1 > 0.0) != act_c[j]:
+                    frac = _crossing(kc, cc, d0, dd0, d1, dd1, h)
+                    if frac < alpha:
+                        first, seat, alpha = j, False, frac
+                if (ps1 > 0.0) != act_s[j]:
+                    frac = _crossing(ks, cs, ds0, dds0, ds1, dds1, h)
+                    if frac < alpha:
+                        first, seat, alpha = j, True, frac
+            if first < 0 or switches >= MAX_SWITCHES:
+                if first >= 0:
+                    cut += 1
+                for i in range(n):
+                    a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
+                    q[i] = x[i]
+                    v[i] = v1[i]
+                    acc[i] = a1v[i]
+                break
+            # take the step up to the change, switch the contact, restart the acceleration
+            hs = alpha * h
+            frac_end = (tau + hs) / dt
+            for j in range(lobes):
+                bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = _inputs(b, bd, gx, gy, gphi, j, s,
+                                                                  frac_end, dt)
+            if hs > 1e-12 * dt:
+                _substep(hs, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
+                         gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
+                         ival, x, stagger)
+                for i in range(n):
+                    v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
+                    q[i] = x[i]
+            tau += hs
+            if seat:
+                act_s[first] = not act_s[first]
+            else:
+                act_c[first] = not act_c[first]
+            _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj, gyj,
+                         gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc,
+                         stagger)
+            switches += 1
+            located += 1
+            for j in range(lobes):
+                bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = b[j, s], bd[j, s], gx[j, s], \
+                    gy[j, s], gphi[j, s]
+    return located, cut
+
+
+@njit(cache=True)
 def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, K, C, M, Minv,
                f0, b, bd, gx, gy, gphi, fric_tab, fric_corr, ln_first, ln_step, arm, ratio, cosa,
                sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
                valve_dof, substeps, out_load, out_acc, film_on, squeeze_on, film_h, film_a, film_e,
                film_speed, film_tab, film_col, ln_r0, d_ln_r, out_film, hub_basis, hub_x, hub_y,
-               hub_cos, hub_sin, hub_radius):
+               hub_cos, hub_sin, hub_radius, stagger, predictor, iterations, step_tol, w_older):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
     steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
     at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`
@@ -340,8 +413,15 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     preload part is constant and sits in ``f0``); ``hub_basis`` holds A^-1 at those two
     coordinates.
 
-    Returns the contact changes located in the revolution and the steps that had more than
-    MAX_SWITCHES."""
+    Staggered (``stagger``; :mod:`._coupled_partition`): every step advances the shaft under
+    each contact's predicted load (``predictor`` 0: the last step's, 1: extrapolated from the
+    last two, ``w_older`` the one before ``w_prev``) and then every train with the shaft's new
+    lobe motion as prescribed input; up to ``iterations`` passes of a step, each predicting the
+    load the last produced, until they agree within ``step_tol`` of the largest load (at least
+    1 N).
+
+    Returns the contact changes located in the revolution, the steps that had more than
+    MAX_SWITCHES and the staggered steps whose passes did not agree within ``iterations``."""
     n = q.size
     lobes = ix.size
     steps = b.shape[1]
@@ -365,9 +445,18 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     bd0 = np.empty(lobes)
     switches_total = 0
     cut = 0
-    G = _basis_rows(ainv_basis, ix, iy, iphi, ifol, ival)
+    missed = 0
+    G = basis_rows(ainv_basis, ix, iy, iphi, ifol, ival)
     zf = np.zeros(5 * lobes)
     hub = np.zeros(2)
+    w_pred = np.zeros(lobes)
+    w_end = np.zeros(lobes)
+    be = np.empty(lobes)
+    bde = np.empty(lobes)
+    zero = np.zeros(lobes)
+    q_s, v_s, acc_s = np.empty(n), np.empty(n), np.empty(n)
+    c_s = np.empty(lobes, dtype=np.bool_)
+    s_s = np.empty(lobes, dtype=np.bool_)
     for s in range(steps):
         # friction of every lobe from its last load (explicit): constant over the step
         torque = 0.0
@@ -385,114 +474,45 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
             arm_j[j] = arm[j, s]
             bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = b[j, s], bd[j, s], gx[j, s], gy[j, s], \
                 gphi[j, s]
-        # the full step with the states of its start (P = A^-1 M, Q = A^-1 C)
-        for i in range(n):
-            rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
-            rhs_c[i] = a1 * q[i] + v[i]
-        for k in range(blocks.size - 1):
-            lo, hi = blocks[k], blocks[k + 1]
-            for i in range(lo, hi):
-                total = x_f0[i]
-                for e in range(lo, hi):
-                    total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
-                base[i] = total
-        if hub_x >= 0:      # the belt's torque-dependent pull at the drive station
-            pull = abs(torque) / hub_radius
-            hub[0], hub[1] = pull * hub_cos, pull * hub_sin
+        if stagger:
             for i in range(n):
-                base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
-        for j in range(lobes):      # friction on the lobe's coordinates
-            zf[5 * j] = -tang_j[j] * sina[j]
-            zf[5 * j + 1] = tang_j[j] * cosa[j]
-            zf[5 * j + 2] = -fr_j[j] * arm_j[j]
-            zf[5 * j + 3] = 0.0
-            zf[5 * j + 4] = 0.0
-        _woodbury(base, ainv_basis, G, zf, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc,
-                  ks, cs, offc, offs, a1, ix, iy, iphi, ifol, ival, x)
-        for i in range(n):
-            v1[i] = a1 * (x[i] - q[i]) - v[i]
-        changed = False
+                q_s[i], v_s[i], acc_s[i] = q[i], v[i], acc[i]
+            for j in range(lobes):
+                c_s[j], s_s[j] = act_c[j], act_s[j]
+            predict_loads(w_prev, w_older, predictor, w_pred)
+        for it in range(iterations if stagger else 1):
+            if it > 0:      # again from the step's start, with the load it produced
+                for i in range(n):
+                    q[i], v[i], acc[i] = q_s[i], v_s[i], acc_s[i]
+                for j in range(lobes):
+                    act_c[j], act_s[j] = c_s[j], s_s[j]
+                    w_pred[j] = w_end[j]
+            located, over = _advance(
+                s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C, M, Minv, f0,
+                b, bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol,
+                ival, fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf,
+                fric, hub, torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger,
+                w_pred, rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero)
+            if not stagger or iterations == 1:
+                break
+            gap, top = 0.0, 1.0
+            for j in range(lobes):
+                w = 0.0
+                if act_c[j]:
+                    d, dd = _cam_gap(q, v, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], offc, ix, iy,
+                                     iphi, ifol, j)
+                    w = max(kc * d + cc * dd, 0.0)
+                w_end[j] = w
+                gap = max(gap, abs(w - w_pred[j]))
+                top = max(top, w)
+            if gap <= step_tol * top:
+                break
+            if it == iterations - 1:
+                missed += 1
+        switches_total += located
+        cut += over
         for j in range(lobes):
-            pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, bj[j], bdj[j], gxj[j], gyj[j],
-                                                     gphij[j], kc, cc, ks, cs, offc, offs, ix,
-                                                     iy, iphi, ifol, ival)
-            if (pc > 0.0) != act_c[j] or (ps > 0.0) != act_s[j]:
-                changed = True
-        if not changed:
-            for i in range(n):
-                acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
-                q[i] = x[i]
-                v[i] = v1[i]
-        else:
-            _friction_force(fric, fr_j, tang_j, ix, iy, iphi, cosa, sina, arm_j)
-            if hub_x >= 0:
-                fric[hub_x] += hub[0]
-                fric[hub_y] += hub[1]
-            tau = 0.0
-            switches = 0
-            while True:
-                h = dt - tau
-                if h <= 1e-12 * dt:
-                    break
-                if switches > 0:   # the full step with the start's states is x, v1 already
-                    _substep(h, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
-                             gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
-                             ival, x)
-                    for i in range(n):
-                        v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
-                # which contact changes state first inside the (sub)step?
-                first, seat, alpha = -1, False, 2.0
-                for j in range(lobes):
-                    b0[j], bd0[j], g0x, g0y, g0p = _inputs(b, bd, gx, gy, gphi, j, s,
-                                                           tau / dt, dt)
-                    pc0, d0, dd0, ps0, ds0, dds0 = _indicators(
-                        q, v, j, b0[j], bd0[j], g0x, g0y, g0p, kc, cc, ks, cs, offc, offs, ix,
-                        iy, iphi, ifol, ival)
-                    pc1, d1, dd1, ps1, ds1, dds1 = _indicators(
-                        x, v1, j, bj[j], bdj[j], gxj[j], gyj[j], gphij[j], kc, cc, ks, cs, offc,
-                        offs, ix, iy, iphi, ifol, ival)
-                    if (pc1 > 0.0) != act_c[j]:
-                        frac = _crossing(kc, cc, d0, dd0, d1, dd1, h)
-                        if frac < alpha:
-                            first, seat, alpha = j, False, frac
-                    if (ps1 > 0.0) != act_s[j]:
-                        frac = _crossing(ks, cs, ds0, dds0, ds1, dds1, h)
-                        if frac < alpha:
-                            first, seat, alpha = j, True, frac
-                if first < 0 or switches >= MAX_SWITCHES:
-                    if first >= 0:
-                        cut += 1
-                    for i in range(n):
-                        a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
-                        q[i] = x[i]
-                        v[i] = v1[i]
-                        acc[i] = a1v[i]
-                    break
-                # take the step up to the change, switch the contact, restart the acceleration
-                hs = alpha * h
-                frac_end = (tau + hs) / dt
-                for j in range(lobes):
-                    bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = _inputs(b, bd, gx, gy, gphi, j, s,
-                                                                      frac_end, dt)
-                if hs > 1e-12 * dt:
-                    _substep(hs, q, v, acc, act_c, act_s, K, C, M, f0, fric, blocks, bj, bdj,
-                             gxj, gyj, gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol,
-                             ival, x)
-                    for i in range(n):
-                        v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
-                        q[i] = x[i]
-                tau += hs
-                if seat:
-                    act_s[first] = not act_s[first]
-                else:
-                    act_c[first] = not act_c[first]
-                _equilibrium(q, v, act_c, act_s, K, C, Minv, f0, fric, blocks, bj, bdj, gxj, gyj,
-                             gphij, kc, cc, ks, cs, offc, offs, ix, iy, iphi, ifol, ival, acc)
-                switches += 1
-                switches_total += 1
-                for j in range(lobes):
-                    bj[j], bdj[j], gxj[j], gyj[j], gphij[j] = b[j, s], bd[j, s], gx[j, s], \
-                        gy[j, s], gphi[j, s]
+            w_older[j] = w_prev[j]
         # the loads at the step's end
         for j in range(lobes):
             w = 0.0
@@ -515,4 +535,4 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 out_acc[j, g] = acc[valve_dof[j]]
                 if film_on:
                     out_film[j, g] = film_h[j]
-    return switches_total, cut
+    return switches_total, cut, missed

@@ -1,10 +1,11 @@
-"""Several elastic valve trains on one elastic camshaft, coupled by staggered iteration.
+"""Several elastic valve trains on one elastic camshaft, coupled by waveform relaxation.
 
 Teodorescu et al. (2005) §2.6 and §4 drive the valve trains of an engine from one camshaft that
 bends and twists, so each train's cam input is the rigid lift plus what the shaft's motion adds,
 and the shaft's loads are the trains' dynamic contact loads. The shaft is linear and periodic;
 the trains are nonlinear (unilateral contacts). The periodic state of the whole is found here by
-a block Gauss-Seidel iteration between the two (a staggered, or partitioned, solution):
+a block Gauss-Seidel iteration between the two over whole revolutions (waveform relaxation; the
+step-by-step staggered march is :mod:`._coupled_partition`):
 
 1. the shaft's periodic response to the trains' loads gives every lobe's displacement along its
    follower axis p_j(theta) and its twist phi_j(theta) against the drive;
@@ -12,7 +13,7 @@ a block Gauss-Seidel iteration between the two (a staggered, or partitioned, sol
    b_j = l(theta) + R(theta) p_j + l'(theta) phi_j  (valve-referred: R the rocker ratio, l' the
    valve lift per cam radian; a twist phi advances the lobe by phi, so it lifts l(theta + phi));
 3. the trains' loads go back to the shaft, until the lobes' motion of two passes agrees (the
-   motion, not the loads, is the unknown: see :func:`staggered`).
+   motion, not the loads, is the unknown: see :func:`waveform_relaxation`).
 
 A stiff contact on a compliant shaft makes the plain iteration diverge (its loop gain, the
 contact stiffness over the shaft's, exceeds 1). Two accelerations are offered (``method``):
@@ -41,10 +42,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-#: accelerations of the staggered iteration (module notes)
+#: accelerations of the waveform iteration (module notes)
 COUPLING_METHODS = ("quasi_newton", "aitken", "fixed")
 
-__all__ = ["COUPLING_METHODS", "CoupledState", "staggered", "periodic_derivatives", "lobe_input_perturbation"]
+__all__ = ["COUPLING_METHODS", "CoupledState", "waveform_relaxation", "periodic_derivatives",
+           "lobe_input_perturbation"]
 
 
 @dataclass(frozen=True)
@@ -82,7 +84,7 @@ def lobe_input_perturbation(displacement, twist, ratio, valve_d1):
     return delta, d1, d2
 
 
-def staggered(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *,
+def waveform_relaxation(operator: Callable[[np.ndarray], np.ndarray], start: np.ndarray, *,
               tol: float = 1e-4, max_iterations: int = 30, relaxation: float = 0.5,
               method: str = "quasi_newton", min_relaxation: float = 1e-3,
               precondition: Callable[[np.ndarray], np.ndarray] | None = None,

@@ -46,7 +46,8 @@ class MonolithicResult:
     the last relative change; steps per revolution; contact changes located in the last
     revolution and the steps of it that had more than the kernel's limit of them; ``film``
     (n_lobes, n) every contact's level-1 film [m] (held where the contact is open), or None
-    without the squeeze film."""
+    without the squeeze film; ``missed`` the staggered steps of the last revolution whose
+    passes did not agree within the iterations allowed."""
 
     loads: np.ndarray
     valve_acceleration: np.ndarray
@@ -57,6 +58,7 @@ class MonolithicResult:
     switches: int = 0
     cut: int = 0
     film: np.ndarray | None = None
+    missed: int = 0
 
 
 @dataclass(frozen=True)
@@ -129,7 +131,8 @@ def _assemble(shaft, train, n_lobes: int) -> _System:
 def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, substeps: int,
                   friction=None, friction_arm=None, turn: float = 1.0, cycles_max: int = 30,
                   period_tol: float = 1e-5, start=None, friction_table=None, film=None,
-                  drive=None) -> MonolithicResult:
+                  drive=None, staggered: bool = False, predictor: str = "linear",
+                  iterations: int = 1, step_tol: float = 1e-6) -> MonolithicResult:
     """March the shaft and one copy of ``train`` per lobe to their common periodic state.
 
     Args:
@@ -170,6 +173,12 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         drive: (pitch radius [m], hub-load angle [rad], preload [N]) of a belt drive at the
             shaft's drive station (:func:`camtrain.camshaft.loads.pulley_load`), or None (no
             hub load).
+        staggered: march shaft and trains in turn within every step instead of together
+            (:mod:`._coupled_partition`): the shaft under each contact's ``predictor`` load
+            (``constant`` or ``linear``), then the trains with the shaft's lobe motion
+            prescribed; ``iterations`` passes of a step at most, until the load a pass
+            produces agrees with its prediction within ``step_tol`` of the largest load (1: a
+            single pass, the loosely coupled scheme).
 
     Why the tables are corrected after every revolution: the friction laws have kinks (where
     Ball's boundary cap takes over, where Greenwood-Tripp asperity contact starts at lambda
@@ -184,6 +193,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     load at that angle, which can be hundreds of newtons.
     """
     from ._coupled_kernel import revolution
+    from ._coupled_partition import PREDICTORS
     from .monolithic_start import warm_start
 
     theta_grid = cam.theta
@@ -263,6 +273,11 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         if film is not None:
             fs["h"][:] = _start_film(film, start, theta_grid, phases, ratio, omega)
     w_prev = np.zeros(n_lobes)
+    w_older = np.zeros(n_lobes)     # the load one step before w_prev (the linear predictor)
+    if staggered:   # the shaft's first predicted loads: the start's contact loads
+        w_prev[:] = _start_loads(q, v, act_c, lift[:, -1], d1[:, -1] * omega, gx[:, -1],
+                                 gy[:, -1], d1[:, -1], kc, cc, offc, sysm)
+        w_older[:] = w_prev
     if start is not None and friction is not None and friction_table is None:
         # the lagged coefficient on the start's loads
         at = theta_grid[None, :] - np.asarray(phases, dtype=float)[:, None]
@@ -270,20 +285,21 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                                      period=2.0 * math.pi))
         mu = np.array([periodic(grid_mu[j], theta_grid)(theta) for j in range(n_lobes)])
         mu = mu[:, None, :]
-    switches = cut = 0
+    switches = cut = missed = 0
     loads = np.zeros((n_lobes, grid))
     valve_acc = np.zeros((n_lobes, grid))
     films = np.zeros((n_lobes, grid))
     previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
-        switches, cut = revolution(
+        switches, cut, missed = revolution(
             q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, sysm.blocks, ainv_basis, K, C, M, Minv,
             f0, lift, d1 * omega, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina,
             float(turn), kc, cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
             sysm.valve, int(substeps), loads, valve_acc, film is not None,
             film is not None and film.squeeze, fs["h"], fs["unit"], fs["exponent"], fs["speed"],
             fs["table"], fs["col"], fs["ln_r0"], fs["d_ln_r"], films, hub_basis, hub_x, hub_y,
-            hub_dir[0], hub_dir[1], hub_radius)
+            hub_dir[0], hub_dir[1], hub_radius, bool(staggered), PREDICTORS[predictor],
+            int(iterations), float(step_tol), w_older)
         if film is not None:
             # correct the table by its error at this revolution's loads and films
             error = _film_table_error(film, loads, films, ratio, theta_grid, phases)
@@ -307,7 +323,15 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         previous = loads.copy()
     return MonolithicResult(loads.copy(), valve_acc.copy(), cycle, change <= period_tol,
                             change, steps, int(switches), int(cut),
-                            films.copy() if film is not None else None)
+                            films.copy() if film is not None else None, int(missed))
+
+
+def _start_loads(q, v, act_c, b, bd, gx, gy, gphi, kc, cc, offc, sysm) -> np.ndarray:
+    """Every closed cam contact's load k delta + c delta' in the state (q, v) (inputs at the
+    state's angle), never a pull."""
+    d = b + offc - q[sysm.ifol] + gx * q[sysm.ix] + gy * q[sysm.iy] + gphi * q[sysm.iphi]
+    dd = bd - v[sysm.ifol] + gx * v[sysm.ix] + gy * v[sysm.iy] + gphi * v[sysm.iphi]
+    return np.where(act_c, np.maximum(kc * d + cc * dd, 0.0), 0.0)
 
 
 def _film_state(film, theta_grid, local, n_lobes: int, grid: int) -> dict:

@@ -47,7 +47,7 @@ def run(deck, inputs, res):
     from camtrain.camshaft.product import CamshaftLoads
     from camtrain.contact.model import CamContact
     from camtrain.dynamics import CamInput, march
-    from camtrain.dynamics.coupling import lobe_input_perturbation, staggered
+    from camtrain.dynamics.coupling import lobe_input_perturbation, waveform_relaxation
     from camtrain.dynamics.findings import findings
     from camtrain.effects.shaft_output import add_shaft
     from camtrain.formulas import cam_torque
@@ -107,7 +107,7 @@ def run(deck, inputs, res):
                  + out.deflection_y * np.sin(axes)[:, None])
         return along, out.twist
 
-    if f.coupling_solver == "monolithic":
+    if f.coupling_solver in ("monolithic", "staggered"):
         return _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn,
                            contact, omega, theta)
     n = len(lobes)
@@ -136,7 +136,7 @@ def run(deck, inputs, res):
     if precondition is not None and marched is None:
         # the start is the pass from the rigid shaft's motion (zero): take its Newton step
         start = precondition(start)
-    state = staggered(one_pass, start,
+    state = waveform_relaxation(one_pass, start,
                       tol=f.coupling_tolerance, max_iterations=f.coupling_passes,
                       relaxation=f.relaxation, method=f.coupling_method,
                       precondition=precondition)
@@ -145,12 +145,12 @@ def run(deck, inputs, res):
     add_shaft(res, shaft, out, theta, cs.orders, omega)
     accelerations = [shift_curve(responses[j].a[run_setup.model.valve], g)
                      for j, g in enumerate(gammas)]
-    _report(res, loads, accelerations, theta, "staggered iteration", state.iterations,
+    _report(res, loads, accelerations, theta, "waveform iteration", state.iterations,
             state.change, state.converged, f.coupling_tolerance)
     if marched is not None:
         gap = float(np.max(np.abs(loads - marched))) / max(float(np.max(marched)), 1e-300)
         res.add_metric("coupling_start_gap", gap, "-",
-                       "largest difference of any lobe's load between the staggered iteration "
+                       "largest difference of any lobe's load between the waveform iteration "
                        "and the monolithic march it started from, over the largest marched load")
     for j, g in enumerate(gammas):
         seps = findings(responses[j]).separations
@@ -163,7 +163,7 @@ def run(deck, inputs, res):
 
 
 def _interface_newton(shaft, model, axes, ratio, omega, points, n):
-    """The staggered pass's linear Jacobian on the lobes' motion along their follower axes
+    """The waveform pass's linear Jacobian on the lobes' motion along their follower axes
     (camtrain.dynamics.interface): shaft receptance between the lobes (both planes, projected
     on the axes) times each train's dynamic contact stiffness, R^2 g."""
     import numpy as np
@@ -262,7 +262,9 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
                            friction_arm=kin.friction_arm, turn=turn,
                            cycles_max=run_setup.settings.cycles_max,
                            period_tol=f.coupling_tolerance, start=single, film=film,
-                           drive=None if drive is None else drive[1:])
+                           drive=None if drive is None else drive[1:],
+                           staggered=f.coupling_solver == "staggered",
+                           predictor=f.coupling_predictor, iterations=f.coupling_iterations)
     forces, torques, loads = [], [], []
     for j, (g, w) in enumerate(zip(gammas, own_frame(result.loads), strict=True)):
         fr = contact.solve(kin, w).force
@@ -276,8 +278,18 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
         return np.array(loads)
     out = answer(deck, shaft, forces, torques, torques.sum(axis=0), omega, theta)
     add_shaft(res, shaft, out, theta, cs.orders, omega)
-    _report(res, loads, result.valve_acceleration, theta, "monolithic march", result.cycles,
+    solver = ("monolithic march" if f.coupling_solver == "monolithic"
+              else "staggered march")
+    _report(res, loads, result.valve_acceleration, theta, solver, result.cycles,
             result.change, result.converged, f.coupling_tolerance)
+    if f.coupling_solver == "staggered":
+        res.add_metric("coupling_step_misses", result.missed, "-",
+                       "steps of the last revolution whose staggered passes did not agree "
+                       "with their predicted loads")
+        if result.missed:
+            res.warn(f"camshaft coupling: {result.missed} steps of the staggered march kept "
+                     f"a load that differs from the shaft's after {f.coupling_iterations} "
+                     "passes (give more coupling_iterations, or a smaller step)")
     if result.film is not None:
         for j, load in enumerate(loads):
             res.add_column("film", np.where(load > 0.0, result.film[j], np.nan), "m",

@@ -1,11 +1,11 @@
-"""The staggered shaft/train iteration (camtrain.dynamics.coupling) on problems with a known
+"""The waveform shaft/train iteration (camtrain.dynamics.coupling) on problems with a known
 answer: a linear interface whose plain iteration diverges, and the periodic derivatives."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from camtrain.dynamics.coupling import periodic_derivatives, staggered
+from camtrain.dynamics.coupling import periodic_derivatives, waveform_relaxation
 
 RNG = np.random.default_rng(7)
 N = 24
@@ -22,19 +22,19 @@ def linear_pass(x):
 
 
 def test_quasi_newton_converges_where_the_plain_iteration_diverges():
-    state = staggered(linear_pass, np.zeros(N), tol=1e-10, max_iterations=60)
+    state = waveform_relaxation(linear_pass, np.zeros(N), tol=1e-10, max_iterations=60)
     assert state.converged
     np.testing.assert_allclose(state.motion, EXACT, rtol=0, atol=1e-8 * np.abs(EXACT).max())
     # a linear map of dimension N: IQN-ILS needs at most about N + 1 passes
     assert state.iterations <= N + 2
-    plain = staggered(linear_pass, np.zeros(N), tol=1e-10, max_iterations=30, method="fixed",
+    plain = waveform_relaxation(linear_pass, np.zeros(N), tol=1e-10, max_iterations=30, method="fixed",
                       relaxation=1.0)
     assert not plain.converged and plain.history[-1] > plain.history[0]
 
 
 def test_aitken_converges_on_a_contraction_and_reports_its_history():
     contraction = Q @ np.diag(np.linspace(-0.6, 0.6, N)) @ Q.T
-    state = staggered(lambda x: contraction @ x + B, np.zeros(N), tol=1e-10,
+    state = waveform_relaxation(lambda x: contraction @ x + B, np.zeros(N), tol=1e-10,
                       max_iterations=200, method="aitken")
     assert state.converged
     exact = np.linalg.solve(np.eye(N) - contraction, B)
@@ -44,9 +44,9 @@ def test_aitken_converges_on_a_contraction_and_reports_its_history():
 
 def test_bad_method_or_relaxation_is_refused():
     with pytest.raises(ValueError):
-        staggered(linear_pass, np.zeros(N), method="newton")
+        waveform_relaxation(linear_pass, np.zeros(N), method="newton")
     with pytest.raises(ValueError):
-        staggered(linear_pass, np.zeros(N), relaxation=1.5)
+        waveform_relaxation(linear_pass, np.zeros(N), relaxation=1.5)
 
 
 def test_periodic_derivatives_are_exact_for_a_trigonometric_curve():

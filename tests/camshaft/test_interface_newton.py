@@ -1,4 +1,4 @@
-"""The staggered coupling's interface Jacobian (camtrain.dynamics.interface): the shaft's lobe
+"""The waveform coupling's interface Jacobian (camtrain.dynamics.interface): the shaft's lobe
 receptance against its periodic harmonic solve, the train's dynamic contact stiffness against
 its static limit, and the preconditioned iteration on linear passes with a known answer."""
 from __future__ import annotations
@@ -11,7 +11,7 @@ import pytest
 from camtrain.camshaft.elastic import elastic_shaft
 from camtrain.camshaft.flexible import ShaftSection
 from camtrain.camshaft.flexible_response import bending_response, lobe_receptance
-from camtrain.dynamics.coupling import staggered
+from camtrain.dynamics.coupling import waveform_relaxation
 from camtrain.dynamics.interface import contact_stiffness, interface_newton
 from camtrain.dynamics.train import CAM, SEAT, TrainModel, series
 
@@ -85,9 +85,9 @@ def test_interface_newton_with_the_exact_jacobian_converges_in_one_pass():
         return np.fft.irfft(np.einsum("kij,jk->ik", J, np.fft.rfft(x, axis=-1)), n=n) + b
 
     P = interface_newton(J, slice(0, m))
-    state = staggered(linear_pass, np.zeros((m, n)), tol=1e-10, max_iterations=5,
+    state = waveform_relaxation(linear_pass, np.zeros((m, n)), tol=1e-10, max_iterations=5,
                       relaxation=1.0, precondition=P)
     assert state.converged and state.iterations <= 2, state.history
-    plain = staggered(linear_pass, np.zeros((m, n)), tol=1e-10, max_iterations=10,
+    plain = waveform_relaxation(linear_pass, np.zeros((m, n)), tol=1e-10, max_iterations=10,
                       method="fixed", relaxation=1.0)
     assert not plain.converged

@@ -17,7 +17,7 @@ from camtrain.scene import resolve
 DECKS = Path(__file__).resolve().parents[2] / "decks"
 
 
-def coupled_raw(scale: float = 1.0, coupling: str = "two_way", solver: str = "staggered") -> dict:
+def coupled_raw(scale: float = 1.0, coupling: str = "two_way", solver: str = "waveform") -> dict:
     """The Zeta intake dynamics deck on the elastic Zeta camshaft, one lobe per cylinder,
     shaft, supports and belt stiffened by ``scale``; Petroff bearings, 360 angles."""
     raw = tomllib.loads((DECKS / "zeta_intake_dynamics.toml").read_text("utf-8"))
@@ -35,7 +35,7 @@ def coupled_raw(scale: float = 1.0, coupling: str = "two_way", solver: str = "st
     return raw
 
 
-@pytest.fixture(scope="module", params=["staggered", "monolithic"])
+@pytest.fixture(scope="module", params=["waveform", "monolithic", "staggered"])
 def stiff(request):
     model = validate(coupled_raw(1e3, solver=request.param), "coupled", DECKS)
     return model, api.run(model)
@@ -80,14 +80,14 @@ def test_coupled_outputs_per_lobe(stiff):
 
 
 @pytest.mark.derived
-def test_monolithic_and_staggered_agree_on_an_elastic_shaft():
+def test_monolithic_and_waveform_agree_on_an_elastic_shaft():
     """x10 the assumed shaft (lobes move about 0.7 um): both solvers reach a periodic state and
     every lobe's peak load agrees within 1 %. (The load curves differ by 6-17 % of the peak in
-    the bounce after each separation, where the staggered solution's 1-degree exchange of loads
+    the bounce after each separation, where the waveform solution's 1-degree exchange of loads
     and motion cannot carry the ringing the monolithic march resolves:
     docs/camshaft_dynamics.md.)"""
     runs = {solver: api.run(validate(coupled_raw(10.0, solver=solver), solver, DECKS))
-            for solver in ("monolithic", "staggered")}
+            for solver in ("monolithic", "waveform")}
     for r in runs.values():
         assert r.metrics["coupling_change"].value <= 1e-4
     for j in range(1, 5):
@@ -108,8 +108,8 @@ def two_lobe_loads(solver: str, angle_points: int, steps_per_degree: float) -> n
 
 
 @pytest.mark.convergence
-def test_staggered_interface_error_falls_to_the_monolithic_march():
-    """The staggered solution hands loads and lobe motion between trains and shaft on the
+def test_waveform_interface_error_falls_to_the_monolithic_march():
+    """The waveform solution hands loads and lobe motion between trains and shaft on the
     angle grid; the monolithic march couples them at every time step. At a quarter of the
     default step (96 steps per degree, so that neither solver's own step error counts), their
     difference over the whole curve falls with the grid interval at first order (fitted:
@@ -120,7 +120,7 @@ def test_staggered_interface_error_falls_to_the_monolithic_march():
     gaps = []
     for points in (360, 720):
         mono = two_lobe_loads("monolithic", points, 96.0)
-        stag = two_lobe_loads("staggered", points, 96.0)
+        stag = two_lobe_loads("waveform", points, 96.0)
         gaps.append(np.max(np.abs(mono - stag), axis=1) / np.max(mono))
     order = np.log2(gaps[0] / gaps[1])
     assert np.all(order > 0.7), order
@@ -140,7 +140,7 @@ def test_monolithic_march_converges_with_the_step():
     assert 1.5 < order < 3.0, (d1, d2, order)
 
 
-def test_monolithic_converges_where_the_staggered_iteration_does_not():
+def test_monolithic_converges_where_the_waveform_iteration_does_not():
     """The assumed Zeta shaft itself (lobes move ten times the contact's deflection)."""
     r = api.run(validate(coupled_raw(1.0, solver="monolithic"), "soft", DECKS))
     assert r.metrics["coupling_change"].value <= 1e-4
@@ -148,14 +148,14 @@ def test_monolithic_converges_where_the_staggered_iteration_does_not():
 
 
 @pytest.mark.derived
-def test_hub_load_in_the_march_meets_the_staggered_shaft(monkeypatch):
+def test_hub_load_in_the_march_meets_the_waveform_shaft(monkeypatch):
     """The drive's hub load (belt preload ten times the deck's, 3000 N, on the x10 shaft; the
-    two lobes next to the pulley): the staggered solution's shaft has always carried it, and
+    two lobes next to the pulley): the waveform solution's shaft has always carried it, and
     with it in the monolithic march too the two solvers' mean lobe loads (order 0, where a
     static pull on the pulley shows) agree within 0.1 % of the peak (measured 0.014 / 0.032 %);
     left out of the march they differ by 1.8 / 1.9 %. (On four lobes over the whole curve, the
     two lobes next to the pulley differ by 3.2 / 4.2 % of the peak with the hub load and 9.5 /
-    10.3 % without; the rest is the staggered exchange on the grid: docs/camshaft_dynamics.md.)"""
+    10.3 % without; the rest is the waveform exchange on the grid: docs/camshaft_dynamics.md.)"""
     import camtrain.dynamics.monolithic as monolithic
 
     def run(solver: str):
@@ -166,13 +166,13 @@ def test_hub_load_in_the_march_meets_the_staggered_shaft(monkeypatch):
         assert r.metrics["coupling_change"].value <= 1e-4
         return np.array([r.component(f"lobe_{j}")["load"] for j in (1, 2)])
 
-    staggered, with_hub = run("staggered"), run("monolithic")
+    waveform, with_hub = run("waveform"), run("monolithic")
     march = monolithic.march_coupled
     monkeypatch.setattr(monolithic, "march_coupled",
                         lambda *a, **k: march(*a, **dict(k, drive=None)))
     without = run("monolithic")
-    peak = np.max(staggered)
-    gap = np.abs(with_hub.mean(axis=1) - staggered.mean(axis=1)) / peak
-    gap_without = np.abs(without.mean(axis=1) - staggered.mean(axis=1)) / peak
+    peak = np.max(waveform)
+    gap = np.abs(with_hub.mean(axis=1) - waveform.mean(axis=1)) / peak
+    gap_without = np.abs(without.mean(axis=1) - waveform.mean(axis=1)) / peak
     assert np.all(gap < 1e-3), gap
     assert np.all(gap_without > 1e-2), gap_without

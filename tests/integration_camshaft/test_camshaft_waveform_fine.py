@@ -1,7 +1,7 @@
-"""The staggered coupling on an exchange grid that resolves the ringing after each separation:
-the monolithic march's periodic state is a fixed point of the staggered passes there, and the
+"""The waveform coupling on an exchange grid that resolves the ringing after each separation:
+the monolithic march's periodic state is a fixed point of the waveform passes there, and the
 preconditioned iteration started from it converges next to it; the difference falls with the
-exchange interval (docs/camshaft_dynamics.md, "Monolithic against staggered on the ten-times
+exchange interval (docs/camshaft_dynamics.md, "Monolithic against waveform on the ten-times
 shaft")."""
 from __future__ import annotations
 
@@ -15,12 +15,12 @@ from tests.integration_camshaft.test_camshaft_coupled import DECKS, coupled_raw
 
 def fine_exchange(angle_points: int) -> dict:
     """Lobes 1 and 3 of the Zeta camshaft (cylinders 1 and 4) on the x10 shaft at a quarter
-    of the default step (96 steps per degree), staggered, started from the monolithic march,
+    of the default step (96 steps per degree), waveform, started from the monolithic march,
     passes to a change of 1e-3 (the difference to the march moves by under 1 % of itself
     between 1e-3 and 1e-4: 0.936 / 0.927 % at 2880 angles, 0.293 / 0.293 % at 5760). The
     drive's hub load is left out (no [camshaft.drive]: the torsion is driven at bearing 1)
     because the monolithic march does not carry it yet."""
-    raw = coupled_raw(10.0, solver="staggered")
+    raw = coupled_raw(10.0, solver="waveform")
     cs = raw["camshaft"]
     cs["lobes"] = cs["lobes"][::2]
     cs.pop("drive")
@@ -37,7 +37,7 @@ def exchanged():
 
 
 @pytest.mark.derived
-def test_staggered_passes_hold_the_monolithic_state_within_one_percent(exchanged):
+def test_waveform_passes_hold_the_monolithic_state_within_one_percent(exchanged):
     """2880 exchange angles (7 per period of the follower's ringing on its contact, order
     406): the preconditioned passes converge (measured 13 passes to 1e-3, 21 to 1e-4) and land
     within 1 % of the peak load of the march at every angle of both lobes (measured 0.94 %)."""
