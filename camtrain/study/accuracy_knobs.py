@@ -97,6 +97,12 @@ def _coupled_camshaft(raw: dict) -> bool:
     return raw.get("camshaft", {}).get("flexibility", {}).get("coupling") == "two_way"
 
 
+def _staggered_camshaft(raw: dict) -> bool:
+    """The coupled camshaft marched by the staggered solver."""
+    flex = raw.get("camshaft", {}).get("flexibility", {})
+    return _coupled_camshaft(raw) and flex.get("coupling_solver") == "staggered"
+
+
 #: ladders of the coupled camshaft (one rung marches every lobe's train with the shaft; 8
 #: stations per span cost twelve times the default, 2 steps per degree leave the contact
 #: ringing unresolved)
@@ -255,6 +261,9 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda v: 1.0 / v, lambda raw: _dynamics(raw) and not _adaptive(raw),
          "time steps per degree of cam of the valve-train dynamics",
          ladder_for=_coupled_ladder("steps_per_degree")),
+    Knob("coupling_iterations", "camshaft.flexibility.coupling_iterations", (1, 2, 4, 10),
+         lambda v: 1.0 / v, _staggered_camshaft,
+         "passes of a staggered shaft/train step at most (1: loosely coupled)", integer=True),
     Knob("spring_elements", "dynamics.spring_elements", (4, 8, 16, 32), lambda v: 1.0 / v,
          _spring_chain, "elements of the valve-spring chain (surge)", integer=True),
     Knob("dynamics_rtol", "dynamics.rtol", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9), lambda v: v,

@@ -96,6 +96,17 @@ def test_coupled_camshaft_climbs_its_cheaper_ladders():
     assert steps.ladder_of(coupled) == (6.0, 12.0, 24.0, 48.0)
 
 
+def test_staggered_passes_are_a_knob_of_the_staggered_solver_only():
+    """coupling_iterations sets the staggered march's passes per step: a knob of a two-way
+    coupled camshaft with coupling_solver = "staggered", of no other deck."""
+    flex = {"coupling": "two_way"}
+    monolithic = {"dynamics": {}, "camshaft": {"flexibility": dict(flex)}}
+    staggered = {"dynamics": {}, "camshaft": {"flexibility": dict(
+        flex, coupling_solver="staggered")}}
+    assert "coupling_iterations" not in acc.relevant_knobs(monolithic)
+    assert "coupling_iterations" in acc.relevant_knobs(staggered)
+
+
 def test_set_path_copies_and_creates_tables():
     raw = {"solver": {"angle_points": 720}}
     out = acc.set_path(raw, "lift.table.smoothing", 0.5)
