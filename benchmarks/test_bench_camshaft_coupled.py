@@ -16,9 +16,10 @@ from camtrain import api
 from camtrain.deck.load import validate
 
 
-def _four_trains(film_model: str = "steady"):
+def _four_trains(film_model: str = "steady", solver: str = "monolithic"):
     raw = tomllib.loads((ROOT / "decks" / "zeta_intake_camshaft_coupled.toml").read_text("utf-8"))
     raw["camshaft"]["lobes"] = raw["camshaft"]["lobes"][::2]
+    raw["camshaft"]["flexibility"]["coupling_solver"] = solver
     raw["camshaft"]["method"] = "petroff"
     raw.setdefault("tribology", {})["film_model"] = film_model
     return validate(raw, "four trains", ROOT / "decks")
@@ -42,3 +43,8 @@ def test_bench_four_trains_with_the_squeeze_film(benchmark):
     """The same with the level-1 squeeze film of every contact carried through the march."""
     _bench(benchmark, _four_trains("squeeze"),
            "the same, level-1 squeeze film at every step, warm")
+
+
+def test_bench_four_trains_staggered(benchmark):
+    """The same marched by the staggered solver (passes of every step until its load agrees)."""
+    _bench(benchmark, _four_trains(solver="staggered"), "the same, staggered solver, warm")

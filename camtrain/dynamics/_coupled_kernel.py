@@ -247,32 +247,33 @@ def _advance(s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C
              bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
              fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf, fric, hub,
              torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger, w_pred,
-             rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero):
+             rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, fresh):
     """Step s of the revolution (:func:`revolution`): the state (q, v, acc, contact states)
     advanced in place, the inputs bj ... at the step's end. ``stagger``: the shaft under the
     predicted loads ``w_pred`` first, then the trains with its motion prescribed
     (:mod:`._coupled_partition`). Returns the contact changes located and whether the step
-    had more than MAX_SWITCHES."""
+    had more than MAX_SWITCHES. ``fresh`` False: ``base`` (the step's solution without contact
+    and friction forces) is still that of the same start, from the step's previous pass."""
     n = q.size
     lobes = ix.size
     located = 0
     cut = 0
-    # the full step with the states of its start (P = A^-1 M, Q = A^-1 C)
-    for i in range(n):
-        rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
-        rhs_c[i] = a1 * q[i] + v[i]
-    for k in range(blocks.size - 1):
-        lo, hi = blocks[k], blocks[k + 1]
-        for i in range(lo, hi):
-            total = x_f0[i]
-            for e in range(lo, hi):
-                total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
-            base[i] = total
-    if hub_x >= 0:      # the belt's torque-dependent pull at the drive station
-        pull = abs(torque) / hub_radius
-        hub[0], hub[1] = pull * hub_cos, pull * hub_sin
+    if fresh:   # the full step with the states of its start (P = A^-1 M, Q = A^-1 C)
         for i in range(n):
-            base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
+            rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
+            rhs_c[i] = a1 * q[i] + v[i]
+        for k in range(blocks.size - 1):
+            lo, hi = blocks[k], blocks[k + 1]
+            for i in range(lo, hi):
+                total = x_f0[i]
+                for e in range(lo, hi):
+                    total += P[i, e] * rhs_w[e] + Q[i, e] * rhs_c[e]
+                base[i] = total
+        if hub_x >= 0:      # the belt's torque-dependent pull at the drive station
+            pull = abs(torque) / hub_radius
+            hub[0], hub[1] = pull * hub_cos, pull * hub_sin
+            for i in range(n):
+                base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
     for j in range(lobes):      # friction on the lobe's coordinates
         zf[5 * j] = -tang_j[j] * sina[j]
         zf[5 * j + 1] = tang_j[j] * cosa[j]
@@ -492,7 +493,7 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 b, bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol,
                 ival, fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf,
                 fric, hub, torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger,
-                w_pred, rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero)
+                w_pred, rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, it == 0)
             if not stagger or iterations == 1:
                 break
             gap, top = 0.0, 1.0
