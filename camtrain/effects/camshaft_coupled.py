@@ -31,9 +31,11 @@ def missing(deck) -> list[str]:
 def reason(deck, planned) -> str:
     cs = deck.camshaft
     lobes = sum(1 for lobe in cs.lobes if lobe.bank == 1)
+    how = {"monolithic": "marched together", "staggered": "marched in turn every step",
+           "waveform": "iterated revolution by revolution"}[cs.flexibility.coupling_solver]
     return (f"[dynamics] and [camshaft.flexibility] given (coupling two_way): {lobes} elastic "
-            f"trains on the elastic shaft, iterated to tolerance "
-            f"{cs.flexibility.coupling_tolerance:g}")
+            f"trains on the elastic shaft, {how} ({cs.flexibility.coupling_solver}) to a "
+            f"periodic state within {cs.flexibility.coupling_tolerance:g}")
 
 
 def run(deck, inputs, res):
