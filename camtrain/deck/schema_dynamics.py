@@ -164,6 +164,13 @@ def dynamics_problems(deck) -> list[Problem]:
             and getattr(shaft, "coupling", "one_way") == "two_way"):
         out.append(Problem("dynamics.contact_model", "hertz_line is not modelled by the two-way "
                            "coupled camshaft yet", "hertz_line", "linear"))
+    if (shaft is not None and getattr(shaft, "coupling", "one_way") == "two_way"
+            and d.speed_oscillation > 0):
+        out.append(Problem("dynamics.speed_oscillation", "with two_way coupling every lobe "
+                           "turns with the camshaft's drive: its oscillation is "
+                           "camshaft.flexibility.speed_amplitude",
+                           f"{d.speed_oscillation * 30.0 / 3.141592653589793:g} rpm",
+                           "0 (and speed_amplitude, speed_order in [camshaft.flexibility])"))
     if d.pushrod_stiffness is not None and deck.mechanism.type != "pushrod":
         out.append(Problem("dynamics.pushrod_stiffness", "applies to a push-rod train only",
                            None, "no value"))

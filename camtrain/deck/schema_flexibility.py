@@ -107,4 +107,9 @@ class CamshaftFlexibility:
         if self.bore >= self.diameter:
             return [Problem(f"{path}.bore", "is not smaller than the shaft diameter",
                             mm_text(self.bore), f"< diameter ({mm_text(self.diameter)})")]
+        if (self.coupling == "two_way" and self.coupling_solver == "waveform"
+                and self.speed_amplitude > 0):
+            return [Problem(f"{path}.coupling_solver", "the waveform solver runs at constant "
+                            "speed: a drive speed oscillation needs a time-marched solver",
+                            "waveform", '"monolithic" or "staggered" (or speed_amplitude = 0)')]
         return []

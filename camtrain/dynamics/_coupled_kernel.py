@@ -247,13 +247,17 @@ def _advance(s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C
              bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
              fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf, fric, hub,
              torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger, w_pred,
-             rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, fresh):
+             rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, fresh, drive_u, drive_j,
+             drive_acc):
     """Step s of the revolution (:func:`revolution`): the state (q, v, acc, contact states)
     advanced in place, the inputs bj ... at the step's end. ``stagger``: the shaft under the
     predicted loads ``w_pred`` first, then the trains with its motion prescribed
     (:mod:`._coupled_partition`). Returns the contact changes located and whether the step
     had more than MAX_SWITCHES. ``fresh`` False: ``base`` (the step's solution without contact
-    and friction forces) is still that of the same start, from the step's previous pass."""
+    and friction forces) is still that of the same start, from the step's previous pass.
+    ``drive_acc``: the drive's angular acceleration at the step's end, whose inertia load
+    -J theta'' (``drive_j`` = J 1 on the twist coordinates, ``drive_u`` = A^-1 of it) the
+    twist, measured from the drive, carries."""
     n = q.size
     lobes = ix.size
     located = 0
@@ -274,6 +278,9 @@ def _advance(s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C
             hub[0], hub[1] = pull * hub_cos, pull * hub_sin
             for i in range(n):
                 base[i] += hub_basis[i, 0] * hub[0] + hub_basis[i, 1] * hub[1]
+        if drive_acc != 0.0:    # the drive's speed oscillation: -J theta'' on the twist
+            for i in range(n):
+                base[i] -= drive_u[i] * drive_acc
     for j in range(lobes):      # friction on the lobe's coordinates
         zf[5 * j] = -tang_j[j] * sina[j]
         zf[5 * j + 1] = tang_j[j] * cosa[j]
@@ -315,6 +322,9 @@ def _advance(s, q, v, acc, act_c, act_s, x_f0, P, Q, blocks, ainv_basis, G, K, C
             fric[hub_y] += hub[1]
         if stagger:
             add_shaft_forces(fric, w_pred, gxj, gyj, gphij, ix, iy, iphi)
+        if drive_acc != 0.0:
+            for i in range(n):
+                fric[i] -= drive_j[i] * drive_acc
         tau = 0.0
         switches = 0
         while True:
@@ -390,7 +400,8 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                sina, turn, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
                valve_dof, substeps, out_load, out_acc, film_on, squeeze_on, film_h, film_a, film_e,
                film_speed, film_tab, film_col, ln_r0, d_ln_r, out_film, hub_basis, hub_x, hub_y,
-               hub_cos, hub_sin, hub_radius, stagger, predictor, iterations, step_tol, w_older):
+               hub_cos, hub_sin, hub_radius, stagger, predictor, iterations, step_tol, w_older,
+               drive_u, drive_j, drive_acc):
     """March one revolution (steps = b.shape[1]); write the grid samples (every ``substeps``
     steps) into ``out_load``/``out_acc`` (n_lobes x grid). Friction: the coefficient of lobe j
     at step s under load w from ``fric_tab`` (n_lobes, levels, steps) by :func:`_coefficient`
@@ -413,6 +424,10 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     lobe torque W l' + mu W r of the last step (explicit by one step, as the friction; the
     preload part is constant and sits in ``f0``); ``hub_basis`` holds A^-1 at those two
     coordinates.
+
+    Drive speed oscillation: ``drive_acc`` (steps) the drive's angular acceleration at every
+    step's end (zeros at constant speed), ``drive_j``, ``drive_u`` as in :func:`_advance`; the
+    inputs b ... are then those of the oscillating drive angle.
 
     Staggered (``stagger``; :mod:`._coupled_partition`): every step advances the shaft under
     each contact's predicted load (``predictor`` 0: the last step's, 1: extrapolated from the
@@ -493,7 +508,8 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 b, bd, gx, gy, gphi, kc, cc, ks, cs, offc, offs, a0, a1, dt, ix, iy, iphi, ifol,
                 ival, fr_j, tang_j, arm_j, cosa, sina, bj, bdj, gxj, gyj, gphij, b0, bd0, zf,
                 fric, hub, torque, hub_basis, hub_x, hub_y, hub_cos, hub_sin, hub_radius, stagger,
-                w_pred, rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, it == 0)
+                w_pred, rhs_w, rhs_c, base, x, v1, a1v, be, bde, zero, it == 0, drive_u,
+                drive_j, drive_acc[s])
             if not stagger or iterations == 1:
                 break
             gap, top = 0.0, 1.0

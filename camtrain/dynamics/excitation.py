@@ -24,11 +24,15 @@ __all__ = ["CamInput", "TimeBase"]
 @dataclass(frozen=True)
 class TimeBase:
     """Camshaft angle against time: mean speed ``omega`` [rad/s], oscillation amplitude
-    ``amplitude`` [rad/s] at ``order`` x the camshaft speed (0: constant speed)."""
+    ``amplitude`` [rad/s] at ``order`` x the camshaft speed (0: constant speed), the speed
+    w + amplitude sin(order (w t) + phase)."""
 
     omega: float
     amplitude: float = 0.0
     order: int = 0
+    #: phase of the oscillation at t = 0 [rad]: order x (start angle - the grid's first
+    #: angle), so that the oscillation is tied to the cam angle, not to where a march starts
+    phase: float = 0.0
 
     @property
     def period(self) -> float:
@@ -41,9 +45,19 @@ class TimeBase:
         if self.amplitude == 0.0 or self.order == 0:
             return self.omega * t, np.full(t.shape, self.omega), np.zeros(t.shape)
         big = self.order * self.omega
-        a = self.amplitude
-        return (self.omega * t + a / big * (1.0 - np.cos(big * t)), self.omega + a * np.sin(big * t),
-                a * big * np.cos(big * t))
+        a, p = self.amplitude, self.phase
+        return (self.omega * t + a / big * (math.cos(p) - np.cos(big * t + p)),
+                self.omega + a * np.sin(big * t + p), a * big * np.cos(big * t + p))
+
+    def starting_at(self, theta0: float, theta_first: float) -> TimeBase:
+        """This time base for a march that starts (t = 0) at cam angle ``theta0`` of a grid
+        whose first angle is ``theta_first``: the oscillation keeps its phase against the
+        cam angle (speed w + amplitude sin(order (theta - theta_first)) at mean angle
+        theta)."""
+        if self.amplitude == 0.0 or self.order == 0:
+            return self
+        return TimeBase(self.omega, self.amplitude, self.order,
+                        self.phase + self.order * (theta0 - theta_first))
 
 
 @dataclass(frozen=True)

@@ -165,6 +165,7 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                 "integrator")
     i0 = _start_index(cam.lift)
     theta0 = float(cam.theta[i0])
+    base = base.starting_at(theta0, float(cam.theta[0]))
     t = np.arange(steps + 1) * dt
     b, bd, bdd = cam.in_time(t, base, theta0)
     inputs = np.zeros((2, steps + 1))
@@ -205,7 +206,7 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
     if base.amplitude and base.order:
         # samples are uniform in time, not in angle: carry them onto the grid angles
         angle = theta0 + base.angle(sample_t)[0]
-        on_grid = {k: _to_grid(val, angle, cam.theta) for k, val in samples.items()}
+        on_grid = {k: samples_to_grid(val, angle, cam.theta) for k, val in samples.items()}
     else:
         order = (np.arange(grid) - i0 - 1) % grid   # sample r is grid angle (i0 + r + 1) % grid
         on_grid = {k: val[:, order] for k, val in samples.items()}
@@ -226,6 +227,7 @@ def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: 
     grid = cam.theta.size
     steps = grid * int(substeps)
     dt = base.period / steps
+    base = base.starting_at(theta0, float(cam.theta[0]))
     t = np.arange(steps + 1) * dt
     b, bd, _ = cam.in_time(t, base, theta0)
     inputs = np.zeros((2, steps + 1))
@@ -260,7 +262,7 @@ def _geometry(model: TrainModel, cam: CamInput, base: TimeBase, t, theta0: float
     return 1, model.cam_law.as_array(), radius, ratio
 
 
-def _to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarray:
+def samples_to_grid(rows: np.ndarray, angle: np.ndarray, theta: np.ndarray) -> np.ndarray:
     """Rows sampled at increasing ``angle`` (one revolution) interpolated (linear, periodic) at
     the grid angles ``theta``."""
     wrapped = np.mod(angle - theta[0], 2.0 * math.pi)

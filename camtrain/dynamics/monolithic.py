@@ -132,7 +132,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                   friction=None, friction_arm=None, turn: float = 1.0, cycles_max: int = 30,
                   period_tol: float = 1e-5, start=None, friction_table=None, film=None,
                   drive=None, staggered: bool = False, predictor: str = "linear",
-                  iterations: int = 1, step_tol: float = 1e-6) -> MonolithicResult:
+                  iterations: int = 1, step_tol: float = 1e-6, speed=None) -> MonolithicResult:
     """March the shaft and one copy of ``train`` per lobe to their common periodic state.
 
     Args:
@@ -179,6 +179,11 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             prescribed; ``iterations`` passes of a step at most, until the load a pass
             produces agrees with its prediction within ``step_tol`` of the largest load (1: a
             single pass, the loosely coupled scheme).
+        speed: the drive's time base (:class:`~camtrain.dynamics.excitation.TimeBase`) when
+            its speed oscillates (Williams 2013 App A6): every lobe then turns with the drive's
+            angle plus its twist, the twist (measured from the drive) carries the inertia load
+            -J theta'', and the results are carried from their sample times onto the grid
+            angles, as the single train's march does. None: constant speed ``omega``.
 
     Why the tables are corrected after every revolution: the friction laws have kinks (where
     Ball's boundary cap takes over, where Greenwood-Tripp asperity contact starts at lambda
@@ -231,6 +236,14 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                  else np.zeros((n, 2)))
     # the inputs at every step of a revolution, in each lobe's own angle frame
     theta = theta_grid[0] + omega * dt * np.arange(1, steps + 1)
+    rate, drive_acc = np.full(steps, omega), np.zeros(steps)
+    oscillates = speed is not None and bool(speed.amplitude) and bool(speed.order)
+    if oscillates:
+        angle, rate, drive_acc = speed.angle(dt * np.arange(1, steps + 1))
+        theta = theta_grid[0] + angle
+    drive_j = np.zeros(n)      # J 1 on the twist coordinates: the drive's inertia load
+    drive_j[sysm.t0:sysm.tr0] = M[sysm.t0:sysm.tr0, sysm.t0:sysm.tr0].sum(axis=1)
+    drive_u = Ainv @ drive_j
     local = theta[None, :] - np.asarray(phases, dtype=float)[:, None]
     lift, d1, _ = cam.evaluate(local)
     r = periodic(ratio, theta_grid)(local)
@@ -268,14 +281,14 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             drag = (film.table[one], film.levels, arm_grid, float(turn), True)
         q, v, acc, act_c, act_s = warm_start(
             start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, omega, sysm,
-            lift[:, -1], d1[:, -1] * omega, gx[:, -1], gy[:, -1], d1[:, -1], drag,
+            lift[:, -1], d1[:, -1] * rate[-1], gx[:, -1], gy[:, -1], d1[:, -1], drag,
             None if hub_x < 0 else (hub_radius, hub_dir, f0[hub_x], f0[hub_y]))
         if film is not None:
             fs["h"][:] = _start_film(film, start, theta_grid, phases, ratio, omega)
     w_prev = np.zeros(n_lobes)
     w_older = np.zeros(n_lobes)     # the load one step before w_prev (the linear predictor)
     if staggered:   # the shaft's first predicted loads: the start's contact loads
-        w_prev[:] = _start_loads(q, v, act_c, lift[:, -1], d1[:, -1] * omega, gx[:, -1],
+        w_prev[:] = _start_loads(q, v, act_c, lift[:, -1], d1[:, -1] * rate[-1], gx[:, -1],
                                  gy[:, -1], d1[:, -1], kc, cc, offc, sysm)
         w_older[:] = w_prev
     if start is not None and friction is not None and friction_table is None:
@@ -293,13 +306,13 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     for cycle in range(1, int(cycles_max) + 1):
         switches, cut, missed = revolution(
             q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, sysm.blocks, ainv_basis, K, C, M, Minv,
-            f0, lift, d1 * omega, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina,
+            f0, lift, d1 * rate, gx, gy, d1, mu, corr, ln_first, ln_step, arm, r, cosa, sina,
             float(turn), kc, cc, ks, cs_, offc, offs, a0, a1, dt, ix, iy, iphi, ifol, ival,
             sysm.valve, int(substeps), loads, valve_acc, film is not None,
             film is not None and film.squeeze, fs["h"], fs["unit"], fs["exponent"], fs["speed"],
             fs["table"], fs["col"], fs["ln_r0"], fs["d_ln_r"], films, hub_basis, hub_x, hub_y,
             hub_dir[0], hub_dir[1], hub_radius, bool(staggered), PREDICTORS[predictor],
-            int(iterations), float(step_tol), w_older)
+            int(iterations), float(step_tol), w_older, drive_u, drive_j, drive_acc)
         if film is not None:
             # correct the table by its error at this revolution's loads and films
             error = _film_table_error(film, loads, films, ratio, theta_grid, phases)
@@ -321,6 +334,12 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             if change <= period_tol and cycle >= 2:
                 break
         previous = loads.copy()
+    if oscillates:  # samples are uniform in time: carry them onto the grid angles
+        from .integrators import samples_to_grid
+
+        at = theta_grid[0] + speed.angle(np.arange(grid) * period / grid)[0]
+        loads, valve_acc = samples_to_grid(loads, at, theta_grid), samples_to_grid(valve_acc, at, theta_grid)
+        films = samples_to_grid(films, at, theta_grid)
     return MonolithicResult(loads.copy(), valve_acc.copy(), cycle, change <= period_tol,
                             change, steps, int(switches), int(cut),
                             films.copy() if film is not None else None, int(missed))

@@ -217,6 +217,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     from camtrain.camshaft import lobe_force, shift_curve
     from camtrain.dynamics import march
     from camtrain.dynamics.coupled_film import squeeze_film_model
+    from camtrain.dynamics.excitation import TimeBase
     from camtrain.dynamics.monolithic import FRICTION_LEVELS, march_coupled
     from camtrain.effects.shaft_output import add_shaft
     from camtrain.formulas import cam_torque
@@ -255,8 +256,10 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
         film = squeeze_film_model(contact, kin, FRICTION_LEVELS)
     drive = drive_of(deck)
     sub = run_setup.settings.substeps
+    # the drive's speed (Williams' oscillation, camshaft.flexibility) turns every lobe
+    speed = TimeBase(omega, f.speed_amplitude, f.speed_order if f.speed_amplitude else 0)
     # start from the single train's periodic state on a rigid shaft (fewer revolutions)
-    single = march(run_setup.model, run_setup.cam, run_setup.base, run_setup.settings)
+    single = march(run_setup.model, run_setup.cam, speed, run_setup.settings)
     result = march_coupled(shaft, run_setup.model, run_setup.cam, ratio, axes,
                            np.asarray(gammas), omega, substeps=sub,
                            friction=friction,
@@ -266,7 +269,8 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
                            period_tol=f.coupling_tolerance, start=single, film=film,
                            drive=None if drive is None else drive[1:],
                            staggered=f.coupling_solver == "staggered",
-                           predictor=f.coupling_predictor, iterations=f.coupling_iterations)
+                           predictor=f.coupling_predictor, iterations=f.coupling_iterations,
+                           speed=speed)
     forces, torques, loads = [], [], []
     for j, (g, w) in enumerate(zip(gammas, own_frame(result.loads), strict=True)):
         fr = contact.solve(kin, w).force
