@@ -129,6 +129,19 @@ def film(h_m, V, u, eta, p_in, p_out, b, x_c, radius, x1, striated, open_outlet=
     for i in range(1, RUPTURE_SCAN + 1):
         x = x1 + (b - x1) * i / RUPTURE_SCAN
         fx = _rupture_residual(x, x1, p_in, c1, c2, h_m, x_c, radius)
+        if i == 1 and prev_f <= 0.0 and fx <= 0.0:
+            # an inlet at zero gauge: the residual starts at 0, and the pressure the converging
+            # inlet builds may fall back to a rupture inside the first scan interval (a
+            # separating squeeze near a dead centre, or a minimum gap near the inlet flank).
+            # Look for that hump by halving towards the inlet (values within round-off of the
+            # film's pressure scale do not count); without one, scan on.
+            d = x - x1
+            for _ in range(40):
+                d *= 0.5
+                f_half = _rupture_residual(x1 + d, x1, p_in, c1, c2, h_m, x_c, radius)
+                if f_half > 1e-9 * scale:
+                    prev_x, prev_f = x1 + d, f_half
+                    break
         if prev_f > 0.0 and fx <= 0.0:
             x2 = _illinois(0, prev_x, x, prev_f, fx, 1e-12 * b, x1, p_in, c1, c2, h_m, x_c,
                            radius, 0.0)

@@ -75,6 +75,27 @@ def test_cavitated_film_satisfies_its_boundary_conditions(V, p_in, p_out):
     assert film.load == pytest.approx(_numeric_load(*args, film), rel=1e-5)
 
 
+def test_a_rupture_next_to_a_zero_pressure_inlet_is_found():
+    """Derived: the Zeta second ring on its downstroke just after TDC (minimum gap 0.089 mm from
+    the crankcase flank at zero gauge, the gap opening): the pressure the short converging inlet
+    builds falls to a rupture inside the first sixteenth of the face, where the rupture residual
+    starts at p_in = 0. The rupture line is found (not the half-Sommerfeld fallback, whose
+    outflow is that of a full film with negative pressures), its p = dp/dx = 0 and the load rebuilt
+    by quadrature to 1e-5; and the state is continuous in h (the fallback flipped with h)."""
+    b, x_c, R = 1.184e-3, 1.184e-3 - 1.0952e-3, 0.5
+    for h, V, u in ((1.369e-8, 1.16e-5, 0.319), (1.693e-8, 3.52e-5, 0.956),
+                    (2.286e-8, 5.95e-5, 1.590)):
+        args = (h, V, u, 0.0055, 0.0, 0.0, b, x_c, R)
+        film = ring_film(*args)
+        assert film.cavitated and not film.fallback
+        assert 0.0 < film.x_rupture < b / 16
+        assert film.flow == pytest.approx(0.5 * u * (h + (film.x_rupture - x_c) ** 2 / (2 * R)))
+        # the film fills 1/16 of the face: a finer quadrature grid
+        assert film.load == pytest.approx(_numeric_load(*args, film, n=1600001), rel=1e-5)
+        near = ring_film(h * (1 + 1e-6), *args[1:])
+        assert near.flow == pytest.approx(film.flow, rel=1e-4)
+
+
 def _starved_state(h, layer, p_in=2e5, p_out=6e6, u=5.0, V=0.0):
     """One starved instant of the Zeta top ring on the downstroke (the state kernel of the
     march; ``U < 0``: the inlet is the crankcase-side flank)."""
