@@ -179,7 +179,17 @@ class PistonSolverSection:
         default="trapezoid")
     ring_tolerance: float = quantity("Cyclic tolerance on the ring film (relative)", "-",
                                      default=1e-4, gt=0, lt=0.1)
-    passes: int = quantity("Starved passes after the flooded one (Yang Table 6.1: 2)", "-",
+    pass_mode: Literal["converged", "yang1992"] = option(
+        "Starved passes of the ring pack: converged (repeated until the pack's fixed point, "
+        "within pass_tolerance) or yang1992 (exactly `passes` of them, Table 6.1)",
+        default="converged")
+    pass_tolerance: float = quantity(
+        "Converged passes: largest change of a ring's films and of the layer it leaves between "
+        "two passes (relative to their largest value)", "-", default=1e-3, gt=0, lt=0.5)
+    max_passes: int = quantity("Converged passes: most starved passes before giving up", "-",
+                               default=60, ge=2, le=500)
+    passes: int = quantity("yang1992 passes: starved passes after the flooded one (Yang "
+                           "Table 6.1: 2)", "-",
                            default=2, ge=0, le=10)
     roughness_rule: Literal["rms", "sum"] = option(
         "Composite ring/liner roughness for the boundary switch: rms or sum", default="rms")

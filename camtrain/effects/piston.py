@@ -15,8 +15,12 @@ def missing(deck) -> list[str]:
 
 def reason(deck, planned) -> str:
     p = deck.piston
-    parts = [f"{len(p.rings)} compression rings, gas labyrinth ({p.solver.gas_march}), flooded "
-             f"then {p.solver.passes} starved passes (Yang 1992 §5.2-5.4)"]
+    s = p.solver
+    passes = (f"starved passes to the pack's fixed point (within {s.pass_tolerance:g})"
+              if s.pass_mode == "converged" else
+              f"{s.passes} starved passes (yang1992, Table 6.1)")
+    parts = [f"{len(p.rings)} compression rings, gas labyrinth ({s.gas_march}), flooded "
+             f"then {passes} (Yang 1992 §5.2-5.4)"]
     parts.append("oil-control ring" if p.oil_control_ring is not None else "no oil-control ring")
     parts.append("skirt (eq. 5.37)" if p.skirt is not None else
                  "skirt skipped (no [piston.skirt] geometry)")
@@ -95,12 +99,27 @@ def run(deck, inputs, result):
     options = PistonOptions(step=s.crank_step, gas_march=s.gas_march,
                             gas_tolerance=s.gas_tolerance, ring_march=s.ring_march,
                             ring_tolerance=s.ring_tolerance, passes=s.passes,
+                            pass_mode=s.pass_mode, pass_tolerance=s.pass_tolerance,
+                            max_passes=s.max_passes,
                             roughness_rule=s.roughness_rule, power_mean=s.power_mean,
                             boundary_friction=s.boundary_friction)
     out = solve_piston(piston_case(deck), cylinder_pressure(deck), deck.speed.engine,
                        len(deck.cylinders), options)
     _flag_assumptions(deck, result)
     _write(out, deck, result, np)
+    pk = out.pack
+    result.add_metric("ring_passes", pk.passes, "-", "starved passes of the ring pack")
+    result.add_metric("ring_pass_change", pk.pass_change, "-", "ring pack: largest relative "
+                      "change of a ring's films or left layer in the last pass")
+    if s.pass_mode == "converged" and not pk.converged:
+        result.warn(f"piston: the ring pack did not reach its fixed point in {pk.passes} passes "
+                    f"(last change {pk.pass_change:.2g} > piston.solver.pass_tolerance "
+                    f"{s.pass_tolerance:g}); raise piston.solver.max_passes")
+    for i, rc in enumerate(pk.starved):
+        if rc.cyclic_change >= s.ring_tolerance:
+            result.warn(f"piston: ring {i + 1}'s starved march stopped at its {rc.cycles}-cycle "
+                        f"cap without repeating (change {rc.cyclic_change:.2g} > "
+                        f"piston.solver.ring_tolerance {s.ring_tolerance:g})")
     return out
 
 

@@ -91,7 +91,9 @@ class PistonCase:
 @dataclass(frozen=True)
 class PistonOptions:
     """Resolution knobs and model options: crank ``step`` [rad] (Yang 1 deg), gas march and
-    tolerance, ring march and tolerance, starved ``passes``, roughness rule, power mean."""
+    tolerance, ring march and tolerance, the starved passes (``pass_mode`` ``converged``: until
+    the pack's fixed point within ``pass_tolerance``, at most ``max_passes``; ``yang1992``:
+    ``passes`` of them, Table 6.1), roughness rule, power mean."""
 
     step: float = math.radians(1.0)
     gas_march: str = "trapezoid"
@@ -99,6 +101,9 @@ class PistonOptions:
     ring_march: str = "trapezoid"
     ring_tolerance: float = 1e-4
     passes: int = 2
+    pass_mode: str = "converged"
+    pass_tolerance: float = 1e-3
+    max_passes: int = 60
     roughness_rule: str = "rms"
     power_mean: str = "time"
     boundary_friction: float = 0.08
@@ -130,8 +135,9 @@ def solve_piston(case: PistonCase, pressure, omega: float, cylinders: int = 1,
                                          opt.roughness_rule))
             for i, r in enumerate(case.rings)]
     travel = piston_position(theta, case.crank_radius, case.rod_length)
-    sol = solve_pack(pack, theta, U, travel, omega, passes=opt.passes, scheme=opt.ring_march,
-                     tolerance=opt.ring_tolerance)
+    sol = solve_pack(pack, theta, U, travel, omega, passes=opt.passes, pass_mode=opt.pass_mode,
+                     pass_tolerance=opt.pass_tolerance, max_passes=opt.max_passes,
+                     scheme=opt.ring_march, tolerance=opt.ring_tolerance)
     circumference = math.pi * case.bore
     scale = POWER_MEANS[opt.power_mean]
     ring_force = tuple(rc.friction * circumference for rc in sol.starved)

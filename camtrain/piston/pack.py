@@ -44,11 +44,17 @@ class PackRing:
 @dataclass(frozen=True)
 class PackSolution:
     """Films of every ring after each pass: ``flooded`` and ``starved`` (lists of RingCycle,
-    top ring first) and the ``layers`` [m] each starved ring was given (NaN = flooded)."""
+    top ring first) and the ``layers`` [m] each starved ring was given (NaN = flooded);
+    ``passes`` the starved passes run, ``pass_change`` the largest change of a ring's films or
+    of the layer it leaves between its last two marches (:func:`pass_change`), ``converged``
+    whether that change is within the pass tolerance."""
 
     flooded: list[RingCycle]
     starved: list[RingCycle]
     layers: list[np.ndarray]
+    passes: int = 0
+    pass_change: float = float("inf")
+    converged: bool = False
 
 
 def _strokes(theta: np.ndarray) -> np.ndarray:
@@ -130,19 +136,44 @@ def _interpolate(values, fd: Feed, mask):
 STARVED_SCHEME = "backward_euler"
 #: Cycles a starved march may take: the ring's own layer must repeat as well as its film.
 STARVED_CYCLES = 40
+#: How the starved passes end: ``converged`` repeats them until the pack is at its fixed point
+#: (every ring's films and the layer it leaves change by less than the pass tolerance between
+#: two marches); ``yang1992`` stops after the given number of passes (Table 6.1: two).
+PASS_MODES = ("converged", "yang1992")
+
+
+def pass_change(old: RingCycle, new: RingCycle) -> float:
+    """Change of a ring between two marches: the largest change of its minimum film and of the
+    layer it leaves on the liner (what the other rings are fed), each relative to its largest
+    value over the cycle. Films far below that (a dry ring near a dead centre, riding on its
+    asperities) move the flows and the friction by no more than this."""
+    dh = np.max(np.abs(new.h_min - old.h_min)) / np.max(np.abs(new.h_min))
+    a, b = (np.nan_to_num(rc.layer) for rc in (old, new))
+    top = np.max(np.abs(b))
+    return float(max(dh, np.max(np.abs(b - a)) / top if top > 0.0 else 0.0))
 
 
 def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: int = 2,
-               scheme: str = "trapezoid", tolerance: float = 1e-4,
-               starved_scheme: str = STARVED_SCHEME) -> PackSolution:
-    """Flooded rings (march ``scheme``), then ``passes`` starved passes alternating bottom-up and
-    top-down (march ``starved_scheme``).
+               pass_mode: str = "converged", pass_tolerance: float = 1e-3,
+               max_passes: int = 60, scheme: str = "trapezoid", tolerance: float = 1e-4,
+               starved_scheme: str = STARVED_SCHEME,
+               start: PackSolution | None = None) -> PackSolution:
+    """Flooded rings (march ``scheme``), then starved passes alternating bottom-up and top-down
+    (march ``starved_scheme``): ``passes`` of them (``pass_mode="yang1992"``, Table 6.1), or
+    until the pack's fixed point (``"converged"``: at least two, at most ``max_passes``, until
+    :func:`pass_change` of every ring marched in a pass is below ``pass_tolerance``; a ring whose
+    feeding rings have not moved since its own last march is not marched again).
 
     In each pass a ring meets the layers the other rings left in the latest pass (Table 6.1);
     where it meets its own layer (eq. 5.36, dead centres) that layer is the one it lays in the
     same cyclic march, so a ring's own strokes agree with each other at its cyclic solution.
+    ``start``: a solution to carry on from (its flooded films and its latest starved ones).
     """
+    if pass_mode not in PASS_MODES:
+        raise ValueError(f"unknown pass mode {pass_mode!r}; expected one of {PASS_MODES}")
     feeds = [feed(n, pack, theta, travel, U) for n in range(len(pack))]
+    sources = [set(fd.source[(fd.source >= 0) & (fd.source != n)].tolist())
+               for n, fd in enumerate(feeds)]
 
     def march(n: int, layer, own, h_start: float = 1e-6):
         pr = pack[n]
@@ -159,19 +190,43 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
                           tolerance=tolerance,
                           max_cycles=STARVED_CYCLES, boundary_roughness=pr.boundary_roughness)
 
-    flooded = [march(n, None, None) for n in range(len(pack))]
-    results = list(flooded)
-    layers = [np.full(len(theta), np.nan) for _ in pack]
+    if start is None:
+        flooded = [march(n, None, None) for n in range(len(pack))]
+        results = list(flooded)
+        layers = [np.full(len(theta), np.nan) for _ in pack]
+        done = 0
+    else:
+        flooded, results = start.flooded, list(start.starved)
+        layers, done = list(start.layers), start.passes
+    # version[n] counts ring n's marches; fed[n] the versions of its feeding rings it last met
+    version = [0] * len(pack)
+    fed: list[dict | None] = [None] * len(pack)
     order = list(range(len(pack)))
-    for p in range(passes):
+    converged = pass_mode == "converged"
+    change = start.pass_change if start is not None else float("inf")
+    p = done
+    while True:
+        if converged and p - done >= max_passes:
+            break
+        if not converged and p - done >= passes:
+            break
+        change = 0.0
         for n in (order[::-1] if p % 2 == 0 else order):
+            met = {m: version[m] for m in sources[n]}
+            if converged and p > 0 and fed[n] == met:
+                continue                                  # nothing it meets has moved
             fd = feeds[n]
-            other = (fd.source >= 0) & (fd.source != n)
             lay = np.full(len(theta), -1.0)
-            for m in set(fd.source[other].tolist()):
+            for m in sources[n]:
                 on = fd.source == m
                 lay = np.where(on, _interpolate(results[m].layer, fd, on), lay)
             # each pass starts where the ring's latest cycle ended (its film and its own layer)
-            results[n] = march(n, lay, results[n].layer, results[n].h_min[-1])
-            layers[n] = results[n].supply
-    return PackSolution(flooded, results, layers)
+            new = march(n, lay, results[n].layer, results[n].h_min[-1])
+            change = max(change, pass_change(results[n], new))
+            results[n], fed[n] = new, met
+            version[n] += 1
+            layers[n] = new.supply
+        p += 1
+        if converged and p >= 2 and change < pass_tolerance:
+            break
+    return PackSolution(flooded, results, layers, p, change, change < pass_tolerance)

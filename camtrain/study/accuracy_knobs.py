@@ -254,6 +254,10 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("ring_tolerance", "piston.solver.ring_tolerance", (1e-2, 1e-3, 1e-4, 1e-5, 1e-6),
          lambda v: v, lambda raw: "piston" in raw,
          "cyclic tolerance of the ring-film march"),
+    Knob("pass_tolerance", "piston.solver.pass_tolerance", (1e-1, 1e-2, 1e-3, 1e-4),
+         lambda v: v, lambda raw: "piston" in raw and raw["piston"].get("solver", {}).get(
+             "pass_mode", "converged") == "converged",
+         "tolerance of the ring pack's starved passes to their fixed point"),
     Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
          lambda v: v, lambda raw: "piston" in raw,
          "iteration and cyclic tolerance of the inter-ring gas march"),

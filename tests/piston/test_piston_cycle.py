@@ -67,12 +67,16 @@ def test_liner_temperature_is_the_quadratic_through_the_three_values():
 
 
 @pytest.mark.derived
-def test_assembly_chain_equals_the_hand_wired_pack(zeta_assembly):
+def test_assembly_chain_equals_the_hand_wired_pack():
     """The chain (labyrinth from the deck data, viscosity from the liner profile) gives the very
     films of the ring pack wired by hand from the same App. D data (tests/piston/test_pack.py):
-    the assembly adds no physics of its own."""
+    the assembly adds no physics of its own. Compared on Yang's two passes, a fixed sequence of
+    operations: over the 17 converged passes the round-off of the inputs grows to 3e-8 of the
+    friction at 3 angles."""
     _, _, pack = _pack(2)
-    for mine, ref in zip(zeta_assembly.pack.starved, pack.starved, strict=True):
+    chain = solve_piston(zeta_case(), zeta_pressure(), RPM * math.pi / 30.0, cylinders=4,
+                        options=PistonOptions(pass_mode="yang1992", passes=2))
+    for mine, ref in zip(chain.pack.starved, pack.starved, strict=True):
         assert mine.h_min == pytest.approx(ref.h_min, rel=1e-9)
         assert mine.friction == pytest.approx(ref.friction, rel=1e-9, abs=1e-9)
 
@@ -98,7 +102,7 @@ def test_a_uniform_skirt_adds_its_couette_power():
     case = zeta_case(skirt_height=0.03, skirt_depth=0.02, skirt_x=(0.0, 0.03),
                      skirt_clearance=(20e-6, 20e-6))
     w = RPM * math.pi / 30.0
-    out = solve_piston(case, zeta_pressure(), w, 1, PistonOptions(passes=0))
+    out = solve_piston(case, zeta_pressure(), w, 1, PistonOptions(passes=0, pass_mode="yang1992"))
     eta = case.eta(0.02, out.theta)
     expected = np.mean(math.pi * Z.BORE * 0.03 / 20e-6 * eta * out.liner_speed ** 2)
     assert out.skirt_power == pytest.approx(expected, rel=1e-9)
