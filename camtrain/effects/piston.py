@@ -115,11 +115,13 @@ def run(deck, inputs, result):
         result.warn(f"piston: the ring pack did not reach its fixed point in {pk.passes} passes "
                     f"(last change {pk.pass_change:.2g} > piston.solver.pass_tolerance "
                     f"{s.pass_tolerance:g}); raise piston.solver.max_passes")
-    for i, rc in enumerate(pk.starved):
-        if rc.cyclic_change >= s.ring_tolerance:
-            result.warn(f"piston: ring {i + 1}'s starved march stopped at its {rc.cycles}-cycle "
-                        f"cap without repeating (change {rc.cyclic_change:.2g} > "
-                        f"piston.solver.ring_tolerance {s.ring_tolerance:g})")
+    for i, (most, capped) in enumerate(zip(pk.cycles_most, pk.unrepeated, strict=True)):
+        result.add_metric("cycles_most", most, "-", f"ring {i + 1}: most cycles of any of its "
+                          "starved marches", component=f"ring_{i + 1}")
+        if capped:
+            result.warn(f"piston: {capped} of ring {i + 1}'s starved marches stopped at their "
+                        f"{most}-cycle cap before the film repeated within "
+                        f"piston.solver.ring_tolerance {s.ring_tolerance:g}")
     return out
 
 

@@ -47,7 +47,9 @@ class PackSolution:
     top ring first) and the ``layers`` [m] each starved ring was given (NaN = flooded);
     ``passes`` the starved passes run, ``pass_change`` the largest change of a ring's films or
     of the layer it leaves between its last two marches (:func:`pass_change`), ``converged``
-    whether that change is within the pass tolerance."""
+    whether that change is within the pass tolerance; per ring, ``cycles_most`` the most cycles
+    any of its starved marches took and ``unrepeated`` how many of them stopped at their cap
+    (:data:`STARVED_CYCLES`) before the film and own layer repeated."""
 
     flooded: list[RingCycle]
     starved: list[RingCycle]
@@ -55,6 +57,8 @@ class PackSolution:
     passes: int = 0
     pass_change: float = float("inf")
     converged: bool = False
+    cycles_most: tuple = ()
+    unrepeated: tuple = ()
 
 
 def _strokes(theta: np.ndarray) -> np.ndarray:
@@ -205,6 +209,8 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
     converged = pass_mode == "converged"
     change = start.pass_change if start is not None else float("inf")
     p = done
+    most = [0] * len(pack)
+    unrepeated = [0] * len(pack)
     while True:
         if converged and p - done >= max_passes:
             break
@@ -224,9 +230,12 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
             new = march(n, lay, results[n].layer, results[n].h_min[-1])
             change = max(change, pass_change(results[n], new))
             results[n], fed[n] = new, met
+            most[n] = max(most[n], new.cycles)
+            unrepeated[n] += int(not new.cyclic_change < tolerance)
             version[n] += 1
             layers[n] = new.supply
         p += 1
         if converged and p >= 2 and change < pass_tolerance:
             break
-    return PackSolution(flooded, results, layers, p, change, change < pass_tolerance)
+    return PackSolution(flooded, results, layers, p, change, change < pass_tolerance,
+                        tuple(most), tuple(unrepeated))
