@@ -17,7 +17,9 @@ from the top ring down. Yang states two starved passes reach the fixed point for
 rings; they do not: a ring's film near a dead centre is a squeeze film that remembers its
 previous stroke, so the second ring's downstroke just after TDC (which feeds the top ring) still
 moves when pass 2 changes its starved upstroke, and the top ring's zone within one ring spacing
-of TDC, fed only by itself, drains under continuity (docs/piston.md).
+of TDC, fed only by itself, drains under continuity (docs/piston.md). So by default the passes
+go on, alternating, to the pack's fixed point within a stated tolerance (``converged``); Yang's
+two passes are the ``yang1992`` option.
 """
 from __future__ import annotations
 
