@@ -61,7 +61,8 @@ def route(raw: dict, params: list[Parameter], name: str, base_dir: str, key: str
 
     kind = raw.get("kind", "valve_train")
     if kind != "valve_train":
-        return Route(False, f"a {kind} deck runs each case through its own plan")
+        article = "an" if kind[:1] in "aeiou" else "a"
+        return Route(False, f"{article} {kind} deck runs each case through its own plan")
     for p in params:
         if p.path not in BATCH_PATHS or not changes_only_its_field(raw, p):
             return Route(False, f"{p.path} is not a scalar the chain uses elementwise (batched: "

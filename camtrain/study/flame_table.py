@@ -20,6 +20,16 @@ COLUMNS = (("flame_bearings", "bearings"), ("flame_valve_train", "valve train"),
 COMPONENTS = COLUMNS[:3]
 
 
+def _si(metric) -> float:
+    """A record's (value, unit) in SI (a bare value is taken as SI)."""
+    from camtrain.units import UNITS, to_si
+
+    if isinstance(metric, (list, tuple)):
+        value, unit = metric[0], metric[1]
+        return to_si(float(value), unit) if unit in UNITS else float(value)
+    return float(metric)
+
+
 def flame_rows(params: list, records: list[dict]) -> list[dict]:
     """One row per finished case with a FLAME total, ordered by the first swept parameter:
     {'x': value, metric: W ..., 'fmep': Pa, 'shares': {metric: share of the components}}."""
@@ -32,8 +42,9 @@ def flame_rows(params: list, records: list[dict]) -> list[dict]:
         if r.get("status") != "ok" or "flame_total" not in m:
             continue
         row = {"x": r["values"][p.name]}
-        row.update({k: m[k][0] for k, _ in COLUMNS if k in m})
-        row["fmep"] = m["fmep"][0] if "fmep" in m else math.nan
+        # records carry (value, unit) in the deck's units: the table works in W and Pa
+        row.update({k: _si(m[k]) for k, _ in COLUMNS if k in m})
+        row["fmep"] = _si(m["fmep"]) if "fmep" in m else math.nan
         parts = sum(row.get(k, 0.0) for k, _ in COMPONENTS)
         row["shares"] = {k: row.get(k, 0.0) / parts if parts > 0 else math.nan
                          for k, _ in COMPONENTS}

@@ -45,6 +45,20 @@ def test_files_are_written(tmp_path):
     assert (tmp_path / "flame.csv").read_text().splitlines()[0].startswith("speed[rpm],")
 
 
+def test_records_in_deck_units_are_read_in_their_units(tmp_path):
+    """A sweep's records carry each metric in the deck's display unit (fmep in MPa, powers in
+    W or kW): the table converts by the unit, so 0.0712 MPa is 71.2 kPa (before, it divided
+    the MPa value by 1e3 and printed 0.0)."""
+    records = _records()
+    for r in records:
+        if r["metrics"]:
+            r["metrics"]["fmep"] = (0.07125, "MPa")
+            r["metrics"]["flame_total"] = (r["metrics"]["flame_total"][0] / 1e3, "kW")
+    write_flame(tmp_path, [SPEED], records, plots=False)
+    md = (tmp_path / "flame.md").read_text()
+    assert "| 3000 | 0.552 | 0.667 | 2.080 | 0.825 | 4.124 | 71.2 | 17 / 20 / 63 |" in md
+
+
 def test_nothing_without_a_flame_total(tmp_path):
     records = [{"index": 0, "values": {"speed": 1.0}, "status": "ok", "message": "",
                 "metrics": {"power_loss_mean": (1.0, "W")}}]
