@@ -25,9 +25,10 @@ MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromi
 
 
 def _console(stderr: bool = False):
-    from rich.console import Console
+    """The report's output: rich on a terminal, plain text (no rich import) elsewhere."""
+    from camtrain.report.console import terminal
 
-    return Console(stderr=stderr, highlight=False, soft_wrap=True)
+    return terminal(stderr)
 
 
 def _fail(exc: CamtrainError) -> None:
@@ -173,7 +174,7 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
     if show:
         from camtrain.report.console import progress_bar
 
-        bars = progress_bar(_console(stderr=True), enabled=True)
+        bars = progress_bar(enabled=True)
     else:
         from contextlib import nullcontext
 
@@ -283,7 +284,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     if show:
         from camtrain.report.console import print_plan, print_run
 
-        console.rule(f"[bold]{_escape(loaded.model.title)}[/]  ({_escape(deck)})")
+        console.rule((loaded.model.title, "bold"), f"  ({deck})")
         print_plan(console, result.plan, result.timings)
         print_run(console, result, written, checks, out_dir)
     elif check and violated(checks):
@@ -295,23 +296,21 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
 
 
 def _print_batch(console, reports, check: bool) -> None:
-    from rich.markup import escape
-    from rich.table import Table
+    from camtrain.report.console import Table
 
-    table = Table(title="decks", title_justify="left")
-    for col in ("deck", "status", "limits", "time [s]"):
-        table.add_column(col, justify="right" if col == "time [s]" else "left")
+    table = Table("decks", [(col, "right" if col == "time [s]" else "left", None)
+                            for col in ("deck", "status", "limits", "time [s]")])
     for r in reports:
         bad = sum(1 for c in r.checks if not c.ok)
         if r.error:
-            status = f"[red]error (exit {r.exit_code})[/]"
+            status = (f"error (exit {r.exit_code})", "red")
         elif bad:
-            status = "[red]limits violated[/]" if check else "[yellow]limits violated[/]"
+            status = ("limits violated", "red" if check else "yellow")
         else:
-            status = "[green]ok[/]"
+            status = ("ok", "green")
         limits = f"{len(r.checks) - bad}/{len(r.checks)} pass" if r.checks else "none set"
-        table.add_row(escape(r.path), status, limits, f"{r.seconds:.2f}")
-    console.print(table)
+        table.add_row(r.path, status, limits, f"{r.seconds:.2f}")
+    console.table(table)
 
 
 @main.command("lift")

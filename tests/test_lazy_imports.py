@@ -3,6 +3,7 @@ subpackages (optimisers, splines, special functions, integrators) nor numba; a l
 loads the splines it needs."""
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -41,3 +42,19 @@ def test_quiet_run_command_imports_no_terminal_plotting_or_compiler(tmp_path):
                          check=True).stdout
     assert set(out.split()) == set()
     assert (tmp_path / "out" / "summary.json").is_file()
+
+
+def test_run_report_into_a_pipe_imports_no_terminal_library(tmp_path):
+    """`camtrain run --no-plots` writing its report into a pipe: the same tables as rich would
+    print there (tests/report/test_boxes.py), drawn without importing rich."""
+    code = ("import sys, runpy; sys.argv = ['camtrain', 'run', sys.argv[1], '--no-plots', "
+            "'--out', sys.argv[2]]\n"
+            "try:\n    runpy.run_module('camtrain.cli', run_name='__main__')\n"
+            "except SystemExit as exc:\n    assert not exc.code, exc.code\n"
+            "print('rich' in sys.modules, file=sys.stderr)")
+    env = {k: v for k, v in os.environ.items() if k not in ("FORCE_COLOR", "TTY_COMPATIBLE")}
+    res = subprocess.run([sys.executable, "-c", code, str(ROOT / "decks" / "harrison_flat.toml"),
+                          str(tmp_path / "out")], cwd=ROOT, capture_output=True, text=True,
+                         check=True, env=env)
+    assert "key results" in res.stdout and "┏" in res.stdout
+    assert res.stderr.strip().splitlines()[-1] == "False"
