@@ -70,14 +70,18 @@ def _process(*args: str):
     return lambda: subprocess.run(cmd, capture_output=True, check=True, cwd=ROOT, env=ENV)
 
 
-def test_bench_run_process(benchmark, tmp_path):
-    """`camtrain run DECK --no-plots --quiet` against `python -c "import numpy, scipy"`."""
+@pytest.mark.parametrize("display", ["report", "quiet"])
+def test_bench_run_process(benchmark, tmp_path, display):
+    """`camtrain run DECK --no-plots` against `python -c "import numpy, scipy"`: the command a
+    user runs, its report printed (here into a pipe, as rich would print it there), and with
+    `--quiet` (nothing printed)."""
     deck = str(ROOT / "decks" / "harrison_flat.toml")
-    run = _process("-m", "camtrain.cli", "run", deck, "--no-plots", "--quiet", "--out",
+    quiet = ["--quiet"] if display == "quiet" else []
+    run = _process("-m", "camtrain.cli", "run", deck, "--no-plots", *quiet, "--out",
                    str(tmp_path / "out"))
     timing = paired(run, _process("-c", "import numpy, scipy"), rounds=7)
-    record(benchmark, "`run --no-plots` process / `import numpy, scipy`", timing, "<= 2.5x",
-           cpu=True)
+    record(benchmark, f"`run --no-plots{' --quiet' if quiet else ''}` process / "
+           "`import numpy, scipy`", timing, "<= 2.5x" if not quiet else "", cpu=True)
     benchmark.pedantic(run, rounds=3, iterations=1)
 
 
