@@ -116,10 +116,14 @@ def wipe(fig: Figure) -> None:
 
 
 def save_png(fig: Figure, path, software: str = "") -> None:
-    """Draw ``fig`` at rcParams["savefig.dpi"] and write it as an RGBA PNG with Pillow (which
+    """Draw ``fig`` at rcParams["savefig.dpi"] and write it as a PNG with Pillow (which
     matplotlib itself writes PNGs with) at zlib's fastest level: lossless, ~10 % larger than
-    Pillow's default level 6 and written in well under half its time (an A4 sheet at 150 dpi)."""
+    Pillow's default level 6 and written in well under half its time (an A4 sheet at 150 dpi).
+    A sheet without transparency (every sheet on its white page) is written as RGB: the same
+    pixels, a quarter fewer bytes for Pillow to filter and compress (~50 against ~58 ms and
+    ~200 against ~230 KiB a sheet)."""
     import matplotlib as mpl
+    import numpy as np
     from PIL import Image, PngImagePlugin
 
     dpi = mpl.rcParams["savefig.dpi"]
@@ -129,6 +133,8 @@ def save_png(fig: Figure, path, software: str = "") -> None:
     info = PngImagePlugin.PngInfo()
     if software:
         info.add_text("Software", software)
-    Image.frombuffer("RGBA", fig.canvas.get_width_height(physical=True),
-                     fig.canvas.buffer_rgba(), "raw", "RGBA", 0, 1).save(
-        path, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi), pnginfo=info)
+    rgba = np.asarray(fig.canvas.buffer_rgba())
+    image = Image.frombuffer("RGBA", (rgba.shape[1], rgba.shape[0]), rgba, "raw", "RGBA", 0, 1)
+    if rgba[..., 3].min() == 255:
+        image = image.convert("RGB")
+    image.save(path, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi), pnginfo=info)

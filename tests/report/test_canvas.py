@@ -1,9 +1,11 @@
-"""The sheets' canvas: its PNG writer is lossless and carries the resolution, and its cached
+"""The sheets' canvas: its PNG writer is lossless (RGB for an opaque figure, RGBA with any
+transparency) and carries the resolution, and its cached
 text is laid out as matplotlib lays it out."""
 from __future__ import annotations
 
 import matplotlib
 import numpy as np
+import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image
@@ -21,15 +23,17 @@ def _drawn(fig):
     return ax
 
 
-def test_png_is_the_canvas_pixel_for_pixel_at_the_sheet_dpi(tmp_path):
+@pytest.mark.parametrize(("facecolor", "mode"), [("white", "RGB"), ("none", "RGBA")])
+def test_png_is_the_canvas_pixel_for_pixel_at_the_sheet_dpi(tmp_path, facecolor, mode):
     with matplotlib.rc_context(RC):
         fig = figure((3.0, 2.0))
+        fig.set_facecolor(facecolor)
         _drawn(fig)
         save_png(fig, tmp_path / "f.png", software="camtrain test")
         pixels = np.asarray(fig.canvas.buffer_rgba())
     img = Image.open(tmp_path / "f.png")
-    assert img.mode == "RGBA" and img.size == (pixels.shape[1], pixels.shape[0])
-    assert np.array_equal(np.asarray(img), pixels)
+    assert img.mode == mode and img.size == (pixels.shape[1], pixels.shape[0])
+    assert np.array_equal(np.asarray(img.convert("RGBA")), pixels)
     assert round(img.info["dpi"][0]) == RC["savefig.dpi"] == round(fig.dpi)
     assert img.info["Software"] == "camtrain test"
 
