@@ -137,3 +137,19 @@ def test_bearing_outputs_in_deck_units(tmp_path, units, angle, film):
     j = header.index(film)
     assert m["value"] == pytest.approx(float(np.nanmin(data[:, j])), rel=1e-6)
     assert summary["columns"]["angle"]["unit"] == angle.split("[")[1].rstrip("]")
+
+
+def test_cycle_csv_formats_every_value_with_ten_significant_digits():
+    """csv_text formats a row at a time; the text is value by value `f"{v:.10g}"`, special
+    values included."""
+    from camtrain.report.tables import csv_text, cycle_table
+    from tests.report.conftest import synthetic
+
+    r = synthetic(97)
+    odd = np.array([np.nan, np.inf, -np.inf, -0.0, 5e-324, 1.7976931348623157e308, 1 / 3])
+    values = np.resize(odd, 97) * np.linspace(0.5, 1.0, 97)
+    r.add_column("odd", values, "-", "special values")
+    headers, data = cycle_table(r)
+    expected = [",".join(headers)] + [",".join(f"{v:.10g}" for v in row) for row in data]
+    assert csv_text(r) == "\n".join(expected) + "\n"
+    assert "nan" in csv_text(r) and "inf" in csv_text(r)
