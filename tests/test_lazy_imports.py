@@ -10,7 +10,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 HEAVY = ("scipy.optimize", "scipy.special", "scipy.interpolate", "scipy.integrate", "numba",
-         "matplotlib")
+         "matplotlib", "numpy.ma")
 CODE = ("import sys; from camtrain import api; api.run(api.load(sys.argv[1])); "
         f"print(' '.join(m for m in {HEAVY!r} if m in sys.modules))")
 
