@@ -30,23 +30,20 @@ def plain_ok(*texts: str) -> bool:
 
 
 def is_plain_stream(stream, environ=None) -> bool:
-    """True when the terminal library would write ``stream`` as plain text (no terminal):
-    TTY_COMPATIBLE=0, or neither TTY_COMPATIBLE=1 nor a non-empty FORCE_COLOR and not a tty;
-    UTF-8 output, not on Windows (whose consoles the library treats apart)."""
+    """True when the terminal library would write ``stream`` as plain text (no terminal): not
+    a tty, UTF-8 output, not on Windows (whose consoles the library treats apart). Where the
+    environment overrides the library's choice (FORCE_COLOR, TTY_COMPATIBLE) the library
+    decides: its versions read those variables differently (13.0 takes an empty FORCE_COLOR
+    as set and knows no TTY_COMPATIBLE), so only the case every version agrees on is drawn
+    here."""
     env = os.environ if environ is None else environ
     if os.name == "nt" or "JPY_PARENT_PID" in env or "ipykernel" in sys.modules:
         return False
     encoding = (getattr(stream, "encoding", None) or "utf-8").lower()
     if not encoding.startswith("utf"):
         return False
-    tty_compatible = env.get("TTY_COMPATIBLE", "")
-    if tty_compatible == "0":
-        return True
-    if tty_compatible == "1":
+    if "FORCE_COLOR" in env or "TTY_COMPATIBLE" in env:
         return False
-    force = env.get("FORCE_COLOR")
-    if force is not None:
-        return force == ""
     isatty = getattr(stream, "isatty", None)
     try:
         return isatty is not None and not isatty()
