@@ -1,5 +1,5 @@
 """The low-rank (Woodbury) contact update of the monolithic shaft-and-trains step
-(:mod:`._coupled_kernel`): every cam contact's gradient lies in its lobe's five coordinates
+(:mod:`._coupled_step`): every cam contact's gradient lies in its lobe's five coordinates
 (x, y, phi, follower, valve), so the closed contacts enter the factorised linear part as a
 small dense system on 5 L numbers."""
 from __future__ import annotations

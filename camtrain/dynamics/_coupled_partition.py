@@ -1,4 +1,4 @@
-"""The staggered (partitioned) step of the shaft-and-trains march (:mod:`._coupled_kernel`).
+"""The staggered (partitioned) step of the shaft-and-trains march (:mod:`._coupled_step`).
 
 Felippa and Park's serial staggered procedure for coupled systems (Felippa, Park and Farhat,
 "Partitioned analysis of coupled mechanical systems", Comput. Methods Appl. Mech. Engrg. 190,
