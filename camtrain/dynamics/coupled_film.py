@@ -19,6 +19,7 @@ either way and the per-revolution correction puts the exact value in at the grid
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -134,3 +135,62 @@ def squeeze_film_model(contact, kin, levels, squeeze: bool = True) -> SqueezeFil
             film = FilmField(min=h, central=h, method=method, central_method=method)
             table[k, i] = contact.friction(kin, w, hertz, film).force / level
     return SqueezeFilmModel(unit, exponent, u, table, levels, friction, R, unit_of, squeeze)
+
+
+# the march's film state (camtrain.dynamics.monolithic.march_coupled)
+def film_state(film, theta_grid, local, n_lobes: int, grid: int) -> dict:
+    """The kernel's film arguments: the steady film under 1 N, the entrainment speed and the
+    fractional grid column of every step in each lobe's own frame, the table and its film
+    ratios, the film state h (placeholders without a film)."""
+    if film is None:
+        z = np.zeros((n_lobes, 1))
+        return dict(h=np.ones(n_lobes), unit=z, exponent=0.0, speed=z, table=np.zeros((2, 2, 1)),
+                    col=z, ln_r0=0.0, d_ln_r=1.0, ratios=FILM_RATIOS)
+    two_pi = 2.0 * math.pi
+    step = two_pi / grid
+    speed = np.array([np.interp(row, theta_grid, film.speed, period=two_pi) for row in local])
+    radius = np.array([np.interp(row, theta_grid, film.radius, period=two_pi) for row in local])
+    return dict(
+        h=np.ones(n_lobes),
+        unit=film.unit_of(radius, speed),
+        exponent=float(film.exponent),
+        speed=speed,
+        table=np.ascontiguousarray(film.table),
+        col=np.mod((local - theta_grid[0]) / step, grid),
+        ln_r0=math.log(FILM_RATIOS[0]), d_ln_r=math.log(FILM_RATIOS[1] / FILM_RATIOS[0]),
+        ratios=FILM_RATIOS)
+
+
+def _shift(values, theta_grid, by):
+    """Periodic curves ``values`` (n_lobes, grid) read at theta + by_j (row j)."""
+    return np.array([np.interp(theta_grid + b, theta_grid, row, period=2.0 * math.pi)
+                     for row, b in zip(values, by, strict=True)])
+
+
+def start_film(film, start, theta_grid, phases, ratio, omega):
+    """Every contact's film at the march's first angle: the periodic level-1 film of the
+    single train's load (on the grid), at its lobe's angle."""
+    from camtrain.lubrication import squeeze_film_march
+
+    from .train import CAM
+
+    w = np.interp(theta_grid, start.theta, np.maximum(start.contact_force[CAM], 0.0),
+                  period=2.0 * math.pi) * np.asarray(ratio, dtype=float)
+    F = film.steady(w)
+    h = squeeze_film_march(theta_grid, F, film.speed, omega, squeeze=film.squeeze).film
+    good = np.isfinite(h) & (h > 0.0)
+    h = np.where(good, h, np.max(h[good]) if np.any(good) else 1e-6)
+    at = theta_grid[0] - np.asarray(phases, dtype=float)
+    return np.interp(at, theta_grid, h, period=2.0 * math.pi)
+
+
+def film_table_error(film, loads, films, ratio, theta_grid, phases):
+    """The film table's error at one revolution's loads and films (shaft frame, n_lobes x
+    grid): the contact model's coefficient with the marched film minus the table's."""
+    phases = np.asarray(phases, dtype=float)
+    own_w = _shift(loads, theta_grid, phases) * np.asarray(ratio, dtype=float)
+    own_h = _shift(films, theta_grid, phases)
+    exact = film.friction(own_w, own_h)
+    cols = np.broadcast_to(np.arange(theta_grid.size), own_w.shape)
+    error = np.where(own_w >= film.levels[0], exact - film.tabled(own_w, own_h, cols), 0.0)
+    return _shift(error, theta_grid, -phases)

@@ -199,6 +199,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     """
     from ._coupled_kernel import revolution
     from ._coupled_partition import PREDICTORS
+    from .coupled_film import film_state, film_table_error, start_film
     from .monolithic_start import warm_start
 
     theta_grid = cam.theta
@@ -264,7 +265,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
                                  for row in grid_mu]) for j in range(n_lobes)])
     else:
         mu = np.zeros((n_lobes, 1, steps))
-    fs = _film_state(film, theta_grid, local, n_lobes, grid)
+    fs = film_state(film, theta_grid, local, n_lobes, grid)
     if film is not None:
         ln_first, ln_step = math.log(film.levels[0]), math.log(film.levels[1] / film.levels[0])
     # the table's error at the last revolution's loads, when the exact law is also given
@@ -284,7 +285,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             lift[:, -1], d1[:, -1] * rate[-1], gx[:, -1], gy[:, -1], d1[:, -1], drag,
             None if hub_x < 0 else (hub_radius, hub_dir, f0[hub_x], f0[hub_y]))
         if film is not None:
-            fs["h"][:] = _start_film(film, start, theta_grid, phases, ratio, omega)
+            fs["h"][:] = start_film(film, start, theta_grid, phases, ratio, omega)
     w_prev = np.zeros(n_lobes)
     w_older = np.zeros(n_lobes)     # the load one step before w_prev (the linear predictor)
     if staggered:   # the shaft's first predicted loads: the start's contact loads
@@ -315,7 +316,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
             int(iterations), float(step_tol), w_older, drive_u, drive_j, drive_acc)
         if film is not None:
             # correct the table by its error at this revolution's loads and films
-            error = _film_table_error(film, loads, films, ratio, theta_grid, phases)
+            error = film_table_error(film, loads, films, ratio, theta_grid, phases)
             corr = np.array([periodic(error[j], theta_grid)(theta) for j in range(n_lobes)])
         elif friction is not None and friction_table is not None:
             # correct the table by its error at this revolution's loads: the coefficient is
@@ -351,63 +352,3 @@ def _start_loads(q, v, act_c, b, bd, gx, gy, gphi, kc, cc, offc, sysm) -> np.nda
     d = b + offc - q[sysm.ifol] + gx * q[sysm.ix] + gy * q[sysm.iy] + gphi * q[sysm.iphi]
     dd = bd - v[sysm.ifol] + gx * v[sysm.ix] + gy * v[sysm.iy] + gphi * v[sysm.iphi]
     return np.where(act_c, np.maximum(kc * d + cc * dd, 0.0), 0.0)
-
-
-def _film_state(film, theta_grid, local, n_lobes: int, grid: int) -> dict:
-    """The kernel's film arguments: the steady film under 1 N, the entrainment speed and the
-    fractional grid column of every step in each lobe's own frame, the table and its film
-    ratios, the film state h (placeholders without a film)."""
-    from .coupled_film import FILM_RATIOS
-
-    if film is None:
-        z = np.zeros((n_lobes, 1))
-        return dict(h=np.ones(n_lobes), unit=z, exponent=0.0, speed=z, table=np.zeros((2, 2, 1)),
-                    col=z, ln_r0=0.0, d_ln_r=1.0, ratios=FILM_RATIOS)
-    two_pi = 2.0 * math.pi
-    step = two_pi / grid
-    speed = np.array([np.interp(row, theta_grid, film.speed, period=two_pi) for row in local])
-    radius = np.array([np.interp(row, theta_grid, film.radius, period=two_pi) for row in local])
-    return dict(
-        h=np.ones(n_lobes),
-        unit=film.unit_of(radius, speed),
-        exponent=float(film.exponent),
-        speed=speed,
-        table=np.ascontiguousarray(film.table),
-        col=np.mod((local - theta_grid[0]) / step, grid),
-        ln_r0=math.log(FILM_RATIOS[0]), d_ln_r=math.log(FILM_RATIOS[1] / FILM_RATIOS[0]),
-        ratios=FILM_RATIOS)
-
-
-def _shift(values, theta_grid, by):
-    """Periodic curves ``values`` (n_lobes, grid) read at theta + by_j (row j)."""
-    return np.array([np.interp(theta_grid + b, theta_grid, row, period=2.0 * math.pi)
-                     for row, b in zip(values, by, strict=True)])
-
-
-def _start_film(film, start, theta_grid, phases, ratio, omega):
-    """Every contact's film at the march's first angle: the periodic level-1 film of the
-    single train's load (on the grid), at its lobe's angle."""
-    from camtrain.lubrication import squeeze_film_march
-
-    from .train import CAM
-
-    w = np.interp(theta_grid, start.theta, np.maximum(start.contact_force[CAM], 0.0),
-                  period=2.0 * math.pi) * np.asarray(ratio, dtype=float)
-    F = film.steady(w)
-    h = squeeze_film_march(theta_grid, F, film.speed, omega, squeeze=film.squeeze).film
-    good = np.isfinite(h) & (h > 0.0)
-    h = np.where(good, h, np.max(h[good]) if np.any(good) else 1e-6)
-    at = theta_grid[0] - np.asarray(phases, dtype=float)
-    return np.interp(at, theta_grid, h, period=2.0 * math.pi)
-
-
-def _film_table_error(film, loads, films, ratio, theta_grid, phases):
-    """The film table's error at one revolution's loads and films (shaft frame, n_lobes x
-    grid): the contact model's coefficient with the marched film minus the table's."""
-    phases = np.asarray(phases, dtype=float)
-    own_w = _shift(loads, theta_grid, phases) * np.asarray(ratio, dtype=float)
-    own_h = _shift(films, theta_grid, phases)
-    exact = film.friction(own_w, own_h)
-    cols = np.broadcast_to(np.arange(theta_grid.size), own_w.shape)
-    error = np.where(own_w >= film.levels[0], exact - film.tabled(own_w, own_h, cols), 0.0)
-    return _shift(error, theta_grid, -phases)
