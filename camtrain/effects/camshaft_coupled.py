@@ -148,7 +148,7 @@ def run(deck, inputs, res):
     accelerations = [shift_curve(responses[j].a[run_setup.model.valve], g)
                      for j, g in enumerate(gammas)]
     _report(res, loads, accelerations, theta, "waveform iteration", state.iterations,
-            state.change, state.converged, f.coupling_tolerance)
+            state.change, state.converged, f.coupling_tolerance, cs.orders)
     if marched is not None:
         gap = float(np.max(np.abs(loads - marched))) / max(float(np.max(marched)), 1e-300)
         res.add_metric("coupling_start_gap", gap, "-",
@@ -183,9 +183,10 @@ def _interface_newton(shaft, model, axes, ratio, omega, points, n):
 
 
 def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, change: float,
-            converged: bool, tolerance: float) -> None:
-    """Every lobe's coupled load and valve acceleration, the summed load and the solver's
-    convergence (passes of the iteration or revolutions of the march)."""
+            converged: bool, tolerance: float, orders: int) -> None:
+    """Every lobe's coupled load and valve acceleration with their orders up to ``orders``,
+    the summed load and the solver's convergence (passes of the iteration or revolutions of
+    the march)."""
     import numpy as np
 
     for j, load in enumerate(loads):
@@ -199,6 +200,12 @@ def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, ch
                        theta[i], component=comp)
     res.add_column("camshaft_load_sum", np.sum(loads, axis=0), "N",
                    "sum of the lobes' contact loads")
+    from camtrain.effects.shaft_output import add_orders
+
+    lobes = [f"lobe_{j + 1}" for j in range(len(loads))]
+    add_orders(res, "load", dict(zip(lobes, loads, strict=True)), "N", "contact load", orders)
+    add_orders(res, "valve_acceleration", dict(zip(lobes, valve_accelerations, strict=True)),
+               "m/s^2", "valve acceleration", orders)
     res.add_metric("coupling_passes", passes, "-", f"passes of the {solver}")
     res.add_metric("coupling_change", change, "-",
                    f"relative change between the last two passes of the {solver}")
@@ -287,7 +294,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     solver = ("monolithic march" if f.coupling_solver == "monolithic"
               else "staggered march")
     _report(res, loads, result.valve_acceleration, theta, solver, result.cycles,
-            result.change, result.converged, f.coupling_tolerance)
+            result.change, result.converged, f.coupling_tolerance, cs.orders)
     if f.coupling_solver == "staggered":
         res.add_metric("coupling_step_misses", result.missed, "-",
                        "steps of the last revolution whose staggered passes did not agree "

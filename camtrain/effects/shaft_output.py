@@ -8,9 +8,33 @@ import math
 NEAR_RESONANCE = 0.1
 
 
+def add_orders(res, name: str, rows, unit: str, what: str, orders: int, plane=None) -> None:
+    """The harmonic orders 0..``orders`` of one curve per component (``rows``: component ->
+    curve over the revolution) on the result's ``order`` axis (its own table,
+    cycle_order.csv): the amplitude of each order, of the vector (curve, ``plane`` curve) when a
+    second plane is given."""
+    import numpy as np
+
+    from camtrain.camshaft import harmonic_orders
+
+    count = None
+    for comp, curve in rows.items():
+        amplitude = harmonic_orders(curve).amplitude
+        if plane is not None:
+            amplitude = np.hypot(amplitude, harmonic_orders(plane[comp]).amplitude)
+        count = min(orders, amplitude.size - 1) + 1
+        if "order" not in res.axes:
+            res.add_axis("order", np.arange(count, dtype=float), "-",
+                         "harmonic order (cycles per camshaft revolution)")
+        label = comp.replace("_", " ")
+        res.add_column(f"{name}_orders", amplitude[:count], unit,
+                       f"{label}: {what}, amplitude of each order", component=comp,
+                       axis="order")
+
+
 def add_shaft(res, shaft, answer, theta, orders: int, omega: float) -> None:
-    """Reactions per bearing with their orders, deflection and twist per lobe, the largest of
-    each, the first natural frequencies and a warning near resonance."""
+    """Reactions per bearing with their orders, deflection and twist per lobe with theirs, the
+    largest of each, the first natural frequencies and a warning near resonance."""
     import numpy as np
 
     from camtrain.camshaft import harmonic_orders
@@ -41,6 +65,14 @@ def add_shaft(res, shaft, answer, theta, orders: int, omega: float) -> None:
         res.add_column("twist", twist[i], "rad",
                        f"{what}: twist against the drive (positive with the rotation)",
                        component=comp)
+    add_orders(res, "reaction", {f"bearing_{i + 1}": bx[i] for i in range(bx.shape[0])}, "N",
+               "load from the shaft (vector)", orders,
+               plane={f"bearing_{i + 1}": by[i] for i in range(by.shape[0])})
+    lobes = [f"lobe_{i + 1}" for i in range(dx.shape[0])]
+    add_orders(res, "deflection", dict(zip(lobes, dx, strict=True)), "m",
+               "shaft deflection (vector)", orders, plane=dict(zip(lobes, dy, strict=True)))
+    add_orders(res, "twist", dict(zip(lobes, twist, strict=True)), "rad",
+               "twist against the drive", orders)
     defl = np.hypot(dx, dy)
     i, j = np.unravel_index(int(np.argmax(defl)), defl.shape)
     res.add_metric("shaft_deflection_max", defl[i, j], "m",

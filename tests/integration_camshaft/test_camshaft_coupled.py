@@ -79,6 +79,30 @@ def test_coupled_outputs_per_lobe(stiff):
     assert r.metrics["coupling_passes"].value >= 1
 
 
+
+def test_orders_of_every_output(stiff):
+    """Issue: the orders of each output per cam and per bearing (today's harmonic analysis):
+    on the result's order axis (cycle_order.csv), each lobe's load, valve acceleration,
+    deflection and twist and each bearing's reaction; the bearing column holds the
+    reaction_order_n metrics, the lobe's load column the FFT of its load."""
+    from camtrain.camshaft import harmonic_orders
+
+    model, r = stiff
+    orders = model.camshaft.orders
+    assert np.array_equal(r["order"], np.arange(orders + 1))
+    for j in range(len(model.camshaft.lobes)):
+        comp = r.component(f"lobe_{j + 1}")
+        for name in ("load", "valve_acceleration", "deflection", "twist"):
+            assert comp[f"{name}_orders"].shape == (orders + 1,)
+        load = harmonic_orders(comp["load"]).amplitude[:orders + 1]
+        assert np.allclose(comp["load_orders"], load, rtol=1e-12, atol=0.0)
+    for i in range(len(model.camshaft.bearings)):
+        column = r.component(f"bearing_{i + 1}")["reaction_orders"]
+        for n in (1, 4):
+            metric = r.metrics[f"bearing_{i + 1}_reaction_order_{n}"].value
+            assert column[n] == pytest.approx(metric, rel=1e-12)
+
+
 @pytest.mark.derived
 def test_monolithic_and_waveform_agree_on_an_elastic_shaft():
     """x10 the assumed shaft (lobes move about 0.7 um): both solvers reach a periodic state and
