@@ -21,13 +21,11 @@ COMPONENTS = COLUMNS[:3]
 
 
 def _si(metric) -> float:
-    """A record's (value, unit) in SI (a bare value is taken as SI)."""
-    from camtrain.units import UNITS, to_si
+    """A record's metric, (value, unit) in the deck's units, in SI."""
+    from camtrain.units import to_si
 
-    if isinstance(metric, (list, tuple)):
-        value, unit = metric[0], metric[1]
-        return to_si(float(value), unit) if unit in UNITS else float(value)
-    return float(metric)
+    value, unit = metric[0], metric[1]
+    return to_si(float(value), unit)
 
 
 def flame_rows(params: list, records: list[dict]) -> list[dict]:
