@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test test-oldest fuzz bench lint clean venv
+.PHONY: demo test test-reverse test-folders test-oldest fuzz bench lint clean venv
 
 venv: $(STAMP)
 
@@ -20,6 +20,14 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# Order-dependence checks: the whole suite last test first, and each test folder on its own.
+test-reverse: $(STAMP)
+	$(BIN)/python -m pytest --reverse -p no:cacheprovider
+
+test-folders: $(STAMP)
+	set -e; for d in tests/*/ tests/test_*.py; do case $$d in *__pycache__*|*fuzz/*|*repro/*) continue;; esac; \
+		echo "== $$d"; $(BIN)/python -m pytest $$d -p no:cacheprovider; done
 
 # The declared minimum version of every dependency (and test extra), in a venv of its own.
 OLDEST := .venv-oldest

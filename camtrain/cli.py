@@ -13,7 +13,7 @@ import click
 
 from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
-from camtrain.interrupts import interruptible
+from camtrain.interrupts import Terminated, interruptible, terminable
 
 #: --units of the commands that write tables: the deck's units (default) or SI for pipelines
 UNITS_OPTION = dict(type=click.Choice(["deck", "si"]), default="deck", show_default=True,
@@ -41,15 +41,17 @@ class _Group(click.Group):
 
     def invoke(self, ctx):
         try:
-            return super().invoke(ctx)
+            with terminable():      # SIGTERM unwinds as Ctrl-C: no staging left behind
+                return super().invoke(ctx)
         except CamtrainError as exc:
             _fail(exc)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException,
                 SystemExit):
             raise
-        except KeyboardInterrupt:
-            click.echo("interrupted", err=True)
-            sys.exit(130)
+        except KeyboardInterrupt as exc:
+            terminated = isinstance(exc, Terminated)
+            click.echo("terminated" if terminated else "interrupted", err=True)
+            sys.exit(143 if terminated else 130)
         except Exception as exc:  # noqa: BLE001 - last line of defence against tracebacks
             click.echo(f"internal error in camtrain {__version__}: {type(exc).__name__}: {exc}\n"
                        "This is a bug; please report it with the deck that caused it.", err=True)
@@ -170,6 +172,10 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
     # a quiet or --json run prints no tables: it does not import the terminal library
     console = _console() if show else None
     targets = _output_dirs(decks, out)
+    if not quiet:   # a first run compiles the kernels for a while: say so, not a silent hang
+        from camtrain.numerics.compile_notice import watch
+
+        watch(lambda text: click.echo(text, err=True))
     reports, summaries, codes = [], [], []
     if show:
         from camtrain.report.console import progress_bar
@@ -233,7 +239,10 @@ def _escape(text: str) -> str:
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
              units: str = "deck"):
     """Load, run, check and write one deck; errors become a report, never an exception."""
+    from contextlib import ExitStack
+
     from camtrain import api
+    from camtrain.output_lock import output_lock
     from camtrain.report.junit import DeckReport
     from camtrain.report.limits import violated
     from camtrain.report.outputs import check_limits, write_run
@@ -243,7 +252,9 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     report = DeckReport(name=name, path=deck)
     start = time.perf_counter()
     task = bar.add_task(_escape(f"{name}: running"), total=None) if bar else None
+    lock = ExitStack()
     try:
+        lock.enter_context(output_lock(out_dir))   # one writer per directory, from the start
         loaded = api.load(deck)
         sizes = api.implausible(loaded)
         for w in sizes:                   # before the run: it explains a geometry failure there
@@ -276,6 +287,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
                    err=True)
         return report, {"deck": {"path": deck}, "error": report.error, "exit_code": EXIT_INTERNAL}
     finally:
+        lock.close()
         if bar and task is not None:
             bar.remove_task(task)
     report.seconds = time.perf_counter() - start
@@ -326,6 +338,7 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
                  quiet: bool, units: str) -> None:
     """Lift, velocity, acceleration and jerk of DECK's lift law: lift.csv and a plot sheet."""
     from camtrain import api
+    from camtrain.output_lock import output_lock
     from camtrain.report.outputs import write_staged
     from camtrain.report.tables import write_table
 
@@ -340,7 +353,7 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
 
             lift_sheet(result, f"{loaded.model.title}: lift law", stage / "lift")
 
-    with interruptible():
+    with interruptible(), output_lock(out_dir):
         written = write_staged(out_dir, write)
     if not quiet:
         from camtrain.report.console import print_run

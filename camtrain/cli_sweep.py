@@ -79,7 +79,10 @@ class _SweepCommand(click.Command):
               help="Run the cases on this Dask distributed scheduler, e.g. tcp://host:8786 "
                    "(needs camtrain[dask]).")
 @click.option("--resume", is_flag=True,
-              help="Keep the finished cases in OUT/sweep.csv and run only the others.")
+              help="Keep the finished cases in OUT/sweep.csv and run only the others (all run "
+                   "again when a file the deck reads changed).")
+@click.option("--force", is_flag=True,
+              help="Replace the sweep already in OUT (without this or --resume it is refused).")
 @click.option("--no-plots", is_flag=True, help="Write the tables only.")
 @click.option("--overlay-max", type=click.IntRange(0, 200), default=20, show_default=True,
               help="At most this many cases in the per-angle overlay plot.")
@@ -92,7 +95,7 @@ class _SweepCommand(click.Command):
 @click.pass_context
 def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zipped: bool,
           sets, out: str | None, jobs: int | None, scheduler: str | None, resume: bool,
-          no_plots: bool, overlay_max: int, quiet: bool, write_decks: bool,
+          force: bool, no_plots: bool, overlay_max: int, quiet: bool, write_decks: bool,
           units: str) -> None:
     """Run DECK for many values of one or more parameters (Ball's parametric studies).
 
@@ -113,7 +116,7 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
     try:
         with _terminate_as_interrupt():
             outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume,
-                                    no_plots, overlay_max, quiet, units, write_decks)
+                                    no_plots, overlay_max, quiet, units, write_decks, force)
     except CamtrainError as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(exc.exit_code)
@@ -121,6 +124,8 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
         click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
                    err=True)
         sys.exit(143 if isinstance(exc, Terminated) else 130)
+    for note in outcome.notes:
+        click.echo(f"note: {note}", err=True)
     if not quiet:
         counts = ", ".join(f"{outcome.count(s)} {s}" for s in ("ok", "lost_contact", "failed",
                                                               "error") if outcome.count(s))
@@ -167,7 +172,7 @@ def _terminate_as_interrupt():
 
 
 def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,
-         units="deck", write_decks=False):
+         units="deck", write_decks=False, force=False):
     from pathlib import Path
 
     from camtrain.errors import CamtrainError
@@ -186,7 +191,7 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
     out_dir = Path(out) if out else Path("out") / f"{stem}_sweep"
     if quiet:
         return run_sweep(sweep_def, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
-                         plots=not no_plots, overlay_max=overlay_max,
+                         force=force, plots=not no_plots, overlay_max=overlay_max,
                          write_decks=write_decks), out_dir
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
@@ -210,6 +215,6 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
                 shown[0] = time.monotonic()
 
         outcome = run_sweep(sweep_def, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
-                            plots=not no_plots, overlay_max=overlay_max, progress=progress,
+                            force=force, plots=not no_plots, overlay_max=overlay_max, progress=progress,
                             write_decks=write_decks)
     return outcome, out_dir

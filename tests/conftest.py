@@ -43,8 +43,17 @@ def pytest_configure(config):
         config.addinivalue_line("markers", f"{tier}: validation tier (tests/tiers.py)")
 
 
+def pytest_addoption(parser):
+    parser.addoption("--reverse", action="store_true", default=False,
+                     help="Run the collected tests in reverse order (a test that passes only "
+                          "after another has run shows up; `make test-reverse`).")
+
+
 def pytest_collection_modifyitems(config, items):
-    """Every test gets the marker of its validation tier (tests/tiers.py)."""
+    """Every test gets the marker of its validation tier (tests/tiers.py); --reverse runs them
+    last to first."""
+    if config.getoption("--reverse"):
+        items.reverse()
     for item in items:
         nodeid = item.nodeid if item.nodeid.startswith("tests/") else "tests/" + item.nodeid
         own = {m.name for m in item.iter_markers()}

@@ -107,7 +107,8 @@ def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, ome
         raise ConvergenceError(
             f"steady finite locus: a load of {float(np.max(np.hypot(fx, fy))):.6g} N needs "
             f"eps > {eps_t[-1]:g}, beyond the finite curve (film below "
-            f"{100 * (1 - eps_t[-1]):g} % of the clearance); check the load units")
+            f"{100 * (1 - eps_t[-1]):g} % of the clearance); set the film model to short "
+            "(closed form) or check the load and its units")
     lf = np.log(np.maximum(target, 1e-300))
     gap = np.exp(np.interp(lf, np.log(force_t[1:]), np.log(1.0 - eps_t[1:]),
                            left=math.log(1.0 - eps_t[1])))

@@ -197,7 +197,9 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
     if status == K.OFF_MAP:
         raise ConvergenceError(
             f"journal orbit left the mobility map at t = {t_fail:.6g} s: eps = {e_fail:.6f} "
-            f"> {mobility.eps[-1]:.6f}, the map's largest eccentricity; extend the map")
+            f"> {mobility.eps[-1]:.6f}, the largest eccentricity of the finite film's map; "
+            "set the film model to short (closed-form mobility, no map) or check the load "
+            "and its units")
     if status == K.NOT_PERIODIC and cycles < max_cycles:
         raise ConvergenceError(
             f"journal orbit not periodic: the cycle-to-cycle change stopped falling at "

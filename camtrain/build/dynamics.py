@@ -175,7 +175,38 @@ def setup(deck, kin, *, stiffness_scale: float = 1.0, omega: float | None = None
               period_tol=d.period_tol, rtol=d.rtol, atol=d.atol, max_step=d.max_step,
               stability_factor=d.stability_factor)
     kw.update(overrides or {})
+    _check_step_count(deck, base, kin.theta.size * int(kw["substeps"]))
     return DynamicSetup(model, cam, base, Settings(**kw), lash_of(deck), pushrod_ratio(deck))
+
+
+#: Most time steps per camshaft revolution a fixed-step march may take. The shipped decks take
+#: about 10^4; each step keeps about a dozen float64 values of every node, so this bound keeps a
+#: run's arrays to a few hundred MB instead of letting a very low speed (or a huge
+#: ``steps_per_degree``) ask for gigabytes.
+MAX_STEPS_PER_REVOLUTION = 2_000_000
+
+
+def _check_step_count(deck, base: TimeBase, steps: int) -> None:
+    """Refuse a march whose step count per revolution exceeds the bound, naming the knobs."""
+    if steps <= MAX_STEPS_PER_REVOLUTION:
+        return
+    from camtrain.errors import field_error
+    from camtrain.units import from_si
+
+    d = deck.dynamics
+    rpm = from_si(2.0 * math.pi / base.period, "rpm")
+    if d.steps_per_degree is not None:
+        field, value = "dynamics.steps_per_degree", d.steps_per_degree
+        hint = "fewer steps per degree"
+    else:
+        field, value = "speed.camshaft", f"{rpm:.6g} rpm"
+        hint = ("a higher camshaft speed (the step follows the train's shortest natural "
+                "period, so a slow revolution takes proportionally more steps), or "
+                "dynamics.steps_per_degree to fix the step count, or dynamics.steps_per_period "
+                "lower")
+    raise field_error(field, f"the dynamic march would take {steps:.3g} time steps per "
+                      f"camshaft revolution at {rpm:.6g} rpm, more than its bound of "
+                      f"{MAX_STEPS_PER_REVOLUTION:.3g}", value, hint)
 
 
 def rigid_load(deck, kin, omega: float | None = None):

@@ -55,7 +55,8 @@ def read_text(path: str) -> tuple[str, str]:
     if b"\x00" in data:
         raise InputError(Problem("", f"{name} is a binary file, not a TOML deck"))
     try:
-        text = data.decode("utf-8")
+        # utf-8-sig: a byte-order mark (some Windows editors write one) is read, not parsed
+        text = data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise InputError(Problem("", f"{name} is not UTF-8 text (byte {exc.start})")) from None
     return name, text

@@ -46,7 +46,8 @@ class Dynamics:
         default=None, gt=0, applies="finger, rocker, pushrod")
     stem_stiffness: float | None = quantity(
         "Valve stem (and bucket) stiffness between the follower and the valve head; omit for "
-        "rigid", "N/mm", default=None, gt=0, example=2.0e4)
+        "rigid (with follower_mass > 0 a stem, rocker or push-rod stiffness is required)",
+        "N/mm", default=None, gt=0, example=2.0e4)
     seat_stiffness: float = quantity(
         "Valve seat stiffness (unilateral: the valve rests on it with the spring preload)",
         "N/mm", gt=0, example=2.0e5)
@@ -127,6 +128,12 @@ class Dynamics:
             out.append(Problem(f"{path}.link_damping", "needs a follower node (without one the "
                                "link is in series with the contact: use contact_damping)",
                                self.link_damping, "no value, or follower_mass > 0"))
+        if self.follower_mass > 0 and all(k is None for k in (
+                self.stem_stiffness, self.rocker_stiffness, self.pushrod_stiffness)):
+            out.append(Problem(f"{path}.stem_stiffness", "is required with follower_mass > 0 "
+                               "(the follower node needs a spring to the valve node)", None,
+                               "the stem stiffness in N/mm (or rocker_stiffness, "
+                               "pushrod_stiffness), or follower_mass = 0 for one node"))
         if self.spring_elements > 0 and self.spring_mass is None:
             out.append(Problem(f"{path}.spring_mass", "is required with spring_elements > 0",
                                None, "the spring's mass in kg"))

@@ -3,7 +3,9 @@ includes by path, the accessories and how the bearing column is taken. Part of t
 schema."""
 from __future__ import annotations
 
+from contextvars import ContextVar
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Literal
 
 from camtrain.deck.fields import option, quantity, section
@@ -44,11 +46,35 @@ class FlameSection:
         "grooved and ungrooved totals, as FLAME)", default="dynamic")
 
 
+#: the chain of decks being resolved in this thread (outermost first): an included deck that is
+#: already on it would include itself again without end
+_including: ContextVar[tuple[Path, ...]] = ContextVar("camtrain_including", default=())
+
+#: most levels of decks including decks (a valve-train deck includes none; more is a mistake)
+MAX_INCLUDE_DEPTH = 8
+
+
+def _include_problem(path: str, p: Path, chain: tuple[Path, ...], given: str):
+    """A Problem when including ``p`` would close a cycle or nest too deep, else None."""
+    from camtrain.errors import Problem
+
+    target = p.resolve()
+    if target in chain:
+        loop = chain[chain.index(target):] + (target,)
+        return Problem(path, "includes a deck that is already being read (an include cycle: "
+                       + " -> ".join(str(q) for q in loop) + ")", given,
+                       "a valve-train deck that includes no deck of this chain")
+    if len(chain) >= MAX_INCLUDE_DEPTH:
+        return Problem(path, f"nests decks more than {MAX_INCLUDE_DEPTH} deep ("
+                       + " -> ".join(str(q) for q in chain + (target,)) + ")", given,
+                       "a valve-train deck (which includes no other deck)")
+    return None
+
+
 def resolve_valve_trains(flame: FlameSection | None, base_dir, source: str):
     """The flame section with every included deck path made absolute, each included deck
     checked to exist and to validate as a valve-train deck (problems name the include)."""
     import dataclasses
-    from pathlib import Path
 
     from camtrain.deck.schema import Deck
     from camtrain.errors import InputError, Problem
@@ -66,12 +92,21 @@ def resolve_valve_trains(flame: FlameSection | None, base_dir, source: str):
             problems.append(Problem(path, "file not found", vt.deck,
                                     "a valve-train deck (path relative to the engine deck)"))
             continue
+        chain = _including.get() or ((Path(source).resolve(),) if Path(source).is_file()
+                                     else ())
+        cycle = _include_problem(path, p, chain, vt.deck)
+        if cycle is not None:
+            problems.append(cycle)
+            continue
+        token = _including.set(chain + (p.resolve(),))
         try:
             model = load_deck(str(p)).model
         except InputError as exc:
             problems.append(Problem(path, "the included deck is invalid: "
                                     + "; ".join(q.render() for q in exc.problems), vt.deck))
             continue
+        finally:
+            _including.reset(token)
         if not isinstance(model, Deck):
             problems.append(Problem(path, "is not a valve-train deck", vt.deck,
                                     "a deck of kind valve_train"))

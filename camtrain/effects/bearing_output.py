@@ -91,15 +91,17 @@ BEARING_DECK_TERMS = {
     "(omega_j + omega_b)/2": "the mean of speed.journal and speed.bearing",
     "period_tol": "solver.period_tolerance", "max_cycles": "solver.max_cycles",
     "loosen tol": "loosen solver.step_tolerance",
+    "the film model": "solver.model",
 }
 #: ... and as the [camshaft] section of a valve-train deck names them
 CAMSHAFT_DECK_TERMS = {
     "omega": "speed", "angle_rate": "speed", "(omega_j + omega_b)/2": "the camshaft speed",
     "period_tol": "camshaft.bearing_tolerance", "max_cycles": "camshaft.max_cycles",
     "loosen tol": "loosen camshaft.bearing_tolerance",
+    "the film model": "camshaft.bearing_model",
 }
 #: symbols replaced inside messages (the others are only ever a problem's path)
-_IN_TEXT = ("(omega_j + omega_b)/2", "period_tol", "max_cycles", "loosen tol")
+_IN_TEXT = ("(omega_j + omega_b)/2", "period_tol", "max_cycles", "loosen tol", "the film model")
 
 
 def _in_deck_terms(text: str, terms: dict[str, str]) -> str:

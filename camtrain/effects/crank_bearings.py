@@ -48,8 +48,10 @@ def run(deck, inputs, result):
         res = solve_crank_bearings(loads, build.bearing(deck, "big_end"),
                                    build.bearing(deck, "main"), build.solver_options(deck))
     except ConvergenceError as exc:
-        raise ConvergenceError(f"crank bearings: {exc} (raise solver.max_cycles or "
-                               "solver.period_tolerance)") from None
+        text = str(exc).replace("the film model", "solver.bearing_model")
+        knobs = "" if "bearing_model" in text else (" (raise solver.max_cycles or "
+                                                    "solver.period_tolerance)")
+        raise ConvergenceError(f"crank bearings: {text}{knobs}") from None
     for b in res.bearings:
         add_bearing(result, b)
     for method, what in (("dynamic", "mobility orbits"), ("steady", "steady-load locus"),

@@ -49,8 +49,16 @@ def decimal_quantum(values_in_unit: np.ndarray, max_decimals: int = 9) -> float:
     return 0.0
 
 
-def read_lift_csv(text: str, path: str = "lift.table.file") -> LiftTable:
-    """Parse the CSV layout above (``text`` is the file content)."""
+#: Largest lift-table file read (the same bound as a deck): a table at 0.01 deg steps is about
+#: 1 MB, so anything near this is not a lift table, and reading it would only cost time.
+MAX_TABLE_BYTES = 20 * 1024 * 1024
+
+
+def read_lift_csv(text: str, path: str = "lift.table.file", name: str = "") -> LiftTable:
+    """Parse the CSV layout above (``text`` is the file content, ``name`` the file's name for
+    messages). A message names the file and the line, never the line's content: a table path
+    may point at a file that holds secrets."""
+    where = f"{name}, " if name else ""
     notes, rows, header = [], [], None
     for n, line in enumerate(text.splitlines(), start=1):
         line = line.strip()
@@ -63,15 +71,17 @@ def read_lift_csv(text: str, path: str = "lift.table.file") -> LiftTable:
         if header is None:
             header = cells
             if (len(cells) != 2 or cells[0] not in _ANGLE_UNITS or cells[1] not in _LIFT_UNITS):
-                raise chk.fail(path, f"line {n} is not a valid header", line,
+                raise chk.fail(path, f"{where}line {n} is not a valid header", None,
                                "angle_deg|angle_rad , lift_mm|lift_m")
             continue
         if len(cells) != 2:
-            raise chk.fail(path, f"line {n} does not have two columns", line)
+            raise chk.fail(path, f"{where}line {n} does not have two columns", None,
+                           "angle, lift")
         try:
             rows.append([float(c) for c in cells])
         except ValueError:
-            raise chk.fail(path, f"line {n} is not a pair of numbers", line) from None
+            raise chk.fail(path, f"{where}line {n} is not a pair of numbers", None,
+                           "angle, lift") from None
     if header is None or not rows:
         raise chk.fail(path, "contains no lift table", None, "a header line and data lines")
     data = np.array(rows)
@@ -91,8 +101,20 @@ def load_dataset(name: str) -> LiftTable:
 
 def load_csv(file: str | Path, path: str = "lift.table.file") -> LiftTable:
     """A lift table from a CSV file on disk."""
+    name = Path(file).name
     try:
-        text = Path(file).read_text("utf-8")
+        with Path(file).open("rb") as fh:
+            data = fh.read(MAX_TABLE_BYTES + 1)
     except OSError as exc:
         raise chk.fail(path, "cannot be read", str(file), hint=str(exc.strerror)) from None
-    return read_lift_csv(text, path)
+    if len(data) > MAX_TABLE_BYTES:
+        raise chk.fail(path, f"{name} is larger than {MAX_TABLE_BYTES // 2**20} MiB", str(file),
+                       "a lift table (a small CSV text file)")
+    if b"\x00" in data:
+        raise chk.fail(path, f"{name} is a binary file", str(file), "a CSV text file")
+    try:
+        text = data.decode("utf-8-sig")   # a byte-order mark (some editors write one) is read
+    except UnicodeDecodeError as exc:
+        raise chk.fail(path, f"{name} is not UTF-8 text (byte {exc.start})", str(file),
+                       "a CSV text file") from None
+    return read_lift_csv(text, path, name)

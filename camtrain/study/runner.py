@@ -33,6 +33,8 @@ class Sweep:
     cases: list[Case]
     zipped: bool = False
     units: str = "deck"     # of sweep.csv, the curves and trends: "deck" or "si"
+    #: {path: sha256} of every other file the deck reads (lift table, included decks)
+    inputs: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -45,6 +47,8 @@ class Outcome:
     trends: list = field(default_factory=list)
     #: how the cases ran (:class:`camtrain.study.batch.Route`; None when none had to run)
     route: object = None
+    #: what the sweep wants its user to know (e.g. why finished cases were run again)
+    notes: list[str] = field(default_factory=list)
 
     def count(self, status: str) -> int:
         return sum(r["status"] == status for r in self.records)
@@ -58,6 +62,7 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str]
     Bad arguments raise InputError naming the option and value; the datum deck (with the
     ``sets`` applied) must itself be valid.
     """
+    from camtrain.deck.inputs import input_digests
     from camtrain.deck.load import load_deck, parse_toml, validate
 
     loaded = load_deck(str(deck))
@@ -65,11 +70,10 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str]
     base_dir = str(Path(deck).resolve().parent) if str(deck) != "-" else str(Path.cwd())
     fixed = [parse_assignment(raw, s) for s in sets]
     raw = apply_fixed(raw, fixed)
-    if fixed:
-        validate(raw, loaded.path, Path(base_dir))
+    model = validate(raw, loaded.path, Path(base_dir)) if fixed else loaded.model
     params = build_parameters(raw, list(specs))
     return Sweep(raw, loaded.path, base_dir, loaded.sha256, params, fixed,
-                 cases(params, zipped), zipped, units)
+                 cases(params, zipped), zipped, units, input_digests(model))
 
 
 def kept_indices(n: int, most: int) -> set[int]:
@@ -85,20 +89,23 @@ def _manifest(sweep: Sweep) -> dict:
     from camtrain import __version__
 
     return {"camtrain_version": __version__, "deck": sweep.name, "deck_sha256": sweep.sha256,
-            "zip": sweep.zipped, "cases": len(sweep.cases), "units": sweep.units,
+            "inputs_sha256": sweep.inputs, "zip": sweep.zipped, "cases": len(sweep.cases),
+            "units": sweep.units,
             "set": {p.path: p.values[0] for p in sweep.fixed},
             "parameters": [{"name": p.name, "path": p.path, "unit": p.unit, "datum": p.datum,
                             "values": list(p.values)} for p in sweep.params]}
 
 
-def _check_resume(out_dir: Path, sweep: Sweep) -> None:
+def _check_resume(out_dir: Path, sweep: Sweep) -> list[str]:
+    """Refuse a resume whose sweep is not the one in ``out_dir``; return the files the deck reads
+    whose content changed since (every finished case is then stale)."""
     path = out_dir / "sweep.json"
     if not path.is_file():
-        return
+        return []
     try:
         old = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
-        return
+        return []
     if old.get("units", "si") != sweep.units:
         raise InputError(Problem("--units", f"the sweep in {out_dir} wrote its tables in "
                                  f"{old.get('units', 'si')} units", sweep.units,
@@ -126,26 +133,52 @@ def _check_resume(out_dir: Path, sweep: Sweep) -> None:
             "the same --param/--set/--zip options",
             "its finished cases were computed with the old definition; start a new sweep "
             "(without --resume) or use another --out"))
+    was_read = old.get("inputs_sha256")
+    if was_read is None:    # a sweep from before camtrain recorded them: assume they changed
+        return sorted(sweep.inputs)
+    return sorted(set(sweep.inputs) ^ set(was_read)
+                  | {p for p in sweep.inputs if was_read.get(p) != sweep.inputs[p]})
 
 
-def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, scheduler=None,
-              executor=None, resume: bool = False, plots: bool = True, overlay_max: int = 20,
-              progress: Callable[[dict, int, int], None] | None = None,
-              write_decks: bool = False) -> Outcome:
+def run_sweep(sweep: Sweep, out_dir: str | Path, *, force: bool = False, resume: bool = False,
+              **options) -> Outcome:
+    """Run every case not already finished in ``out_dir`` and write all outputs (options: see
+    :func:`_run_sweep`). One process at a time writes ``out_dir`` (a lock; a second is refused).
+    A directory that holds a sweep already is continued with ``resume`` (its finished cases
+    are kept unless a file the deck reads changed) or replaced with ``force``; otherwise
+    refused."""
+    from camtrain.output_lock import output_lock
+
+    with output_lock(Path(out_dir)):
+        if not (resume or force) and (Path(out_dir) / "sweep.json").exists():
+            raise InputError(Problem("--out", "holds a sweep already", str(out_dir),
+                                     "a new directory",
+                                     "Give --resume to continue it, --force to replace it, or "
+                                     "another --out"))
+        return _run_sweep(sweep, Path(out_dir), resume=resume, **options)
+
+
+def _run_sweep(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=None,
+               executor=None, resume: bool = False, plots: bool = True, overlay_max: int = 20,
+               progress: Callable[[dict, int, int], None] | None = None,
+               write_decks: bool = False) -> Outcome:
     """Run every case not already finished in ``out_dir`` and write all outputs;
     ``write_decks`` also writes each case's deck as ``decks/case_NNNNN.toml``.
 
     ``progress(record, done, total)`` is called as each case finishes (also for reused ones).
     """
-    out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     csv_path = out_dir / "sweep.csv"
     keep = kept_indices(len(sweep.cases), overlay_max)
     done: dict[int, dict] = {}
-    if resume:
-        _check_resume(out_dir, sweep)
+    notes: list[str] = []
+    stale = _check_resume(out_dir, sweep) if resume else []
+    if resume and not stale:
         done = so.read_finished(csv_path, sweep.params, sweep.cases, sweep.units)
     else:
+        if stale:
+            notes.append("every case runs again: a file the deck reads changed since the "
+                         "finished cases ran (" + ", ".join(stale) + ")")
         for stale in (out_dir / "curves").glob("case_*.csv"):
             stale.unlink()
     reused = len(done)
@@ -202,7 +235,8 @@ def run_sweep(sweep: Sweep, out_dir: str | Path, *, jobs: int | None = 1, schedu
         if own:
             executor.close()
     records = sorted(done.values(), key=lambda r: r["index"])
-    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused, route=route)
+    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused, route=route,
+                      notes=notes)
     outcome.written += _write_trends(out_dir, sweep, outcome)
     from camtrain.study.flame_table import write_flame
 

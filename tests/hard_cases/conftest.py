@@ -20,8 +20,11 @@ def variant(text: str, *swaps: tuple[str, str]) -> str:
 
 
 def run_strict(text: str):
-    """Run deck text with every numpy floating-point warning raised as an error."""
-    with np.errstate(all="raise"):
+    """Run deck text with numpy's overflow, invalid-operation and division warnings raised as
+    errors. Underflow is not: a value rounding to zero below ~1e-308 is harmless and routine
+    inside library solvers (scipy's B-spline QR rotations underflow on a lift table), so
+    raising it made these tests pass or fail with what an earlier test had cached."""
+    with np.errstate(all="raise", under="ignore"):
         return api.run(api.loads(text))
 
 

@@ -1,0 +1,71 @@
+"""A one-line notice when camtrain compiles its numerical kernels in this process.
+
+The numba kernels (journal orbits, the elastic valve train, the coupled camshaft) are compiled
+on first use and cached on disk (``cache=True``); a run that finds the cache is fast (the
+coupled camshaft deck: about 6 s of CPU), one that does not first spends 30-70 s of CPU
+compiling: after an install, an upgrade, or any change of a kernel's source file. Without a word
+that looks like a hang, so :func:`watch` prints once, when numba actually compiles (a kernel
+loaded from the cache says nothing).
+
+numba is imported only by decks that use a kernel, so the listener is installed when numba is
+first imported (an import hook), never by importing numba here.
+"""
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from importlib.abc import MetaPathFinder
+from importlib.machinery import PathFinder
+
+NOTICE = ("note: compiling camtrain's numerical kernels (first use after an install or an "
+          "upgrade: up to about a minute, once; later runs load them from the cache)")
+
+_said = [False]
+
+
+def _listen(say: Callable[[str], None]) -> None:
+    from numba.core import event
+
+    class _Compiling(event.Listener):
+        def on_start(self, ev):
+            if not _said[0]:
+                _said[0] = True
+                say(NOTICE)
+
+        def on_end(self, ev):
+            pass
+
+    event.register("numba:compile", _Compiling())
+
+
+class _OnNumbaImport(MetaPathFinder):
+    """Finds nothing itself; wraps numba's loader so the listener is installed once numba is."""
+
+    def __init__(self, say):
+        self.say = say
+
+    def find_spec(self, name, path=None, target=None):
+        if name != "numba":
+            return None
+        sys.meta_path.remove(self)
+        spec = PathFinder.find_spec(name, path)
+        if spec is None or spec.loader is None:
+            return spec
+        run_module, say = spec.loader.exec_module, self.say
+
+        def exec_module(module):
+            run_module(module)
+            _listen(say)
+
+        spec.loader.exec_module = exec_module
+        return spec
+
+
+def watch(say: Callable[[str], None]) -> None:
+    """Call ``say(NOTICE)`` the first time numba compiles a kernel in this process."""
+    if _said[0]:
+        return
+    if "numba" in sys.modules:
+        _listen(say)
+    elif not any(isinstance(f, _OnNumbaImport) for f in sys.meta_path):
+        sys.meta_path.insert(0, _OnNumbaImport(say))
