@@ -49,10 +49,10 @@ RING_GAS_K = 2.38e-2
 
 #: (C_ff flat follower, C_rf roller follower, C_oh oscillating hydrodynamic, C_om oscillating
 #: mixed) per valve-train layout (PNH 1989; Sandoval 2002 Table 4.2 as transcribed).
-#: The OHV roller constant is printed "0.5" in the public copies: 20 to 100 times the other
-#: roller constants and it would make a roller OHV train lose more than a flat one at every
-#: speed above 100 rev/min; a suspected misprint, so it is left undefined (a deck asking for it
-#: gets a message, not a number).
+#: The OHV roller constant is printed "0.5" in the public copies: 22 to 100 times the other
+#: roller constants (0.005-0.0227), and it would make a roller OHV train lose more than a flat
+#: one at every speed above about 1400 rev/min (0.5 N = 400 (1 + 1000/N)); a suspected
+#: misprint, so it is left undefined (a deck asking for it gets a message, not a number).
 VALVE_TRAIN_CONSTANTS = {
     "sohc_finger": (600.0, 0.0227, 0.2, 42.8),
     "sohc_rocker": (400.0, 0.0151, 0.5, 21.4),
