@@ -43,6 +43,11 @@ UNITS: dict[str, tuple[float, str]] = {
     "J/(kg·K)": (1.0, "J/(kg*K)"),
     "kW": (1e3, "W"),
     "kPa": (1e3, "Pa"),
+    "bar": (1e5, "Pa"),
+    "m/s": (1.0, "m/s"),
+    "mm²/s": (1e-6, "m^2/s"),  # kinematic viscosity; 1 mm²/s = 1 cSt
+    "bar·s/m": (1e5, "Pa*s/m"),  # Chen-Flynn piston-speed coefficient
+    "bar·s²/m²": (1e5, "Pa*s^2/m^2"),
 }
 
 

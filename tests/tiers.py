@@ -31,6 +31,7 @@ FILES = {
     "tests/tribology/test_pinto_valve_dataset.py": "literature",
     "tests/test_decks_kinematics.py": "literature",
     "tests/formulas/test_formulas_anchors.py": "derived",
+    "tests/formulas/test_engine_friction.py": "derived",
     "tests/numerics/test_roots.py": "derived",
     "tests/formulas/test_formulas_cross.py": "derived",
     "tests/formulas/test_formulas_zeta_cycle.py": "derived",

@@ -49,8 +49,9 @@ def unit_advice(deck) -> list[str]:
 
 
 def engine_advisories(deck) -> list[str]:
-    out = unit_advice(deck)
-    for name in ("big_end", "main"):
+    e = deck.engine
+    out = unit_advice(deck) if None not in (e.piston_mass, e.rod_mass) else []
+    for name in ("big_end", "main") if deck.bearings is not None else ():
         b = getattr(deck.bearings, name)
         land = (b.length - b.groove_width) / (2.0 if b.grooving != "none" else 1.0)
         ratio = land / b.diameter
@@ -66,8 +67,7 @@ def engine_advisories(deck) -> list[str]:
     if deck.solver.mobility_factor == "yang1992_program":
         out.append("solver.mobility_factor = yang1992_program: the mobility is halved to match "
                    "Yang's printed films (not the physics; docs/engine.md)")
-    e = deck.engine
-    if e.rod_length / e.crank_radius < 2.5:
+    if e.rod_length is not None and e.rod_length / e.crank_radius < 2.5:
         out.append(f"engine.rod_length: L/R = {e.rod_length / e.crank_radius:.3g} is unusually "
                    f"short ({from_si(e.rod_length, 'mm'):g} mm)")
     return out

@@ -18,7 +18,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 from camtrain.deck.engine_units import MOMENT_UNITS, PRESSURE_UNITS
-from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.fields import When, option, quantity, section
+from camtrain.deck.schema_correlations import CorrelationsSection, LoadSection, OilSection
 from camtrain.deck.schema_engine_bearings import EngineBearingsSection, EngineSolver
 from camtrain.deck.schema_flame import FlameSection
 from camtrain.deck.schema_piston import PistonSection
@@ -51,15 +52,17 @@ class CrankTrainSection:
     bore: float = quantity("Cylinder bore D", "mm", gt=0, example=260.35)
     crank_radius: float = quantity("Crank radius R (half the stroke)", "mm", gt=0,
                                    example=184.15)
-    rod_length: float = quantity("Connecting-rod length L between centres", "mm", gt=0,
-                                 example=782.32)
-    piston_mass: float = quantity("Piston-assembly mass m_p (piston, pin, rings)", "kg", ge=0,
-                                  example=82.07)
-    rod_mass: float = quantity("Connecting-rod mass m_c (1/3 reciprocates, 2/3 rotates)", "kg",
-                               ge=0, example=81.62)
-    bay_lengths: tuple[float, ...] = quantity(
+    rod_length: float | None = quantity(
+        "Connecting-rod length L between centres (a bare engine deck with [correlations] may "
+        "leave it and the masses and bays out)", "mm", default=None, gt=0, example=782.32)
+    piston_mass: float | None = quantity("Piston-assembly mass m_p (piston, pin, rings)", "kg",
+                                         default=None, ge=0, example=82.07)
+    rod_mass: float | None = quantity(
+        "Connecting-rod mass m_c (1/3 reciprocates, 2/3 rotates)", "kg", default=None, ge=0,
+        example=81.62)
+    bay_lengths: tuple[float, ...] | None = quantity(
         "Length of each bay between two mains, front to rear (n bays -> n + 1 mains)", "mm",
-        gt=0, min_items=1, example=[444.5, 444.5])
+        default=None, gt=0, min_items=1, example=[444.5, 444.5])
     flywheel_mass: float = quantity("Flywheel mass; its weight acts on the last main", "kg",
                                     default=0.0, ge=0)
 
@@ -158,19 +161,25 @@ class PressureTableSection:
 class EngineDeck:
     """A whole-engine deck: the crank train and its crankshaft bearings."""
 
+    #: without [correlations] the crank train is required (a bare engine deck has only what
+    #: the correlations need)
+    schema_rules = (When("correlations", (None,), require=("cylinders", "pressure",
+                                                          "bearings")),)
+
     kind: Literal["engine"] = option("Deck kind: engine", example="engine")
     title: str = option("Name of the engine case", example="Ruston 6VEB-X Mk III big-end")
     speed: EngineSpeed = section("Engine speed of this run", required=True)
     engine: CrankTrainSection = section("Crank train: geometry, masses, bays, flywheel",
                                         required=True)
-    cylinders: tuple[CylinderSection, ...] = section("Cylinders ([[cylinders]], one per "
-                                                     "cylinder)", required=True)
+    cylinders: tuple[CylinderSection, ...] = section(
+        "Cylinders ([[cylinders]], one per cylinder; a bare engine deck gives "
+        "correlations.cylinders instead)", default=())
     crank_components: tuple[CrankComponentSection, ...] = section(
         "Crank webs, pins and counterweights with out-of-balance moments", default=())
     pressure: tuple[PressureTableSection, ...] = section(
         "Cylinder-pressure tables ([[pressure]]); the run uses the one listing its speed",
-        required=True)
-    bearings: EngineBearingsSection = section("Big-end and main bearings", required=True)
+        default=())
+    bearings: EngineBearingsSection | None = section("Big-end and main bearings")
     solver: EngineSolver = section("Models and resolution of the crank-bearing calculation",
                                    default=EngineSolver())
     piston: PistonSection | None = section(
@@ -179,6 +188,14 @@ class EngineDeck:
     flame: FlameSection | None = section(
         "Engine friction total by component: valve-train decks included by path, accessories "
         "(schema_flame)")
+    correlations: CorrelationsSection | None = section(
+        "Friction correlations beside FLAME, or alone on a bare engine deck: PNH 1989, "
+        "Sandoval-Heywood 2003, Chen-Flynn (schema_correlations)")
+    oil: OilSection | None = section("Engine oil: grade or viscosity, temperature "
+                                     "(schema_correlations)")
+    load: LoadSection | None = section(
+        "Engine load: the pressure diagram scaled to a peak pressure or an IMEP "
+        "(schema_correlations)")
 
     #: what the report's title line says after the run speed
     speed_label = "rpm engine"
@@ -208,9 +225,11 @@ class EngineDeck:
                                                                     source))
 
     def problems(self, path: str) -> list[Problem]:
-        out = []
+        from camtrain.deck.schema_correlations import bare_engine_problems
+
+        out = bare_engine_problems(self)
         e = self.engine
-        nb = len(e.bay_lengths)
+        nb = len(e.bay_lengths or ())
         for what, items in (("cylinders", self.cylinders),
                             ("crank_components", self.crank_components)):
             for i, it in enumerate(items):
@@ -221,12 +240,12 @@ class EngineDeck:
                     out.append(Problem(f"{what}[{i}].position", "lies outside its bay",
                                        f"{from_si(it.position, 'mm'):g} mm",
                                        f"0 to {from_si(e.bay_lengths[it.bay - 1], 'mm'):g} mm"))
-        if not self.cylinders:
+        if not self.cylinders and self.correlations is None:
             out.append(Problem("cylinders", "needs at least one cylinder", 0))
         rpm = self.rpm
         hits = [i for i, t in enumerate(self.pressure) if t.applies_to(self.speed.omega)]
         listed = sorted({from_si(s, "rpm") for t in self.pressure for s in t.speeds})
-        if not hits:
+        if self.pressure and not hits:
             out.append(Problem("pressure", "no table for the run speed", f"{rpm:g} rpm",
                                "a [[pressure]] table with this speed in `speeds` (tables for "
                                + ", ".join(f"{s:g}" for s in listed) + " rpm)"))
@@ -240,8 +259,17 @@ class EngineDeck:
                 out.append(Problem(f"pressure[{i}].values", "span a whole cycle or more",
                                    f"{span:g} deg", f"a span < {cycle:g} deg (the table "
                                    "repeats every cycle: do not repeat the first value)"))
-        out += self.bearings.speed_problems(rpm, "bearings")
+        if self.bearings is not None:
+            out += self.bearings.speed_problems(rpm, "bearings")
         return out
+
+    @property
+    def has_crank_train(self) -> bool:
+        """Whether the deck describes the crank train (cylinders, pressure, rod, masses, bays):
+        a bare engine deck for the correlations alone does not."""
+        e = self.engine
+        return bool(self.cylinders and self.pressure) and None not in (
+            e.rod_length, e.piston_mass, e.rod_mass, e.bay_lengths)
 
     def advisories(self) -> list[str]:
         """Warnings `check` and `run` print: values that look like a unit slip, models outside

@@ -55,6 +55,7 @@ PRODUCTS: dict[str, str] = {
     "PistonFriction": "camtrain.piston.product:PistonFriction",
     "ValveTrainFriction": "camtrain.engine.valve_trains:ValveTrainFriction",
     "EngineFriction": "camtrain.engine.flame:EngineFriction",
+    "FrictionCorrelations": "camtrain.engine.correlations:FrictionCorrelations",
 }
 
 VALVE_TRAIN: tuple[EffectSpec, ...] = (
@@ -134,6 +135,11 @@ ENGINE: tuple[EffectSpec, ...] = (
                "shares",
                uses=("EngineBearings", "ValveTrainFriction", "PistonFriction"),
                produces=("EngineFriction",)),
+    EffectSpec("correlations", "camtrain.effects.correlations",
+               "friction correlations: Patton-Nitschke-Heywood 1989 and Sandoval-Heywood 2003 "
+               "term by term, Chen-Flynn with the user's constants (beside FLAME, or alone on "
+               "a bare engine deck)",
+               produces=("FrictionCorrelations",)),
 )
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 
 def missing(deck) -> list[str]:
-    return []
+    return [] if deck.bearings is not None else ["[bearings.big_end] and [bearings.main]"]
 
 
 def reason(deck, planned) -> str:

@@ -10,7 +10,14 @@ from __future__ import annotations
 
 
 def missing(deck) -> list[str]:
-    return []
+    """A bare engine deck (correlations only) leaves the crank train out."""
+    e = deck.engine
+    lack = [name for name, absent in (
+        ("[[cylinders]]", not deck.cylinders), ("[[pressure]]", not deck.pressure),
+        ("engine.rod_length", e.rod_length is None), ("engine.piston_mass", e.piston_mass is None),
+        ("engine.rod_mass", e.rod_mass is None), ("engine.bay_lengths", e.bay_lengths is None))
+        if absent]
+    return lack
 
 
 def reason(deck, planned) -> str:

@@ -35,6 +35,7 @@ def _interp(speeds, values, rpm: float) -> float:
 
 def piston_case(deck):
     """The :class:`~camtrain.piston.cycle.PistonCase` of the deck at its run speed."""
+    from camtrain.build.oil import flame_oil_factor
     from camtrain.piston.cycle import CompressionRing, PistonCase
     from camtrain.piston.ring import Ring
     from camtrain.piston.thermal import ViscosityLaw
@@ -56,7 +57,9 @@ def piston_case(deck):
         bore=e.bore, crank_radius=e.crank_radius, rod_length=e.rod_length, rings=rings,
         radial_clearance=g.radial_clearance, separations=g.separations,
         chamber_temperature=_interp(speeds, t.chamber, rpm), liner_temperatures=liner,
-        viscosity=ViscosityLaw(p.oil.temperatures, p.oil.viscosities, p.oil.law),
+        viscosity=ViscosityLaw(p.oil.temperatures,
+                               tuple(v * flame_oil_factor(deck) for v in p.oil.viscosities),
+                               p.oil.law),
         liner_roughness=p.liner_roughness, volumes=g.volumes, areas=g.orifice_areas,
         k=g.heat_ratio, discharge=g.discharge, gas_constant=g.gas_constant,
         crankcase_pressure=g.crankcase_pressure,
@@ -72,14 +75,9 @@ def piston_case(deck):
 
 def cylinder_pressure(deck):
     """Gauge cylinder pressure [Pa] of the run speed's table as a function of crank angle."""
-    import math
+    from camtrain.build.engine import pressure_table
 
-    from camtrain.engine.pressure import PressureTable
-
-    t = deck.pressure_table()
-    cycle = 2.0 * math.pi * deck.engine.strokes / 2.0
-    table = PressureTable(t.angles, t.pascal, cycle, t.reference == "absolute", t.crankcase_pa,
-                          name="pressure")
+    table = pressure_table(deck)   # the run speed's table, scaled to [load] when given
     how = getattr(getattr(deck, "solver", None), "pressure_interpolation", "periodic_cubic")
     return lambda theta: table(theta, how)
 

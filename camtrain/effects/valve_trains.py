@@ -22,17 +22,21 @@ def run(deck, inputs, result):
     import dataclasses
     from pathlib import Path
 
+    from camtrain.build.oil import flame_oil_factor
     from camtrain.deck.load import load_deck
     from camtrain.engine.valve_trains import ValveTrainFriction, valve_train_parts
     from camtrain.runner import run_plan
     from camtrain.units import from_si
 
     parts, speeds, notes = {}, {}, {}
+    factor = flame_oil_factor(deck)
     for vt in deck.flame.valve_trains:
         model = load_deck(vt.deck).model
         omega = vt.speed_ratio * deck.speed.engine
         model = dataclasses.replace(model, speed=dataclasses.replace(
             model.speed, camshaft=omega, engine=None))
+        if factor != 1.0:   # [oil] moves FLAME's viscosities with the oil temperature
+            model = _with_viscosity_factor(model, factor)
         sub = run_plan(model)
         metrics = {k: m.value for k, m in sub.metrics.items()}
         lobes = None if model.camshaft is None else len(model.camshaft.lobes)
@@ -53,3 +57,18 @@ def run(deck, inputs, result):
     result.add_metric("valve_train_power_total", out.total, "W",
                       "every included valve train: friction power")
     return out
+
+
+def _with_viscosity_factor(model, factor: float):
+    """The valve-train deck with its lubricant viscosity (and the camshaft bearings' own, when
+    given) times ``factor``."""
+    import dataclasses
+
+    lub = model.lubricant
+    model = dataclasses.replace(model, lubricant=dataclasses.replace(
+        lub, viscosity=lub.viscosity * factor))
+    shaft = getattr(model, "camshaft", None)
+    if shaft is not None and shaft.viscosity is not None:
+        model = dataclasses.replace(model, camshaft=dataclasses.replace(
+            shaft, viscosity=shaft.viscosity * factor))
+    return model

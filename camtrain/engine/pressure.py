@@ -15,7 +15,7 @@ import numpy as np
 
 from camtrain.errors import field_error
 
-__all__ = ["PressureTable", "INTERPOLATIONS"]
+__all__ = ["PressureTable", "INTERPOLATIONS", "net_imep", "scaled"]
 
 INTERPOLATIONS = ("periodic_cubic", "linear")
 
@@ -72,3 +72,29 @@ class PressureTable:
             return CubicSpline(xs, ps, bc_type="periodic")(x)
         raise field_error("engine.solver.pressure_interpolation", "unknown interpolation",
                           interpolation, " or ".join(INTERPOLATIONS))
+
+
+def net_imep(table: PressureTable, crank_radius: float, rod_length: float,
+             interpolation: str = "periodic_cubic", step: float = math.radians(0.25)) -> float:
+    r"""Net indicated mean effective pressure [Pa] of a diagram over its cycle,
+    :math:`\oint p\, dV / V_d` with the slider-crank volume (per unit piston area:
+    :math:`dx/d\theta = R \sin\theta\,[1 + R\cos\theta / \sqrt{L^2 - R^2 \sin^2\theta}]`,
+    V_d / A = 2R). A constant pressure integrates to zero, so gauge and absolute tables give
+    the same value. Trapezoidal rule on a periodic grid of ``step`` [rad]."""
+    n = max(8, int(round(table.cycle / step)))
+    th = table.angle[0] + np.arange(n) * (table.cycle / n)
+    s = np.sin(th)
+    dx = crank_radius * s * (1.0 + crank_radius * np.cos(th)
+                             / np.sqrt(rod_length**2 - (crank_radius * s) ** 2))
+    work = np.sum(table(th, interpolation) * dx) * (table.cycle / n)
+    return float(work / (2.0 * crank_radius))
+
+
+def scaled(table: PressureTable, factor: float) -> PressureTable:
+    """The diagram with its gauge pressure multiplied by ``factor`` (an absolute table keeps
+    its crankcase pressure)."""
+    p = table.gauge() * factor
+    if table.absolute:
+        p = p + table.crankcase
+    return PressureTable(table.angle, tuple(float(v) for v in p), table.cycle, table.absolute,
+                         table.crankcase, table.name)

@@ -12,6 +12,9 @@ Modules:
     cycle      torque about the cam axis, friction power, cycle means
     bearings   Petroff, Martin shear power, Ocvirk short bearing
     fmep       Patton-Nitschke-Heywood valvetrain friction mean effective pressure
+    engine_friction  whole-engine correlations term by term: Patton-Nitschke-Heywood 1989,
+               Sandoval-Heywood 2003 (viscosity scaling, oil-grade Vogel fits), Chen-Flynn
+               (imported as a module: ``from camtrain.formulas import engine_friction``)
 
 Every function accepts scalars or numpy arrays (broadcast together) and returns a float for
 scalar input. User-causable bad input raises :class:`camtrain.errors.InputError` via

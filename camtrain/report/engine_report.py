@@ -9,13 +9,17 @@ from camtrain.units import from_si
 
 def engine_header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
     e, s = deck.engine, deck.solver
+    c = deck.correlations
+    cylinders = len(deck.cylinders) if deck.cylinders else c.cylinders
     rows = [("Engine speed (rpm)", f"{deck.rpm:g}"),
-            ("Cylinders / strokes", f"{len(deck.cylinders)} / {e.strokes}"),
+            ("Cylinders / strokes", f"{cylinders} / {e.strokes}"),
             ("Bore / stroke (mm)", f"{from_si(e.bore, 'mm'):g} / "
-                                   f"{from_si(2 * e.crank_radius, 'mm'):g}"),
-            ("Rod length (mm)", f"{from_si(e.rod_length, 'mm'):g}"),
-            ("Piston / rod mass (kg)", f"{e.piston_mass:g} / {e.rod_mass:g}")]
-    for name in ("big_end", "main"):
+                                   f"{from_si(2 * e.crank_radius, 'mm'):g}")]
+    if not deck.has_crank_train:   # a bare engine deck: the correlations alone
+        return rows + [("Crank train", "not described (correlations only)")]
+    rows += [("Rod length (mm)", f"{from_si(e.rod_length, 'mm'):g}"),
+             ("Piston / rod mass (kg)", f"{e.piston_mass:g} / {e.rod_mass:g}")]
+    for name in ("big_end", "main") if deck.bearings is not None else ():
         b = getattr(deck.bearings, name)
         rows.append((f"{name.replace('_', '-').capitalize()} d / b / c (mm)",
                      f"{from_si(b.diameter, 'mm'):g} / {from_si(b.length, 'mm'):g} / "

@@ -241,6 +241,10 @@ def _run_sweep(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=N
     from camtrain.study.flame_table import write_flame
 
     outcome.written += write_flame(out_dir, sweep.params, records, plots=plots, title=sweep.name)
+    from camtrain.study.friction_map import write_sweep_map
+
+    outcome.written += write_sweep_map(out_dir, sweep.params, records, plots=plots,
+                                       title=sweep.name)
     if plots:
         outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends,
                                            title=Path(sweep.name).name)
