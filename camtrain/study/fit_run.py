@@ -138,10 +138,12 @@ def write_deck(datum, f: Fit, path: Path) -> Path:
     for c, v in zip(f.constants, f.value, strict=True):
         set_path(raw, c.param.path, float(v))
     model = validate(raw, datum.name, Path(datum.base_dir))
-    head = (f"calibrated from {datum.name} by camtrain fit to "
-            + ", ".join(d.label for d in f.datasets) + ": "
-            + "; ".join(f"{r['constant']} = {r['value']:.6g} ± {r['half_width']:.3g} "
-                        f"{r['unit']}" for r in f.rows()))
+    head = "\n".join([f"calibrated from {datum.name} by camtrain fit to "
+                      + ", ".join(d.label for d in f.datasets) + ":"]
+                     + [f"  {r['path']} = {r['value']:.6g} {r['unit']} "
+                        + (f"± {r['half_width']:.3g} ({100 * f.confidence:g} %)"
+                           if r["identifiable"] else "(not identifiable from these data)")
+                        for r in f.rows()])
     return save(model, path, header=head)
 
 

@@ -147,3 +147,24 @@ def test_bad_inputs_name_option_and_value(fast_flat, name, kind, text, words):
 def test_sobol_samples_must_be_a_power_of_two(fast_flat):
     with pytest.raises(InputError, match="power of two"):
         prepare(fast_flat, [("viscosity", "uniform", "0.01:0.1")], samples=1000)
+
+
+def test_local_dask_cluster_gives_the_same_indices(fast_flat, tmp_path):
+    distributed = pytest.importorskip("dask.distributed", reason="dask is not installed "
+                                      "(optional extra camtrain[dask])")
+    specs = [(n, "log-uniform", f"{lo:g}:{hi:g}") for n, (lo, hi) in BOUNDS.items()]
+    study = prepare(fast_flat, specs, samples=64, seed=5, metrics=(METRIC, "power_loss_mean"))
+    serial = run_study(study, tmp_path / "serial", plots=False)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster:
+        dask = run_study(study, tmp_path / "dask", scheduler=cluster.scheduler_address,
+                         plots=False)
+    assert dask.route.batch
+    # the same indices; to the last bits only, since the cluster's chunks of the batch are
+    # cut differently, and a chunk whose cases share a value computes with it as a number,
+    # where another chunk computes with a column (numpy's vector and scalar powers may differ
+    # in the last bit)
+    for mine, theirs in zip(dask.indices, serial.indices, strict=True):
+        assert mine.keys() == theirs.keys()
+        for key, value in mine.items():
+            assert value == (pytest.approx(theirs[key], rel=1e-12, abs=1e-15)
+                             if isinstance(value, float) else theirs[key])
