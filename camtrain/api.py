@@ -121,5 +121,39 @@ def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: floa
                      checks=check_limits(result, deck), plots=plots, units=units)
 
 
+def sensitivity(deck: str | Path, inputs, out_dir: str | Path, *, method: str = "sobol",
+                samples: int = 1024, metrics=(), seed: int = 1, sets=(), jobs: int | None = 1,
+                scheduler=None, resume: bool = False, confidence: float = 0.95,
+                plots: bool = True):
+    """Sobol' or Morris indices of a deck's metrics to uncertain inputs (docs/sensitivity.md).
+
+    ``inputs``: [(name, distribution, "A:B")], distribution uniform, log-uniform, normal
+    (MEAN:SD) or relative (-P%:+P%); a number written with % is relative to the deck's value.
+    Returns a report whose ``frame("indices")``, ``frame("convergence")``,
+    ``frame("distribution")`` and ``frame("samples")`` are pandas DataFrames (pandas comes
+    with SALib)."""
+    from camtrain.study.sensitivity import prepare
+    from camtrain.study.sensitivity_run import run_study
+
+    study = prepare(deck, [tuple(i) for i in inputs], method=method, samples=samples,
+                    seed=seed, metrics=tuple(metrics), sets=list(sets))
+    return run_study(study, out_dir, jobs=jobs, scheduler=scheduler, resume=resume,
+                     confidence=confidence, plots=plots)
+
+
+def fit(deck: str | Path, data, constants, out_dir: str | Path, *, sets=(), jobs: int = 1,
+        scheduler=None, confidence: float = 0.95, plots: bool = True):
+    """Calibrate deck constants to measured CSV data (docs/sensitivity.md#calibration).
+
+    ``data``: CSV paths; ``constants``: [(name, "LOW:HIGH")], started from the deck's
+    values. Returns a report whose ``frame("constants")``, ``frame("correlation")``,
+    ``frame("singular")`` and ``frame("residuals")`` are pandas DataFrames; the calibrated
+    deck is written to ``out_dir``/calibrated.toml."""
+    from camtrain.study.fit_run import run_fit
+
+    return run_fit(deck, list(data), [tuple(c) for c in constants], out_dir, sets=list(sets),
+                   jobs=jobs, scheduler=scheduler, confidence=confidence, plots=plots)
+
+
 def _model(deck: LoadedDeck | Deck) -> Deck:
     return deck.model if isinstance(deck, LoadedDeck) else deck

@@ -365,13 +365,17 @@ def _register_study_commands() -> None:
     # the study commands live in their own modules, which import only click at module level
     from camtrain.cli_accuracy import accuracy
     from camtrain.cli_dynamics import dynamics_speed
+    from camtrain.cli_fit import fit
     from camtrain.cli_friction_map import friction_map
+    from camtrain.cli_sensitivity import sensitivity
     from camtrain.cli_sweep import sweep
 
     main.add_command(sweep)
     main.add_command(accuracy)
     main.add_command(dynamics_speed)
     main.add_command(friction_map)
+    main.add_command(sensitivity)
+    main.add_command(fit)
 
 
 _register_study_commands()

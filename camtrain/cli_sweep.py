@@ -13,8 +13,11 @@ import click
 _SPEC_OPTIONS = ("--values", "--range", "--relative")
 
 
-def _pair_specs(args: list[str]) -> list[tuple[str, str, str]]:
-    """Pair each --param with the --values/--range/--relative that follows it, in order.
+def _pair_specs(args: list[str], options: tuple[str, ...] = _SPEC_OPTIONS,
+                hint: str = "--values A,B,C, --range START:STOP:N or --relative -50%:+50%:N"
+                ) -> list[tuple[str, str, str]]:
+    """Pair each --param with the option of ``options`` (--values/--range/--relative) that
+    follows it, in order.
 
     click collects repeated options per option and loses how they interleave, so the raw
     arguments are read once here; click still parses (and documents) the options themselves.
@@ -25,7 +28,7 @@ def _pair_specs(args: list[str]) -> list[tuple[str, str, str]]:
         if arg == "--":
             break
         opt, eq, inline = arg.partition("=")
-        if opt not in ("--param", "-p") + _SPEC_OPTIONS:
+        if opt not in ("--param", "-p") + options:
             continue
         value = inline if eq else next(it, None)
         if value is None:
@@ -42,8 +45,7 @@ def _pair_specs(args: list[str]) -> list[tuple[str, str, str]]:
         out[-1][1], out[-1][2] = kind, value
     for name, kind, _ in out:
         if kind is None:
-            raise click.UsageError(f"--param {name}: give its values with --values A,B,C, "
-                                   "--range START:STOP:N or --relative -50%:+50%:N")
+            raise click.UsageError(f"--param {name}: give its values with {hint}")
     return [(n, k, v) for n, k, v in out]
 
 

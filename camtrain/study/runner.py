@@ -62,6 +62,15 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str]
     Bad arguments raise InputError naming the option and value; the datum deck (with the
     ``sets`` applied) must itself be valid.
     """
+    datum = prepare_datum(deck, sets, units)
+    params = build_parameters(datum.raw, list(specs))
+    return Sweep(datum.raw, datum.name, datum.base_dir, datum.sha256, params, datum.fixed,
+                 cases(params, zipped), zipped, units, datum.inputs)
+
+
+def prepare_datum(deck: str | Path, sets: list[str] = (), units: str = "deck") -> Sweep:
+    """The datum deck of a sweep, read with the ``sets`` applied and validated; no cases yet
+    (the studies built on sweeps draw their own)."""
     from camtrain.deck.inputs import input_digests
     from camtrain.deck.load import load_deck, parse_toml, validate
 
@@ -71,9 +80,8 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], sets: list[str]
     fixed = [parse_assignment(raw, s) for s in sets]
     raw = apply_fixed(raw, fixed)
     model = validate(raw, loaded.path, Path(base_dir)) if fixed else loaded.model
-    params = build_parameters(raw, list(specs))
-    return Sweep(raw, loaded.path, base_dir, loaded.sha256, params, fixed,
-                 cases(params, zipped), zipped, units, input_digests(model))
+    return Sweep(raw, loaded.path, base_dir, loaded.sha256, [], fixed, [], False, units,
+                 input_digests(model))
 
 
 def kept_indices(n: int, most: int) -> set[int]:
@@ -167,9 +175,39 @@ def _run_sweep(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=N
 
     ``progress(record, done, total)`` is called as each case finishes (also for reused ones).
     """
+    out_dir = Path(out_dir)
+    keep = kept_indices(len(sweep.cases), overlay_max)
+    decks = write_case_decks(out_dir, sweep) if write_decks else []
+    outcome = run_cases(sweep, out_dir, jobs=jobs, scheduler=scheduler, executor=executor,
+                        resume=resume, keep=keep, progress=progress)
+    outcome.written += decks
+    records = outcome.records
+    outcome.written += _write_trends(out_dir, sweep, outcome)
+    from camtrain.study.flame_table import write_flame
+
+    outcome.written += write_flame(out_dir, sweep.params, records, plots=plots, title=sweep.name)
+    from camtrain.study.friction_map import write_sweep_map
+
+    outcome.written += write_sweep_map(out_dir, sweep.params, records, plots=plots,
+                                       title=sweep.name)
+    if plots:
+        outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends,
+                                           title=Path(sweep.name).name)
+        kept = [r for r in records if r["index"] in keep]
+        outcome.written += so.overlay_plots(out_dir, sweep.params, kept,
+                                            title=Path(sweep.name).name)
+    return outcome
+
+
+def run_cases(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=None,
+              executor=None, resume: bool = False, keep: set[int] = frozenset(),
+              progress: Callable[[dict, int, int], None] | None = None) -> Outcome:
+    """Run every case not already finished in ``out_dir`` (batch route where it applies, on
+    ``executor`` or one made from ``jobs`` / ``scheduler``) and keep sweep.csv and sweep.json
+    current; the per-angle curves of the cases in ``keep`` go to ``curves/``. The studies
+    built on sweeps (trends and plots here, sensitivity) read the records it returns."""
     out_dir.mkdir(parents=True, exist_ok=True)
     csv_path = out_dir / "sweep.csv"
-    keep = kept_indices(len(sweep.cases), overlay_max)
     done: dict[int, dict] = {}
     notes: list[str] = []
     stale = _check_resume(out_dir, sweep) if resume else []
@@ -191,7 +229,6 @@ def _run_sweep(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=N
         else None
     manifest = _manifest(sweep) | ({"route": route.as_dict()} if route else {})
     atomic_write(out_dir / "sweep.json", json.dumps(manifest, indent=2) + "\n")
-    decks = write_case_decks(out_dir, sweep) if write_decks else []
     total = len(sweep.cases)
     if progress:
         for rec in sorted(done.values(), key=lambda r: r["index"]):
@@ -235,23 +272,7 @@ def _run_sweep(sweep: Sweep, out_dir: Path, *, jobs: int | None = 1, scheduler=N
         if own:
             executor.close()
     records = sorted(done.values(), key=lambda r: r["index"])
-    outcome = Outcome(records, [csv_path, out_dir / "sweep.json", *decks], reused, route=route,
-                      notes=notes)
-    outcome.written += _write_trends(out_dir, sweep, outcome)
-    from camtrain.study.flame_table import write_flame
-
-    outcome.written += write_flame(out_dir, sweep.params, records, plots=plots, title=sweep.name)
-    from camtrain.study.friction_map import write_sweep_map
-
-    outcome.written += write_sweep_map(out_dir, sweep.params, records, plots=plots,
-                                       title=sweep.name)
-    if plots:
-        outcome.written += so.metric_plots(out_dir, sweep.params, records, outcome.trends,
-                                           title=Path(sweep.name).name)
-        kept = [r for r in records if r["index"] in keep]
-        outcome.written += so.overlay_plots(out_dir, sweep.params, kept,
-                                            title=Path(sweep.name).name)
-    return outcome
+    return Outcome(records, [csv_path, out_dir / "sweep.json"], reused, route=route, notes=notes)
 
 
 def _records(executor, fn, work: list, route):
