@@ -6,7 +6,7 @@ Two routes, one result (:class:`FrictionMap`, powers [W] on a (speed, load, temp
   engine deck maps in milliseconds). Load: with a pressure diagram, the deck's [load] measure
   (peak pressure or IMEP) scales the diagram per speed and the intake pressure ratio follows the
   scale; without one (a bare deck) the load axis is the intake pressure ratio p_i/p_a itself
-  and a Chen-Flynn peak pressure scales with it.
+  (Chen-Flynn keeps the deck's peak pressure).
 * :func:`sweep_map`: every point through the sweep machinery (``speed``, ``load.value``,
   ``oil.temperature`` as a cartesian sweep; processes or a Dask scheduler), so FLAME runs at
   each point beside the correlations; the map is read from the sweep's records.
@@ -128,10 +128,8 @@ def correlation_map(deck, speeds, loads, temperatures, measure: str | None = Non
         if diagram:
             peak = np.array([[float(max(pressure_table(_at(deck, s, x)).gauge()))
                               for x in L] for s in S]) + build.ATMOSPHERE
-        else:
-            base = build.peak_pressure(deck)
-            peak = np.broadcast_to(base * L[None, :] / c.intake_pressure_ratio,
-                                   (S.size, L.size))
+        else:   # a bare deck: the deck's peak pressure at every point (as the effect)
+            peak = np.full((S.size, L.size), build.peak_pressure(deck))
         fmep = grid + chen_flynn_fmep(build.chen_flynn_constants(deck), engine, omega,
                                       peak[:, :, None])
         out.fmep["chen_flynn"] = fmep
@@ -306,14 +304,17 @@ def write_map(fmap: FrictionMap, out_dir, *, plots: bool = True, title: str = ""
 
 def write_sweep_map(out_dir, params, records, *, plots: bool = True,
                     title: str = "") -> list[Path]:
-    """The map files of a three-parameter sweep (speed, load, oil temperature, in that order)
-    whose cases carry correlation or FLAME totals; nothing otherwise."""
+    """The map files of a three-parameter sweep (``speed``, ``load.value`` or
+    ``correlations.intake_pressure_ratio``, ``oil.temperature``, in that order) whose cases
+    carry correlation or FLAME totals; nothing otherwise."""
     names = [p.path for p in params]
-    if len(params) != 3 or names[1:] != ["load.value", "oil.temperature"] or not names[0] \
-            .startswith("speed"):
+    loads = {"load.value": "load [bar]",
+             "correlations.intake_pressure_ratio": "intake pressure ratio p_i/p_a [-]"}
+    if len(params) != 3 or names[0] != "speed.engine" or names[1] not in loads \
+            or names[2] != "oil.temperature":
         return []
     if not any(r.get("status") == "ok" and any(k.endswith("_power") or k == "flame_total"
                                                for k in r.get("metrics", {})) for r in records):
         return []
-    fmap = map_from_records(params, records, "load [bar]")
+    fmap = map_from_records(params, records, loads[names[1]])
     return write_map(fmap, out_dir, plots=plots, title=title)
