@@ -283,3 +283,18 @@ def test_sweep_route_writes_the_same_map_as_the_vectorised_one(tmp_path):
     for name in ("pnh1989", "sandoval_heywood2003", "chen_flynn"):
         # records hold the deck's units at print precision (kW to 4+ significant digits)
         assert np.allclose(fmap.totals[name], ref.totals[name], rtol=1e-6), name
+
+
+def test_a_diagram_without_positive_imep_cannot_be_scaled_exit_3():
+    """A motored-looking diagram (constant pressure: no net work) cannot be scaled to an IMEP:
+    a physically impossible request (exit 3), not a number."""
+    from camtrain.build.engine import load_factor
+    from camtrain.errors import GeometryError
+
+    raw = _raw_with_load(8.0)
+    for table in raw["pressure"]:
+        table["values"] = [1.0] * len(table["values"])
+    model = validate(raw, "zeta_engine.toml", DECKS)
+    with pytest.raises(GeometryError, match="load.measure") as err:
+        load_factor(model)
+    assert err.value.exit_code == 3
