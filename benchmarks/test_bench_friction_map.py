@@ -16,7 +16,8 @@ import numpy as np
 from conftest import cpu_seconds, note, paired
 
 from camtrain import api
-from camtrain.study.friction_map import correlation_map, sweep_map
+from camtrain.study.friction_map import correlation_map
+from camtrain.study.friction_sweep import sweep_map
 from tests.conftest import DECKS
 
 SPEEDS = (2000, 3000, 4000, 5000, 6000, 6400, 7000)

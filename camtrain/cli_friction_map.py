@@ -69,7 +69,8 @@ def _run(deck, speeds, loads, temperatures, measure, flame, out, jobs, scheduler
     from camtrain.deck.load import load_deck
     from camtrain.deck.schema_engine import EngineDeck
     from camtrain.errors import field_error
-    from camtrain.study.friction_map import correlation_map, sweep_map, write_map
+    from camtrain.study.friction_map import correlation_map, with_load_measure, write_map
+    from camtrain.study.friction_sweep import sweep_map
 
     S, L, T = (_numbers(o, v) for o, v in (("--speeds", speeds), ("--loads", loads),
                                            ("--temperatures", temperatures)))
@@ -81,6 +82,7 @@ def _run(deck, speeds, loads, temperatures, measure, flame, out, jobs, scheduler
     out_dir = Path(out)
     if flame and model.flame is not None:
         m = measure or (model.load.measure if model.load is not None else "imep")
+        with_load_measure(model, m, S)    # every speed needs its pressure table (exit 2)
         fmap = sweep_map(deck, S, L, T, out_dir / "sweep", measure=m,
                          jobs=1 if jobs is None and scheduler is None else jobs,
                          scheduler=scheduler)

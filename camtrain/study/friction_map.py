@@ -6,10 +6,11 @@ Two routes, one result (:class:`FrictionMap`, powers [W] on a (speed, load, temp
   engine deck maps in milliseconds). Load: with a pressure diagram, the deck's [load] measure
   (peak pressure or IMEP) scales the diagram per speed and the intake pressure ratio follows the
   scale; without one (a bare deck) the load axis is the intake pressure ratio p_i/p_a itself
-  and a Chen-Flynn peak pressure scales with it.
-* :func:`sweep_map`: every point through the sweep machinery (``speed``, ``load.value``,
-  ``oil.temperature`` as a cartesian sweep; processes or a Dask scheduler), so FLAME runs at
-  each point beside the correlations; the map is read from the sweep's records.
+  (Chen-Flynn keeps the deck's peak pressure).
+* :func:`camtrain.study.friction_sweep.sweep_map`: every point through the sweep machinery
+  (``speed``, ``load.value``, ``oil.temperature`` as a cartesian sweep; processes or a Dask
+  scheduler), so FLAME runs at each point beside the correlations; the map is read from the
+  sweep's records (:func:`map_from_records`).
 
 :func:`write_map` writes friction_map.csv, friction_map.md and the plots (contours of each
 model's total over speed x load per temperature; stacked shares of the groups over speed).
@@ -60,7 +61,7 @@ def _at(deck, rpm: float, load: float):
                                load=dataclasses.replace(deck.load, value=to_si(load, "bar")))
 
 
-def _with_measure(deck, measure: str | None, speeds):
+def with_load_measure(deck, measure: str | None, speeds):
     """The deck whose load axis is its diagram scaled by ``measure`` (default: its [load]'s);
     None when it has no diagram (the load axis is then p_i/p_a). Every speed needs a table."""
     from camtrain.deck.schema_correlations import LoadSection
@@ -101,7 +102,7 @@ def correlation_map(deck, speeds, loads, temperatures, measure: str | None = Non
     c = deck.correlations
     engine = build.correlation_engine(deck)
     omega = (S * 2.0 * math.pi / 60.0)[:, None, None]
-    scaled = _with_measure(deck, measure, S)
+    scaled = with_load_measure(deck, measure, S)
     diagram = scaled is not None
     if diagram:
         deck = scaled
@@ -128,42 +129,14 @@ def correlation_map(deck, speeds, loads, temperatures, measure: str | None = Non
         if diagram:
             peak = np.array([[float(max(pressure_table(_at(deck, s, x)).gauge()))
                               for x in L] for s in S]) + build.ATMOSPHERE
-        else:
-            base = build.peak_pressure(deck)
-            peak = np.broadcast_to(base * L[None, :] / c.intake_pressure_ratio,
-                                   (S.size, L.size))
+        else:   # a bare deck: the deck's peak pressure at every point (as the effect)
+            peak = np.full((S.size, L.size), build.peak_pressure(deck))
         fmep = grid + chen_flynn_fmep(build.chen_flynn_constants(deck), engine, omega,
                                       peak[:, :, None])
         out.fmep["chen_flynn"] = fmep
         out.totals["chen_flynn"] = fmep_to_power(fmep, engine.displacement, omega,
                                                  engine.strokes)
     return out
-
-
-def sweep_map(deck_path, speeds, loads, temperatures, out_dir, *, measure: str = "imep",
-              jobs: int | None = 1, scheduler=None, progress=None) -> FrictionMap:
-    """Every grid point through the sweep machinery (FLAME and the correlations per point):
-    a cartesian sweep of ``speed``, ``load.value`` (``load.measure`` = ``measure``) and
-    ``oil.temperature`` written to ``out_dir``; the map read from its records."""
-    from camtrain.deck.load import load_deck, parse_toml, validate
-    from camtrain.study.runner import Sweep, run_sweep
-    from camtrain.study.sweep import build_parameters, cases, set_path
-
-    loaded = load_deck(str(deck_path))
-    raw = parse_toml(loaded.text, loaded.path)
-    base_dir = str(Path(deck_path).resolve().parent)
-    set_path(raw, "load.measure", measure)
-    set_path(raw, "load.value", float(loads[0]))
-    validate(raw, loaded.path, Path(base_dir))
-    fmt = ",".join
-    params = build_parameters(raw, [("speed", "values", fmt(f"{v:g}" for v in speeds)),
-                                    ("load.value", "values", fmt(f"{v:g}" for v in loads)),
-                                    ("oil.temperature", "values",
-                                     fmt(f"{v:g}" for v in temperatures))])
-    sweep = Sweep(raw, loaded.path, base_dir, loaded.sha256, params, [], cases(params))
-    outcome = run_sweep(sweep, out_dir, jobs=jobs, scheduler=scheduler, plots=False,
-                        progress=progress)
-    return map_from_records(params, outcome.records, f"{measure.replace('_', ' ')} [bar]")
 
 
 def map_from_records(params, records, load_label: str) -> FrictionMap:
@@ -306,14 +279,17 @@ def write_map(fmap: FrictionMap, out_dir, *, plots: bool = True, title: str = ""
 
 def write_sweep_map(out_dir, params, records, *, plots: bool = True,
                     title: str = "") -> list[Path]:
-    """The map files of a three-parameter sweep (speed, load, oil temperature, in that order)
-    whose cases carry correlation or FLAME totals; nothing otherwise."""
+    """The map files of a three-parameter sweep (``speed``, ``load.value`` or
+    ``correlations.intake_pressure_ratio``, ``oil.temperature``, in that order) whose cases
+    carry correlation or FLAME totals; nothing otherwise."""
     names = [p.path for p in params]
-    if len(params) != 3 or names[1:] != ["load.value", "oil.temperature"] or not names[0] \
-            .startswith("speed"):
+    loads = {"load.value": "load [bar]",
+             "correlations.intake_pressure_ratio": "intake pressure ratio p_i/p_a [-]"}
+    if len(params) != 3 or names[0] != "speed.engine" or names[1] not in loads \
+            or names[2] != "oil.temperature":
         return []
     if not any(r.get("status") == "ok" and any(k.endswith("_power") or k == "flame_total"
                                                for k in r.get("metrics", {})) for r in records):
         return []
-    fmap = map_from_records(params, records, "load [bar]")
+    fmap = map_from_records(params, records, loads[names[1]])
     return write_map(fmap, out_dir, plots=plots, title=title)

@@ -132,7 +132,8 @@ def test_sandoval_heywood_thins_with_oil_temperature_pnh_does_not():
     assert np.all(np.diff(sh, axis=2) < 0)
     assert np.all(np.diff(pnh, axis=2) == 0)
     assert np.all(np.diff(pnh, axis=1) > 0)        # more intake pressure, more ring gas load
-    assert np.all(np.diff(fmap.totals["chen_flynn"], axis=1) > 0)
+    # a bare deck's load axis is p_i/p_a: Chen-Flynn keeps the deck's peak pressure
+    assert np.all(np.diff(fmap.totals["chen_flynn"], axis=1) == 0)
 
 
 def test_vectorised_map_equals_the_effect_at_every_point():
@@ -264,3 +265,36 @@ def test_friction_map_command_on_the_bare_deck(tmp_path):
                                     "--loads", "1", "--temperatures", "90", "--out",
                                     str(tmp_path / "bad")])
     assert bad.exit_code == 2 and "--speeds" in bad.output and "Traceback" not in bad.output
+
+
+def test_sweep_route_writes_the_same_map_as_the_vectorised_one(tmp_path):
+    """`camtrain sweep` over speed, intake pressure ratio and oil temperature on the bare deck
+    writes friction_map.csv; its totals are the vectorised map's."""
+    from camtrain.study.friction_map import correlation_map, map_from_records
+    from camtrain.study.runner import prepare, run_sweep
+
+    sweep = prepare(BARE, [("speed", "values", "2000,5000"),
+                           ("correlations.intake_pressure_ratio", "values", "0.5,1"),
+                           ("oil.temperature", "values", "60,110")])
+    outcome = run_sweep(sweep, tmp_path, jobs=1, plots=False)
+    assert (tmp_path / "friction_map.csv").is_file()
+    fmap = map_from_records(sweep.params, outcome.records, "p_i/p_a")
+    ref = correlation_map(load_deck(str(BARE)).model, [2000, 5000], [0.5, 1.0], [60.0, 110.0])
+    for name in ("pnh1989", "sandoval_heywood2003", "chen_flynn"):
+        # records hold the deck's units at print precision (kW to 4+ significant digits)
+        assert np.allclose(fmap.totals[name], ref.totals[name], rtol=1e-6), name
+
+
+def test_a_diagram_without_positive_imep_cannot_be_scaled_exit_3():
+    """A motored-looking diagram (constant pressure: no net work) cannot be scaled to an IMEP:
+    a physically impossible request (exit 3), not a number."""
+    from camtrain.build.engine import load_factor
+    from camtrain.errors import GeometryError
+
+    raw = _raw_with_load(8.0)
+    for table in raw["pressure"]:
+        table["values"] = [1.0] * len(table["values"])
+    model = validate(raw, "zeta_engine.toml", DECKS)
+    with pytest.raises(GeometryError, match="load.measure") as err:
+        load_factor(model)
+    assert err.value.exit_code == 3
