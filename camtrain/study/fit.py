@@ -30,6 +30,8 @@ from camtrain.study.fit_model import Constant, Predictor
 UNIDENTIFIABLE = 1e-3
 #: a constant with at least this weight in such a direction is reported as not identifiable
 WEIGHT = 0.1
+#: pairs of constants at least this correlated are reported: the data barely tell them apart
+CORRELATED = 0.95
 #: forward-difference step, as a fraction of each constant's bounds
 STEP = 1e-6
 
@@ -56,6 +58,21 @@ class Fit:
     evaluations: int
     status: str
     at_bound: list[str] = field(default_factory=list)
+
+    def poorly_determined(self) -> list[str]:
+        """Identifiable constants whose interval is wider than their value."""
+        return [c.name for c, v, h in zip(self.constants, self.value, self.half_width,
+                                          strict=True)
+                if c.name not in self.unidentifiable and h >= abs(v)]
+
+    def correlated(self) -> list[tuple[str, str, float]]:
+        """Pairs of identifiable constants whose estimates are correlated by at least
+        ``CORRELATED`` (in magnitude): the data barely tell them apart."""
+        names = [c.name for c in self.constants]
+        return [(names[i], names[j], float(self.correlation[i, j]))
+                for i in range(len(names)) for j in range(i + 1, len(names))
+                if names[i] not in self.unidentifiable and names[j] not in self.unidentifiable
+                and abs(self.correlation[i, j]) >= CORRELATED]
 
     def rows(self) -> list[dict]:
         """One row per constant: start, value, interval, identifiable."""
