@@ -43,6 +43,16 @@ def test_sensitivity_bad_arguments_exit_2(fast_flat, tmp_path):
                    "-m", "nothing", "-n", "4", "--out", tmp_path / "m", "-q"])
     assert res.exit_code == 2 and "nothing" in res.output and "power_loss_mean" in res.output
     assert "Traceback" not in res.output
+    assert not (tmp_path / "m").exists()     # refused before anything ran or was written
+
+
+def test_a_metric_with_failed_cases_is_named_not_estimated(fast_flat, tmp_path):
+    # a flat follower on a small base circle needs a concave flank: those cases fail
+    res = _invoke(["sensitivity", fast_flat, "-p", "base_radius", "--uniform", "10:18",
+                   "-m", "power_loss_mean", "-n", "16", "-j", "1", "--out", tmp_path, "-q"])
+    assert res.exit_code == 0, res.output
+    assert "power_loss_mean: indices not estimated" in res.output
+    assert "cases give no value" in res.output
 
 
 def test_fit_command(fast_flat, tmp_path):
