@@ -97,6 +97,8 @@ def test_outputs_tables_plots_and_distribution(fast_flat, tmp_path):
     frame = report.frame("indices")
     assert list(frame["input"]) == list(BOUNDS)
     assert report.frame("samples").shape[0] == 64 * 5
+    cost = (tmp_path / "o" / "indices.md").read_text(encoding="utf-8")
+    assert "at 320 cases" in cost and "half as wide takes about 1280 cases" in cost
 
 
 def test_resume_and_a_larger_sample_reuse_finished_cases(fast_flat, tmp_path):
