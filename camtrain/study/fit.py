@@ -4,7 +4,7 @@ intervals and what the data cannot tell apart.
 The residual of a data point is (camtrain - measured) / the rms of its quantity's data, so
 that data sets in different units weigh alike; scipy's trust-region reflective least squares
 (``scipy.optimize.least_squares``, within the bounds) minimises their sum of squares over the
-constants, each scaled to its bounds. The Jacobian is a forward difference whose runs go to the
+constants, each scaled to its bounds. The Jacobian is a central difference whose runs go to the
 executor together.
 
 At the solution, with m points, p constants, s^2 = RSS / (m - p) and J the Jacobian in the
@@ -32,8 +32,8 @@ UNIDENTIFIABLE = 1e-3
 WEIGHT = 0.1
 #: pairs of constants at least this correlated are reported: the data barely tell them apart
 CORRELATED = 0.95
-#: forward-difference step, as a fraction of each constant's bounds
-STEP = 1e-6
+#: central-difference step, as a fraction of each constant's bounds
+STEP = 1e-4
 
 
 @dataclass
@@ -121,14 +121,18 @@ def fit(predictor: Predictor, confidence: float = 0.95, progress=None) -> Fit:
         return residual_of(predict([np.asarray(x, dtype=float)])[0])
 
     def jac(x):
+        # central differences (one-sided at a bound): second-order accurate, and a step large
+        # enough to stand above the tolerance of iterated loads
         x = np.asarray(x, dtype=float)
-        steps = [x.copy() for _ in x]
-        for j, s in enumerate(steps):
-            s[j] = x[j] + STEP if x[j] + STEP <= 1.0 else x[j] - STEP
-        base, *moved = predict([x, *steps])
-        r0 = residual_of(base)
-        return np.column_stack([(residual_of(p) - r0) / (s[j] - x[j])
-                                for j, (p, s) in enumerate(zip(moved, steps, strict=True))])
+        lows, highs = [], []
+        for j in range(x.size):
+            lo, hi = x.copy(), x.copy()
+            lo[j], hi[j] = max(x[j] - STEP, 0.0), min(x[j] + STEP, 1.0)
+            lows.append(lo)
+            highs.append(hi)
+        runs = predict([*lows, *highs])
+        return np.column_stack([(residual_of(runs[x.size + j]) - residual_of(runs[j]))
+                                / (highs[j][j] - lows[j][j]) for j in range(x.size)])
 
     x0 = np.clip((np.array([c.param.datum for c in constants]) - low) / span, 0.0, 1.0)
     before = predict([x0])[0]
