@@ -77,3 +77,26 @@ def test_fit_command(fast_flat, tmp_path):
     assert abs(fitted["constants"][0]["value"] - 0.08) < 1e-6
     res = _invoke(["fit", fast_flat, "--data", data, "-p", "viscosity", "--out", out])
     assert res.exit_code == 2 and "--bounds LOW:HIGH" in res.output
+
+
+def test_api_gives_dataframes(fast_flat, tmp_path):
+    import pandas as pd
+
+    import camtrain.api as ct
+
+    report = ct.sensitivity(fast_flat, [("viscosity", "log-uniform", "0.02:0.08"),
+                                        ("cam_width", "uniform", "10:14")],
+                            tmp_path / "s", metrics=["film_min_at_max_lift"], samples=16,
+                            plots=False)
+    for table in ("indices", "convergence", "distribution", "samples"):
+        assert isinstance(report.frame(table), pd.DataFrame)
+    assert list(report.frame("indices")["input"]) == ["viscosity", "cam_width"]
+    data = tmp_path / "power.csv"
+    power = ct.run(ct.load(fast_flat)).metrics["power_loss_mean"].value
+    data.write_text(f"speed[rpm],power_loss_mean[W]\n2500,{power}\n2500,{power}\n",
+                    encoding="utf-8")
+    fitted = ct.fit(fast_flat, [data], [("tribology.boundary_friction", "0.02:0.2")],
+                    tmp_path / "f", sets=["tribology.boundary_friction=0.1"], plots=False)
+    constants = fitted.frame("constants")
+    assert abs(constants.loc["tribology.boundary_friction", "value"] - 0.08) < 1e-6
+    assert fitted.frame("correlation").shape == (1, 1)
