@@ -50,3 +50,30 @@ def test_bench_sobol_10240_cases(benchmark, tmp_path):
     benchmark.extra_info["cpu_seconds"] = timing["cpu_subject_min"]
     assert (tmp_path / "out" / "indices.csv").is_file()
     benchmark.pedantic(study, rounds=1, iterations=1)
+
+
+def test_bench_sobol_10240_cases_on_a_local_dask_cluster(benchmark, tmp_path):
+    """The same study on a local Dask cluster (two worker processes) gives the same indices as
+    one process (to 1e-12: the cluster's batch chunks are cut differently, see
+    tests/study/test_sensitivity.py)."""
+    import math
+
+    import pytest
+
+    distributed = pytest.importorskip("dask.distributed")
+    from camtrain.study.sensitivity import prepare
+    from camtrain.study.sensitivity_run import run_study
+
+    study = prepare(DECK, INPUTS, samples=SAMPLES, seed=1)
+    serial = run_study(study, tmp_path / "serial", jobs=1, plots=False)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster:
+        dask = benchmark.pedantic(lambda: run_study(study, tmp_path / "dask",
+                                                    scheduler=cluster.scheduler_address,
+                                                    plots=False), rounds=1, iterations=1)
+    assert dask.route.batch and len(dask.indices) == len(serial.indices)
+    worst = max(abs(a[k] - b[k]) / max(abs(b[k]), 1e-12)
+                for a, b in zip(dask.indices, serial.indices, strict=True)
+                for k in ("S1", "ST", "S1_conf", "ST_conf"))
+    note(f"Sobol' study, {CASES} cases on a local Dask cluster: largest relative difference of "
+         "an index from one process", f"{worst:.1e}", "<= 1e-12")
+    assert math.isfinite(worst) and worst <= 1e-12

@@ -95,6 +95,12 @@ def fit(ctx: click.Context, deck: str, data, params, bounds_, sets, confidence: 
     for combo in f.combinations:
         click.echo(f"warning: the data do not tell {', '.join(f.unidentifiable)} apart: they "
                    f"fix only {combo}", err=True)
+    for name in f.poorly_determined():
+        click.echo(f"warning: {name}: its interval is wider than its value: the data hardly "
+                   "determine it", err=True)
+    for a, b, r in f.correlated():
+        click.echo(f"warning: {a} and {b} are correlated {r:+.3f}: the data barely tell them "
+                   "apart", err=True)
     for name in f.at_bound:
         click.echo(f"warning: {name} ended at a bound: widen --bounds", err=True)
 

@@ -4,7 +4,7 @@ intervals and what the data cannot tell apart.
 The residual of a data point is (camtrain - measured) / the rms of its quantity's data, so
 that data sets in different units weigh alike; scipy's trust-region reflective least squares
 (``scipy.optimize.least_squares``, within the bounds) minimises their sum of squares over the
-constants, each scaled to its bounds. The Jacobian is a forward difference whose runs go to the
+constants, each scaled to its bounds. The Jacobian is a central difference whose runs go to the
 executor together.
 
 At the solution, with m points, p constants, s^2 = RSS / (m - p) and J the Jacobian in the
@@ -30,8 +30,10 @@ from camtrain.study.fit_model import Constant, Predictor
 UNIDENTIFIABLE = 1e-3
 #: a constant with at least this weight in such a direction is reported as not identifiable
 WEIGHT = 0.1
-#: forward-difference step, as a fraction of each constant's bounds
-STEP = 1e-6
+#: pairs of constants at least this correlated are reported: the data barely tell them apart
+CORRELATED = 0.95
+#: central-difference step, as a fraction of each constant's bounds
+STEP = 1e-4
 
 
 @dataclass
@@ -56,6 +58,21 @@ class Fit:
     evaluations: int
     status: str
     at_bound: list[str] = field(default_factory=list)
+
+    def poorly_determined(self) -> list[str]:
+        """Identifiable constants whose interval is wider than their value."""
+        return [c.name for c, v, h in zip(self.constants, self.value, self.half_width,
+                                          strict=True)
+                if c.name not in self.unidentifiable and h >= abs(v)]
+
+    def correlated(self) -> list[tuple[str, str, float]]:
+        """Pairs of identifiable constants whose estimates are correlated by at least
+        ``CORRELATED`` (in magnitude): the data barely tell them apart."""
+        names = [c.name for c in self.constants]
+        return [(names[i], names[j], float(self.correlation[i, j]))
+                for i in range(len(names)) for j in range(i + 1, len(names))
+                if names[i] not in self.unidentifiable and names[j] not in self.unidentifiable
+                and abs(self.correlation[i, j]) >= CORRELATED]
 
     def rows(self) -> list[dict]:
         """One row per constant: start, value, interval, identifiable."""
@@ -104,14 +121,18 @@ def fit(predictor: Predictor, confidence: float = 0.95, progress=None) -> Fit:
         return residual_of(predict([np.asarray(x, dtype=float)])[0])
 
     def jac(x):
+        # central differences (one-sided at a bound): second-order accurate, and a step large
+        # enough to stand above the tolerance of iterated loads
         x = np.asarray(x, dtype=float)
-        steps = [x.copy() for _ in x]
-        for j, s in enumerate(steps):
-            s[j] = x[j] + STEP if x[j] + STEP <= 1.0 else x[j] - STEP
-        base, *moved = predict([x, *steps])
-        r0 = residual_of(base)
-        return np.column_stack([(residual_of(p) - r0) / (s[j] - x[j])
-                                for j, (p, s) in enumerate(zip(moved, steps, strict=True))])
+        lows, highs = [], []
+        for j in range(x.size):
+            lo, hi = x.copy(), x.copy()
+            lo[j], hi[j] = max(x[j] - STEP, 0.0), min(x[j] + STEP, 1.0)
+            lows.append(lo)
+            highs.append(hi)
+        runs = predict([*lows, *highs])
+        return np.column_stack([(residual_of(runs[x.size + j]) - residual_of(runs[j]))
+                                / (highs[j][j] - lows[j][j]) for j in range(x.size)])
 
     x0 = np.clip((np.array([c.param.datum for c in constants]) - low) / span, 0.0, 1.0)
     before = predict([x0])[0]

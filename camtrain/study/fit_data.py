@@ -113,6 +113,12 @@ def read_data(path: str | Path) -> DataSet:
     if axis not in ANGLE_AXES + (SPEED_AXIS,):
         raise _bad(path, f"the first column {axis} is not an abscissa", axis,
                    "cam_angle[deg], crank_angle[deg] or speed[rpm]")
+    from camtrain.units import UNITS
+
+    speed = axis == SPEED_AXIS
+    if UNITS[axis_unit][1] != ("rad/s" if speed else "rad"):
+        raise _bad(path, f"the unit of {axis} does not measure {'a speed' if speed else 'an angle'}",
+                   axis_unit, "rpm" if speed else "deg or rad")
     if len(head) < 2:
         raise _bad(path, "has no measured quantity beside the abscissa")
     values = []

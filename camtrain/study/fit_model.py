@@ -16,6 +16,7 @@ import numpy as np
 from camtrain.errors import CamtrainError, InputError, Problem
 from camtrain.study.fit_data import DataSet
 from camtrain.study.sweep import Case, Parameter, check_values, resolve_path
+from camtrain.units import UNITS
 
 
 @dataclass(frozen=True)
@@ -125,8 +126,6 @@ class Predictor:
             if s.speed is None:
                 jobs.append(FitJob(s.raw, params, Case(0, values), *common))
                 continue
-            from camtrain.units import UNITS
-
             factor = UNITS[s.speed.unit][0]
             for x in s.data.x_si():
                 jobs.append(FitJob(s.raw, params + (s.speed,),
@@ -191,8 +190,6 @@ def _unknown(source: Source, name: str, expected: str) -> InputError:
 
 
 def _same_unit(source: Source, quantity, si_unit: str) -> None:
-    from camtrain.units import UNITS
-
     if UNITS[quantity.unit][1] != si_unit:
         raise InputError(Problem("--data", f"the unit of {quantity.name} does not measure what "
                                  f"camtrain computes ({si_unit} in SI)", quantity.unit,

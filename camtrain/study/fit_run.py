@@ -121,6 +121,9 @@ def write_tables(f: Fit, out_dir: Path) -> list[Path]:
                  "correlation": {a: {b: float(f.correlation[i, j]) for j, b in enumerate(names)}
                                  for i, a in enumerate(names)},
                  "not_identifiable": f.unidentifiable, "determined_combinations": f.combinations,
+                 "poorly_determined": f.poorly_determined(),
+                 "correlated": [{"constants": [a, b], "correlation": r}
+                                for a, b, r in f.correlated()],
                  "at_bound": f.at_bound}, indent=2, allow_nan=True) + "\n"}
     for name, body in files.items():
         atomic_write(out_dir / name, body)

@@ -241,6 +241,7 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], *, method: str 
         if any(i.param.path == inp.param.path for i in inputs):
             raise InputError(Problem("--param", f"{inp.param.path} is given twice", name))
         inputs.append(inp)
+    check_metrics(base, metrics)
     unit = unit_sample(method, inputs, samples, seed)
     values = deck_sample(method, inputs, unit)
     params = [_with_values(i.param, tuple(values[:, j].tolist())) for j, i in enumerate(inputs)]
@@ -250,3 +251,23 @@ def prepare(deck: str | Path, specs: list[tuple[str, str, str]], *, method: str 
                   zipped=True)
     return Study(sweep, inputs, method, samples, seed, unit, tuple(metrics))
 
+
+
+def check_metrics(datum, metrics: tuple[str, ...]) -> None:
+    """The metrics asked for are metrics of the datum deck's run (checked by running it once,
+    before any case runs or any file is written). A datum deck that does not run leaves the
+    check to the cases, which report why."""
+    if not metrics:
+        return
+    from camtrain.errors import CamtrainError
+    from camtrain.runner import run_plan
+    from camtrain.study.case_model import datum_model
+
+    try:
+        known = run_plan(datum_model(datum.raw, datum.name, datum.base_dir)).metrics
+    except CamtrainError:
+        return
+    unknown = [m for m in metrics if m not in known]
+    if unknown:
+        raise InputError(Problem("--metric", "is not a metric of this deck's run",
+                                 ", ".join(unknown), "one of " + ", ".join(known)))

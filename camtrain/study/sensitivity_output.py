@@ -50,12 +50,30 @@ def markdown(report) -> str:
                          + " | ".join(f"{c:.3g}" for c in cells) + " |")
     for metric, why in report.skipped.items():
         lines.append(f"| {metric} | (not estimated: {why}) | | | | |")
+    lines += cost_lines(report)
     lines += ["", "| metric | mean | sd | 5 % | 50 % | 95 % |", "|---|---:|---:|---:|---:|---:|"]
     for d in report.distribution:
         if d.get("cases"):
             lines.append(f"| {d['metric']} [{d['unit']}] | " + " | ".join(
                 f"{d[k]:.4g}" for k in ("mean", "std", "p05", "p50", "p95")) + " |")
     return "\n".join(lines) + "\n"
+
+
+def cost_lines(report) -> list[str]:
+    """What a narrower interval costs: the widest interval of a Sobol' study at its cases, and
+    the cases (and time at this run's pace) for half its width, since the bootstrap interval
+    narrows as one over the square root of the cases."""
+    if report.study.method != "sobol" or not report.indices:
+        return []
+    widest = max(report.indices, key=lambda r: max(r["S1_conf"], r["ST_conf"]))
+    width = max(widest["S1_conf"], widest["ST_conf"])
+    cases = report.study.evaluations
+    pace = report.seconds_per_case
+    took = f" ({cases * pace:.3g} s)" if pace else ""
+    more = f" (about {4 * cases * pace:.3g} s)" if pace else ""
+    return ["", f"Accuracy: the widest interval is ±{width:.3g} ({widest['input']} on "
+            f"{widest['metric']}) at {cases} cases{took}; half as wide takes about "
+            f"{4 * cases} cases{more}."]
 
 
 def write_outputs(report, out_dir: Path, plots: bool = True) -> list[Path]:

@@ -95,12 +95,6 @@ def analyse(report: Report, confidence: float) -> None:
     """Fill the report's tables from its records."""
     study = report.study
     metrics = list(study.metrics) or sa.varying_metrics(report.records)
-    if study.metrics:
-        known = {n for r in report.records for n in r["metrics"]}
-        unknown = [m for m in metrics if m not in known]
-        if unknown:
-            raise InputError(Problem("--metric", "is not a metric of this deck's run",
-                                     ", ".join(unknown), "one of " + ", ".join(sorted(known))))
     prob = problem(study.inputs)
     unit = np.asarray(study.unit)
     rows = sa.independent_rows(study.method, len(study.inputs), study.evaluations)

@@ -138,6 +138,8 @@ def test_speed_data_fit_a_metric(fast_flat, tmp_path):
     ("cam_angle[deg],film_min[furlong]\n1,2\n", "not a unit camtrain knows"),
     ("cam_angle[deg],film_min[µm]\n1,x\n", "not all numbers"),
     ("cam_angle[deg],film_min[µm]\n", "at least one row"),
+    ("speed[deg],power_loss_mean[W]\n1,2\n", "does not measure a speed"),
+    ("cam_angle[mm],film_min[µm]\n1,2\n", "does not measure an angle"),
 ])
 def test_bad_data_files_are_named(tmp_path, text, words):
     path = tmp_path / "d.csv"

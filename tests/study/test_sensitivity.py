@@ -97,6 +97,8 @@ def test_outputs_tables_plots_and_distribution(fast_flat, tmp_path):
     frame = report.frame("indices")
     assert list(frame["input"]) == list(BOUNDS)
     assert report.frame("samples").shape[0] == 64 * 5
+    cost = (tmp_path / "o" / "indices.md").read_text(encoding="utf-8")
+    assert "at 320 cases" in cost and "half as wide takes about 1280 cases" in cost
 
 
 def test_resume_and_a_larger_sample_reuse_finished_cases(fast_flat, tmp_path):
@@ -124,6 +126,10 @@ def test_relative_and_normal_inputs(fast_flat):
     assert normal.a == pytest.approx(0.05) and normal.b == pytest.approx(0.0025)
     q = normal.quantile(np.array([0.5, 0.8413447460685429]))
     assert q == pytest.approx([0.05, 0.0525])
+    # Morris' levels reach 0 and 1: a normal input's span there is ±3 standard deviations
+    assert normal.quantile(np.array([0.0, 1.0]), morris=True) == pytest.approx([0.0425, 0.0575])
+    logu = parse_input(raw, "viscosity", "log-uniform", "-50%:+100%")
+    assert logu.quantile(np.array([0.0, 0.5, 1.0])) == pytest.approx([0.025, 0.05, 0.1])
     assert resolve_path(raw, "viscosity").datum == 0.05
 
 
