@@ -351,7 +351,7 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
 def _register_study_commands() -> None:
     # the study commands live in their own modules, which import only click at module level
     from camtrain.cli_accuracy import accuracy
-    from camtrain.cli_design import design
+    from camtrain.cli_design import design, optimize
     from camtrain.cli_dynamics import dynamics_speed
     from camtrain.cli_sweep import sweep
 
@@ -359,6 +359,7 @@ def _register_study_commands() -> None:
     main.add_command(accuracy)
     main.add_command(dynamics_speed)
     main.add_command(design)
+    main.add_command(optimize)
 
 
 _register_study_commands()

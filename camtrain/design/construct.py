@@ -272,25 +272,40 @@ def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
     N = null_space(A, rcond=1e-10)
     Qz, gz = N.T @ Q @ N * scale, 2.0 * N.T @ Q @ c_p * scale
     fine = np.linspace(t[0], t[-1], 16 * ev.spans + 1)
-    for _ in range(4):      # exchange: limit rows added where the fine grid finds an excess
-        Gz, hz = G @ N, h - G @ c_p
-        res = minimize(lambda z: z @ Qz @ z + gz @ z, _feasible(Gz, hz),
-                       jac=lambda z: 2.0 * (Qz @ z) + gz, method="SLSQP",
-                       constraints=[{"type": "ineq", "fun": lambda z: hz - Gz @ z,
-                                     "jac": lambda z: -Gz}],
-                       options={"maxiter": 1000, "ftol": 1e-10})
-        c = c_p + N @ res.x
-        extra_g, extra_h = _excess_rows(ev, t, fine, c)
-        if extra_g is None:
-            break
-        G, h = np.vstack((G, extra_g)), np.concatenate((h, extra_h))
+    _feasible(G @ N, h - G @ c_p)       # raises at once when no lift meets the rows
+    # cutting planes: solve with the rows violated so far, add the rows the solution violates
+    # (the collocation rows, then any excess the fine grid finds), until none is violated;
+    # SLSQP sees only the few rows that matter
+    z = np.linalg.lstsq(2.0 * Qz, -gz, rcond=None)[0]
+    active = np.zeros(h.size, dtype=bool)
+    res = None
+    for _ in range(40):
+        c = c_p + N @ z
+        new = (G @ c - h > 1e-9 * np.maximum(1.0, np.abs(h))) & ~active
+        if not np.any(new):
+            extra_g, extra_h = _excess_rows(ev, t, fine, c)
+            if extra_g is None:
+                break
+            G, h = np.vstack((G, extra_g)), np.concatenate((h, extra_h))
+            active = np.concatenate((active, np.zeros(extra_h.size, dtype=bool)))
+            new = np.zeros(h.size, dtype=bool)
+            new[-extra_h.size:] = True
+        active |= new
+        Gz, hz = G[active] @ N, h[active] - G[active] @ c_p
+        res = minimize(lambda z: z @ Qz @ z + gz @ z, z, jac=lambda z: 2.0 * (Qz @ z) + gz,
+                       method="SLSQP", constraints=[{"type": "ineq", "fun": lambda z: hz - Gz @ z,
+                                                     "jac": lambda z: -Gz}],
+                       options={"maxiter": 1000, "ftol": 1e-12})
+        z = res.x
+    c = c_p + N @ z
     worst_eq = float(np.max(np.abs(A @ c - b)))
     worst_in = float(np.max(G @ c - h))
     tol = 1e-7 * max(1.0, ev.max_lift)
     if worst_eq > tol or worst_in > tol:
         raise DesignInfeasible(
             f"no lift meets every event within the limits (largest event miss {worst_eq:.3g}, "
-            f"largest limit excess {worst_in:.3g} in mm and deg units; {res.message})")
+            f"largest limit excess {worst_in:.3g} in mm and deg units; "
+            f"{res.message if res is not None else 'no limit active'})")
     c[np.abs(c) < 1e-13] = 0.0
     return Designed(t, c, DEGREE, (-end_open, end_close), float(c @ Q @ c))
 
