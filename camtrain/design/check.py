@@ -61,7 +61,7 @@ def measure(ev: Events, law: LiftLaw, lift_tol: float, angle_tol: float) -> list
     """Events and limits of ``ev`` measured on ``law`` (tolerances in mm and deg)."""
     theta = np.arange(-180.0, 180.0, 0.01)
     curve = law.evaluate(theta * DEG)
-    lift, d1 = curve.lift / MM, curve.d1 / MM * DEG
+    lift = curve.lift / MM
     d2, d3 = curve.d2 / MM * DEG ** 2, curve.d3 / MM * DEG ** 3
     items = [_event("maximum lift", ev.max_lift, float(lift.max()), "mm", lift_tol),
              _event("angle of maximum lift", 0.0, float(theta[np.argmax(lift)]), "deg",

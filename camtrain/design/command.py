@@ -151,10 +151,10 @@ def write_design(outcome: DesignOutcome, out_dir: Path, name: str, plots: bool =
 
 def _plot(outcome: DesignOutcome, path: Path, name: str) -> Path:
     import numpy as np
-
-    from camtrain.lift.base import DEG, MM
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
+
+    from camtrain.lift.base import DEG, MM
 
     law = outcome.law
     theta = np.linspace(law.opening_angle - 5 * DEG, law.closing_angle + 5 * DEG, 2001)

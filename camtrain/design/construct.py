@@ -2,8 +2,8 @@
 
 The lift over the event is a quintic B-spline (its acceleration a cubic spline, its jerk
 continuous): the acceleration-spline construction of cam design (Norton 2009, *Cam Design and
-Manufacturing Handbook*, 2nd ed., ch. 6, B-splines with boundary conditions solved for their
-coefficients; de Boor 2001 for the basis). Every event is a linear condition on the
+Manufacturing Handbook*, 2nd ed.: B-spline cam functions with boundary conditions solved for
+their coefficients; de Boor 2001 for the basis). Every event is a linear condition on the
 coefficients, every limit a linear inequality at collocation points, and among the curves that
 meet them the one with the least jerk energy, integral of l'''^2 d(theta), is taken: a convex
 quadratic programme (the smoothness objective of cubic-spline cam synthesis, Yoon & Rao 1993,
@@ -22,11 +22,15 @@ Events (all in the units of this module's inputs: mm, cam deg; the nose at 0 deg
 * flanks rise and fall monotonically (l' >= 0 before the nose, <= 0 after).
 
 Limits: l'' <= max_acceleration, -l'' <= max_deceleration, |l'''| <= max_jerk, imposed at four
-points per knot span and met between them by the 0.5 % margin the collocation keeps.
+points per knot span with a 0.5 % margin, and at any point of a grid of 16 per span where the
+solution still exceeds one. They are solved by cutting planes: a linear programme (HiGHS) first
+says whether any lift meets them, then SLSQP solves the programme with the rows violated so far
+and rows are added until none is.
 
-Where the ramp ends is not an event: it is placed where a 3-4-5 polynomial rise (Norton 2009,
-ch. 3) from the ramp to the nose would pass the first checking height above the ramp, and moved
-(up to 40 %) if the limits cannot be met there.
+Where the ramp ends is not an event: it is first placed where a 3-4-5 polynomial rise (Norton
+2009) from the ramp to the nose would pass the lowest checking height above the ramp, then
+scaled (both sides together) to the feasible placement of least jerk energy (see
+:func:`design_lift`). A checking height on the ramp fixes the ramp end.
 """
 from __future__ import annotations
 
@@ -92,7 +96,7 @@ class Designed:
 
 
 def rise_345(x):
-    """The 3-4-5 polynomial rise, 10 x^3 - 15 x^4 + 6 x^5 on [0, 1] (Norton 2009, ch. 3)."""
+    """The 3-4-5 polynomial rise, 10 x^3 - 15 x^4 + 6 x^5 on [0, 1] (Norton 2009)."""
     return x ** 3 * (10.0 - 15.0 * x + 6.0 * x * x)
 
 
@@ -243,7 +247,6 @@ def _feasible(G: np.ndarray, h: np.ndarray) -> np.ndarray:
 
 
 def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
-    from scipy.optimize import minimize
 
     if ev.symmetric:
         end_close = end_open
@@ -291,11 +294,7 @@ def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
             new = np.zeros(h.size, dtype=bool)
             new[-extra_h.size:] = True
         active |= new
-        Gz, hz = G[active] @ N, h[active] - G[active] @ c_p
-        res = minimize(lambda z: z @ Qz @ z + gz @ z, z, jac=lambda z: 2.0 * (Qz @ z) + gz,
-                       method="SLSQP", constraints=[{"type": "ineq", "fun": lambda z: hz - Gz @ z,
-                                                     "jac": lambda z: -Gz}],
-                       options={"maxiter": 1000, "ftol": 1e-12})
+        res = _qp(Qz, gz, G[active] @ N, h[active] - G[active] @ c_p, z)
         z = res.x
     c = c_p + N @ z
     worst_eq = float(np.max(np.abs(A @ c - b)))
@@ -308,6 +307,16 @@ def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
             f"{res.message if res is not None else 'no limit active'})")
     c[np.abs(c) < 1e-13] = 0.0
     return Designed(t, c, DEGREE, (-end_open, end_close), float(c @ Q @ c))
+
+def _qp(Q: np.ndarray, g: np.ndarray, G: np.ndarray, h: np.ndarray, start: np.ndarray):
+    """min z'Qz + g'z subject to G z <= h, by SLSQP (scipy) from ``start``."""
+    from scipy.optimize import minimize
+
+    return minimize(lambda z: z @ Q @ z + g @ z, start, jac=lambda z: 2.0 * (Q @ z) + g,
+                    method="SLSQP", constraints=[{"type": "ineq", "fun": lambda z: h - G @ z,
+                                                  "jac": lambda z: -G}],
+                    options={"maxiter": 1000, "ftol": 1e-12})
+
 
 
 def _excess_rows(ev: Events, t: np.ndarray, x: np.ndarray, c: np.ndarray):

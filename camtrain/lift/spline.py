@@ -7,7 +7,7 @@ The lift over the event is the B-spline (de Boor 2001, *A Practical Guide to Spl
 of degree k on the knot vector t (cam angle from the nose), with coefficients c_i; outside
 [t_0, t_last] the follower is on the base circle. Degree 5 with simple interior knots is the
 classic quintic lift of the acceleration-spline construction (the acceleration a cubic spline,
-the jerk continuous: Norton 2009, *Cam Design and Manufacturing Handbook*, 2nd ed., ch. 6).
+the jerk continuous: Norton 2009, *Cam Design and Manufacturing Handbook*, 2nd ed.).
 A B-spline of degree k is C^(k-1) across a simple interior knot; at the ends (knots of
 multiplicity k+1) the lift and its first m derivatives meet the base circle without a step when
 the first and last m+1 coefficients are zero.

@@ -32,7 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
-from camtrain.errors import InputError, Problem as DeckProblem
+from camtrain.errors import InputError
+from camtrain.errors import Problem as DeckProblem
 from camtrain.study.optimize_problem import (
     Point,
     Problem,

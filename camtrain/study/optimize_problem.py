@@ -13,7 +13,8 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from camtrain.errors import InputError, Problem as DeckProblem
+from camtrain.errors import InputError
+from camtrain.errors import Problem as DeckProblem
 from camtrain.study.sweep import Case, Parameter, resolve_path
 
 #: the constraint names that are not a metric compared with a number

@@ -175,3 +175,17 @@ def test_cli_bad_arguments_exit_2_naming_the_option(args, field, tmp_path):
     assert run.returncode == 2, run.stderr
     assert field in run.stderr and "Traceback" not in run.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_dask_scheduler_gives_the_serial_optimum():
+    distributed = pytest.importorskip("dask.distributed")
+    serial = opt.optimize(HARRISON, ["spring.preload_compression=1:12"],
+                          constraints=["no_separation=3000"])
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        dask = opt.optimize(HARRISON, ["spring.preload_compression=1:12"],
+                            constraints=["no_separation=3000"],
+                            scheduler=cluster.scheduler_address)
+    assert dask.optimum.x == serial.optimum.x
+    assert dask.optimum.objective == serial.optimum.objective
+    assert dask.evaluations == serial.evaluations
