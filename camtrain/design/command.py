@@ -73,27 +73,37 @@ def events_of(model) -> tuple[Events, float, float]:
 
 def design_deck(deck: str | Path) -> DesignOutcome:
     """Design the lift of ``deck``'s [design] section; InfeasibleDesign if none exists."""
-    from camtrain.deck.load import load_deck, parse_toml, validate
+    from camtrain.deck.load import load_deck, parse_toml
+
+    loaded = load_deck(str(deck))
+    base = Path(deck).resolve().parent if str(deck) != "-" else Path.cwd()
+    return design_raw(parse_toml(loaded.text, loaded.path), loaded.path, base, loaded.model)
+
+
+def design_raw(raw: dict, name: str, base_dir: str | Path, model=None) -> DesignOutcome:
+    """:func:`design_deck` on a raw deck dictionary (``model``: its validated model, if known).
+
+    The outcome's ``raw`` is a copy of ``raw`` with the spline [lift]."""
+    from camtrain.deck.load import validate
+    from camtrain.design.construct import design_lift
     from camtrain.lift.base import DEG, MM
     from camtrain.lift.spline import SplineLift
 
-    loaded = load_deck(str(deck))
-    ev, lift_tol, angle_tol = events_of(loaded.model)
-    from camtrain.design.construct import design_lift
-
+    if model is None:
+        model = validate(raw, name, Path(base_dir))
+    ev, lift_tol, angle_tol = events_of(model)
     try:
         made = design_lift(ev)
     except DesignInfeasible as exc:
         raise InfeasibleDesign(f"design: {exc}") from None
     law = SplineLift(made.knots * DEG, made.coefficients * MM, made.degree)
-    raw = copy.deepcopy(parse_toml(loaded.text, loaded.path))
+    raw = copy.deepcopy(raw)
     lift = raw.get("lift", {})
     raw["lift"] = {"form": "spline", "measured_at": lift.get("measured_at", "valve")}
     if "inspection_radius" in lift:
         raw["lift"]["inspection_radius"] = lift["inspection_radius"]
     raw["lift"]["spline"] = law.in_deck_units()
-    base = Path(deck).resolve().parent if str(deck) != "-" else Path.cwd()
-    validate(raw, loaded.path, base)       # the written deck must load as it is
+    validate(raw, name, Path(base_dir))       # the written deck must load as it is
     items = measure(ev, law, lift_tol, angle_tol)
     return DesignOutcome(law, raw, items, continuity(law), ev)
 

@@ -19,7 +19,12 @@ def optimum_raw(outcome: OptimizeOutcome) -> dict:
     p = outcome.problem
     case = Case(0, tuple((v.name, x) for v, x in zip(p.variables, outcome.optimum.x,
                                                      strict=True)))
-    return case_raw(p.raw, [v.param for v in p.variables], case)
+    raw = case_raw(p.raw, [v.param for v in p.variables], case)
+    if outcome.optimum.designed_lift is not None:     # the lift designed from its events
+        measured = raw.get("lift", {}).get("measured_at", "valve")
+        raw["lift"] = {"form": "spline", "measured_at": measured,
+                       "spline": outcome.optimum.designed_lift}
+    return raw
 
 
 def summary(outcome: OptimizeOutcome) -> dict:

@@ -9,6 +9,7 @@ otherwise, on this process, local workers or a Dask cluster. Metrics come back i
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from dataclasses import dataclass, field
@@ -148,6 +149,8 @@ class Point:
     margins: tuple[float, ...] = ()
     role: str = "iterate"
     iteration: int = 0
+    #: the case's [lift.spline] (deck units) when its lift was designed from [design] fields
+    designed_lift: dict | None = None
 
     @property
     def feasible(self) -> bool:
@@ -207,16 +210,18 @@ class Problem:
         else:
             work = [Job(self.raw, params, c, self.name, self.base_dir, False, self.key)
                     for c in cases]
-            records = list(self.executor.map(run_case, work))
+            designed = any(v.param.path.startswith("design.") for v in self.variables)
+            records = list(self.executor.map(run_designed_case if designed else run_case,
+                                             work))
         by_index = {r["index"]: in_units(r, "deck") for r in records}
         return [by_index[c.index] for c in cases]
 
     def _point(self, x: tuple[float, ...], rec: dict, role: str) -> Point:
         metrics = dict(rec["metrics"])
         if any(c.kind in ("area", "concave", "lambda") for c in self.constraints):
-            metrics.update(_derived(self, x, metrics))
+            metrics.update(_derived(self, x, metrics, rec.get("designed_lift")))
         point = Point(x, rec["status"], rec["message"], metrics, role=role,
-                      iteration=self.iteration)
+                      iteration=self.iteration, designed_lift=rec.get("designed_lift"))
         value = metrics.get(self.objective, (math.nan,))[0]
         point.objective = float(value) if rec["status"] in ("ok", "lost_contact") else math.nan
         datum = self.datum.metrics if self.datum is not None else None
@@ -224,7 +229,8 @@ class Problem:
         return point
 
 
-def _derived(problem: Problem, x: tuple[float, ...], metrics: dict) -> dict:
+def _derived(problem: Problem, x: tuple[float, ...], metrics: dict,
+             designed: dict | None = None) -> dict:
     """Metrics a constraint needs that a run does not give (or a failed case lacks): the
     valve-open area, the film parameter, and the smallest cam radius of curvature from the
     lift law and the kinematics kernel without the geometry checks (a case whose concave
@@ -244,6 +250,14 @@ def _derived(problem: Problem, x: tuple[float, ...], metrics: dict) -> dict:
         return out
     from camtrain.effects.kinematics import _cached_curve
 
+    if designed is not None:      # the case's own lift, designed from its events
+        from camtrain.deck.schema_lift import Lift, Spline
+        from camtrain.units import to_si
+
+        spline = Spline(degree=designed["degree"],
+                        knots=tuple(to_si(v, "deg") for v in designed["knots"]),
+                        coefficients=tuple(to_si(v, "mm") for v in designed["coefficients"]))
+        model = dataclasses.replace(model, lift=Lift(form="spline", spline=spline))
     curve = _cached_curve(model.lift, model.solver.angle_points)
     step = 2.0 * np.pi / curve.theta.size
     out["open_area"] = (float(from_si(np.sum(curve.lift) * step, "mm·deg")), "mm·deg")
@@ -254,6 +268,26 @@ def _derived(problem: Problem, x: tuple[float, ...], metrics: dict) -> dict:
         if rc is not None:
             out["cam_radius_min"] = (float(from_si(rc, "mm")), "mm")
     return out
+
+
+def run_designed_case(job) -> dict:
+    """A case whose variables include [design] fields: its lift is designed from its events
+    (:mod:`camtrain.design`), then it runs as an ordinary case; the record also carries the
+    designed ``[lift.spline]`` (deck units). Events no lift can meet make a failed case."""
+    from camtrain.design.command import design_raw
+    from camtrain.errors import CamtrainError
+    from camtrain.study.executors import Job, run_case
+    from camtrain.study.sweep import case_raw
+
+    try:
+        raw = design_raw(case_raw(job.raw, list(job.params), job.case), job.name,
+                         job.base_dir).raw
+    except CamtrainError as exc:
+        return {"index": job.case.index, "values": job.case.as_dict(), "status": "failed",
+                "message": f"{type(exc).__name__}: {exc}", "metrics": {}, "curves": None}
+    record = run_case(Job(raw, (), Case(job.case.index, ()), job.name, job.base_dir))
+    record.update(values=job.case.as_dict(), designed_lift=raw["lift"]["spline"])
+    return record
 
 
 def _film_parameter(metrics: dict, model) -> float:

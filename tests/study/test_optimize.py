@@ -189,3 +189,24 @@ def test_dask_scheduler_gives_the_serial_optimum():
     assert dask.optimum.x == serial.optimum.x
     assert dask.optimum.objective == serial.optimum.objective
     assert dask.evaluations == serial.evaluations
+
+
+def test_design_events_as_variables_redesign_the_lift(tmp_path):
+    import tomli_w
+    import tomllib
+
+    raw = tomllib.loads(HARRISON.read_text(encoding="utf-8"))
+    raw["design"] = {"max_lift": 9.4, "checking_heights": [1.0], "opening_angles": [54.2],
+                     "ramp_height": 0.5, "ramp_length": 25.0, "max_acceleration": 0.0324,
+                     "max_deceleration": 0.0075, "symmetric": True}
+    deck = tmp_path / "events.toml"
+    deck.write_text(tomli_w.dumps(raw), encoding="utf-8")
+    out = ct.optimize(deck, ["design.opening_angles[0]=50:58"], constraints=["open_area=3"],
+                      out_dir=tmp_path / "out", plots=False, maxiter=2)
+    assert not out.problem.route.batch
+    assert out.optimum.designed_lift is not None
+    rerun = ct.load(tmp_path / "out" / "optimum.toml").model
+    assert rerun.lift.form == "spline"
+    assert rerun.design.opening_angles[0] == pytest.approx(np.radians(out.optimum.x[0]))
+    assert ct.run(rerun).metrics["power_loss_mean"].value == pytest.approx(
+        out.optimum.objective, rel=1e-9)
