@@ -192,8 +192,9 @@ def test_dask_scheduler_gives_the_serial_optimum():
 
 
 def test_design_events_as_variables_redesign_the_lift(tmp_path):
-    import tomli_w
     import tomllib
+
+    import tomli_w
 
     raw = tomllib.loads(HARRISON.read_text(encoding="utf-8"))
     raw["design"] = {"max_lift": 9.4, "checking_heights": [1.0], "opening_angles": [54.2],
