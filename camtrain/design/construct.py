@@ -247,6 +247,8 @@ def _feasible(G: np.ndarray, h: np.ndarray) -> np.ndarray:
 
 
 def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
+    """The least-jerk-energy spline with the ramps ending at these angles [deg from the nose]."""
+    from scipy.linalg import null_space
 
     if ev.symmetric:
         end_close = end_open
@@ -266,22 +268,34 @@ def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
     xq = np.linspace(t[0], t[-1], 8 * ev.spans + 1)
     b3 = _basis(t, xq, 3)
     Q = b3.T @ b3 * (xq[1] - xq[0])
-    scale = 1.0 / max(np.max(np.abs(Q)), 1e-300)
     # the events fix an affine set c = c_p + N z (redundant rows, e.g. mirrored events of a
     # symmetric design, drop out here); the limits are inequalities on z
-    from scipy.linalg import null_space
-
     c_p = np.linalg.lstsq(A, b, rcond=None)[0]
     N = null_space(A, rcond=1e-10)
+    _feasible(G @ N, h - G @ c_p)       # raises at once when no lift meets the rows
+    c, G, h, message = _cutting_planes(ev, t, Q, c_p, N, G, h)
+    worst_eq = float(np.max(np.abs(A @ c - b)))
+    worst_in = float(np.max(G @ c - h))
+    tol = 1e-7 * max(1.0, ev.max_lift)
+    if worst_eq > tol or worst_in > tol:
+        raise DesignInfeasible(
+            f"no lift meets every event within the limits (largest event miss {worst_eq:.3g}, "
+            f"largest limit excess {worst_in:.3g} in mm and deg units; {message})")
+    c[np.abs(c) < 1e-13] = 0.0
+    return Designed(t, c, DEGREE, (-end_open, end_close), float(c @ Q @ c))
+
+
+def _cutting_planes(ev: Events, t, Q, c_p, N, G, h):
+    """Minimise c'Qc over c = c_p + N z subject to G c <= h: solve with the rows violated so
+    far, add the rows the solution violates (the collocation rows, then any excess a grid of
+    16 points per span finds), until none is; SLSQP sees only the rows that matter.
+    Returns (c, G, h with the added rows, the last solver message)."""
+    scale = 1.0 / max(np.max(np.abs(Q)), 1e-300)
     Qz, gz = N.T @ Q @ N * scale, 2.0 * N.T @ Q @ c_p * scale
     fine = np.linspace(t[0], t[-1], 16 * ev.spans + 1)
-    _feasible(G @ N, h - G @ c_p)       # raises at once when no lift meets the rows
-    # cutting planes: solve with the rows violated so far, add the rows the solution violates
-    # (the collocation rows, then any excess the fine grid finds), until none is violated;
-    # SLSQP sees only the few rows that matter
     z = np.linalg.lstsq(2.0 * Qz, -gz, rcond=None)[0]
     active = np.zeros(h.size, dtype=bool)
-    res = None
+    message = "no limit active"
     for _ in range(40):
         c = c_p + N @ z
         new = (G @ c - h > 1e-9 * np.maximum(1.0, np.abs(h))) & ~active
@@ -295,18 +309,9 @@ def _design_at(ev: Events, end_open: float, end_close: float) -> Designed:
             new[-extra_h.size:] = True
         active |= new
         res = _qp(Qz, gz, G[active] @ N, h[active] - G[active] @ c_p, z)
-        z = res.x
-    c = c_p + N @ z
-    worst_eq = float(np.max(np.abs(A @ c - b)))
-    worst_in = float(np.max(G @ c - h))
-    tol = 1e-7 * max(1.0, ev.max_lift)
-    if worst_eq > tol or worst_in > tol:
-        raise DesignInfeasible(
-            f"no lift meets every event within the limits (largest event miss {worst_eq:.3g}, "
-            f"largest limit excess {worst_in:.3g} in mm and deg units; "
-            f"{res.message if res is not None else 'no limit active'})")
-    c[np.abs(c) < 1e-13] = 0.0
-    return Designed(t, c, DEGREE, (-end_open, end_close), float(c @ Q @ c))
+        z, message = res.x, str(res.message)
+    return c_p + N @ z, G, h, message
+
 
 def _qp(Q: np.ndarray, g: np.ndarray, G: np.ndarray, h: np.ndarray, start: np.ndarray):
     """min z'Qz + g'z subject to G z <= h, by SLSQP (scipy) from ``start``."""
