@@ -25,7 +25,8 @@ def test_base_radius_optimum_is_balls_smallest_radius_for_a_convex_flank():
     """Friction falls with the base radius (Ball 1988 Ch 5), so under "no concave flank" the
     optimum is the smallest radius for which r_c = r_B + l + l'' > 0 (Ball §2.2.1): r_B,min =
     -min(l + l''), 13.590 mm for Harrison's four-power lift (Ball's "just over 20 %" below
-    the datum 18 mm), here computed from the lift law on a 0.001 deg grid."""
+    the datum 18 mm; docs/references/ball1988.md, DERIVED), here computed from the lift law
+    on a 0.001 deg grid."""
     law = build_lift_law(ct.load(HARRISON).model.lift)
     c = law.evaluate(np.radians(np.arange(-180.0, 180.0, 0.001)))
     r_min = -np.min(c.lift + c.d2) * 1e3
@@ -175,6 +176,15 @@ def test_cli_bad_arguments_exit_2_naming_the_option(args, field, tmp_path):
     assert run.returncode == 2, run.stderr
     assert field in run.stderr and "Traceback" not in run.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_worker_processes_give_the_serial_optimum():
+    serial = opt.optimize(HARRISON, ["base_radius=12:24", "spring.preload_compression=1:12"],
+                          constraints=["no_separation=3000", "no_concave_flank"])
+    shared = opt.optimize(HARRISON, ["base_radius=12:24", "spring.preload_compression=1:12"],
+                          constraints=["no_separation=3000", "no_concave_flank"], jobs=2)
+    assert shared.optimum.x == serial.optimum.x
+    assert shared.optimum.objective == serial.optimum.objective
 
 
 def test_dask_scheduler_gives_the_serial_optimum():
