@@ -151,3 +151,14 @@ def test_bad_design_field_names_it(tmp_path):
     run = _cli("design", _deck_with(tmp_path, "harrison_flat.toml", section))
     assert run.returncode == 2
     assert "design.opening_angles" in run.stderr and "Traceback" not in run.stderr
+
+
+def test_cli_design_writes_the_deck_and_report(tmp_path):
+    section = {"max_lift": 8.0, "checking_heights": [1.0], "opening_angles": [50.0],
+               "ramp_height": 0.3, "ramp_velocity": 0.015, "symmetric": True}
+    path = _deck_with(tmp_path, "harrison_flat.toml", section)
+    run = _cli("design", path, "--out", tmp_path / "out", "--quiet")
+    assert run.returncode == 0, run.stderr
+    for name in ("designed.toml", "design.md", "design.csv", "design.png"):
+        assert (tmp_path / "out" / name).is_file(), name
+    assert ct.load(tmp_path / "out" / "designed.toml").model.lift.form == "spline"
