@@ -155,5 +155,37 @@ def fit(deck: str | Path, data, constants, out_dir: str | Path, *, sets=(), jobs
                    jobs=jobs, scheduler=scheduler, confidence=confidence, plots=plots)
 
 
+def design(deck: str | Path, out_dir: str | Path | None = None, *, plots: bool = True):
+    """Build a lift law from the valve events and limits of ``deck``'s [design] section
+    (docs/design.md): a ``DesignOutcome`` with the law, the deck with a spline [lift]
+    (``raw``), every event and limit measured (``items``, ``all_met``). With ``out_dir``,
+    also write designed.toml, design.md, design.csv and design.png there."""
+    from camtrain.design.command import design_deck, write_design
+
+    outcome = design_deck(deck)
+    if out_dir is not None:
+        write_design(outcome, Path(out_dir), str(deck), plots=plots)
+    return outcome
+
+
+def optimize(deck: str | Path, variables, objective: str = "power_loss_mean",
+             constraints=(), out_dir: str | Path | None = None, *, plots: bool = True,
+             **options):
+    """Minimise ``objective`` of ``deck`` over ``variables`` (``"base_radius=12:24"`` or
+    ``(path, lower, upper)``, deck units) under ``constraints`` (``"no_concave_flank"``,
+    ``"no_separation=3000"``, ...; docs/design.md). ``options``: method, step, maxiter, jobs,
+    scheduler, sets, popsize, seed, progress. Returns an ``OptimizeOutcome`` (datum, optimum,
+    ``gains()``, ``active()``, the path); with ``out_dir`` also writes optimum.toml and the
+    report there."""
+    from camtrain.study.optimize import optimize as search
+
+    outcome = search(deck, variables, objective, constraints, **options)
+    if out_dir is not None:
+        from camtrain.study.optimize_output import write_optimize
+
+        write_optimize(outcome, out_dir, plots=plots)
+    return outcome
+
+
 def _model(deck: LoadedDeck | Deck) -> Deck:
     return deck.model if isinstance(deck, LoadedDeck) else deck

@@ -364,6 +364,7 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
 def _register_study_commands() -> None:
     # the study commands live in their own modules, which import only click at module level
     from camtrain.cli_accuracy import accuracy
+    from camtrain.cli_design import design, optimize
     from camtrain.cli_dynamics import dynamics_speed
     from camtrain.cli_fit import fit
     from camtrain.cli_friction_map import friction_map
@@ -376,6 +377,8 @@ def _register_study_commands() -> None:
     main.add_command(friction_map)
     main.add_command(sensitivity)
     main.add_command(fit)
+    main.add_command(design)
+    main.add_command(optimize)
 
 
 _register_study_commands()

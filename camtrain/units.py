@@ -38,6 +38,8 @@ UNITS: dict[str, tuple[float, str]] = {
     "N·s/m": (1.0, "N*s/m"),
     "mm/deg": (1e-3 / (math.pi / 180.0), "m/rad"),
     "mm/deg²": (1e-3 / (math.pi / 180.0) ** 2, "m/rad^2"),
+    "mm/deg³": (1e-3 / (math.pi / 180.0) ** 3, "m/rad^3"),
+    "mm·deg": (1e-3 * (math.pi / 180.0), "m*rad"),
     "mm²": (1e-6, "m^2"),
     "mm³": (1e-9, "m^3"),
     "J/(kg·K)": (1.0, "J/(kg*K)"),

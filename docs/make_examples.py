@@ -35,6 +35,11 @@ PUBLISHED = {
                        "his base-circle values compare: entrainment 0.9425 m/s and film "
                        "0.0938 µm, both reproduced (tests/lubrication/"
                        "test_transient_film_decks.py).", []),
+    "harrison_roller": ("Harrison's cam (lift, spring, masses) on camtrain's roller follower: "
+                        "a 12 mm cylinder that does not rotate (line contact, sliding as a "
+                        "pad; the radius is assumed). The roller counterpart of the flat deck "
+                        "in the optimisation examples (docs/design.md); no published numbers.",
+                        []),
     "harrison_flat": ("Ball's datum case: cam and flat-faced follower, Paul Harrison's data, "
                       "2500 rpm camshaft.", [
                           ("frictional power loss", 48.50, "W", "Ball 1988, Fig 5.1 header",

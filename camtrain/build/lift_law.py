@@ -68,4 +68,7 @@ def build_lift_law(lift: S.Lift) -> L.LiftLaw:
         p = lift.williams_low_jerk
         return L.WilliamsLowJerkLift(_low_jerk(p.opening), p.max_lift, p.nose_deceleration,
                                      _low_jerk(p.closing))
+    if form == "spline":
+        p = lift.spline
+        return L.SplineLift(p.knots, p.coefficients, p.degree)
     raise AssertionError(form)  # pragma: no cover - the schema admits only these forms

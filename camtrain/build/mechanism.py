@@ -64,7 +64,7 @@ def train_kinematics(mech: S.Mechanism, cam: S.Cam, speed: S.Speed,
                                    taper_angle=cam.taper_angle, min_concave_radius=wheel,
                                    face_length=mech.face_length, **common), None
         return M.domed(lift, base_radius=cam.base_radius, follower_radius=mech.follower_radius,
-                       offset=mech.offset, min_concave_radius=wheel,
+                       offset=mech.offset, shape=mech.follower_shape, min_concave_radius=wheel,
                        face_length=mech.face_length, **common), None
     if mech.type in S.PIVOTED:
         kind = "end" if mech.type == "finger" else "central"

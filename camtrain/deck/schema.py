@@ -18,6 +18,7 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
     CamLobe,
     Camshaft,
 )
+from camtrain.deck.schema_design import Design
 from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
@@ -174,6 +175,9 @@ class Mechanism:
     offset: float = quantity(
         "Offset of the follower axis from the cam centre (domed follower)", "mm", default=0.0,
         applies="domed")
+    follower_shape: Literal["spherical", "cylindrical"] = option(
+        "Face of a domed follower: spherical (point contact) or cylindrical (line contact: a "
+        "pad, or a roller that does not rotate)", default="spherical", applies="domed")
     face_length: float | None = quantity(
         "Usable length (flat: diameter) of the follower face; contact must stay on it", "mm",
         default=None, gt=0)
@@ -297,6 +301,8 @@ class Deck:
     dynamics: Dynamics | None = section(
         "Elastic valve train in time: contact loss, spring surge, valve seating (the dynamic "
         "contact load replaces the rigid train's)")
+    design: Design | None = section(
+        "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
 
     def problems(self, path: str) -> list[Problem]:
         out = []

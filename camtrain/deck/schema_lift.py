@@ -8,7 +8,7 @@ from camtrain.deck.fields import ExactlyOne, Together, When, option, quantity, s
 from camtrain.errors import Problem
 
 LIFT_FORMS = ("four_power", "multipol", "table", "exp_poly", "polynomial",
-              "williams_elementary", "williams_low_jerk")
+              "williams_elementary", "williams_low_jerk", "spline")
 
 
 # --------------------------------------------------------------------------- lift
@@ -208,13 +208,33 @@ class WilliamsLowJerk:
 
 
 @dataclass(frozen=True, kw_only=True)
+class Spline:
+    """Lift as a B-spline over the event (the form camtrain design writes; docs/design.md)."""
+
+    degree: int = quantity("Degree of the B-spline (5: quintic lift, cubic acceleration, "
+                           "continuous jerk)", "-", default=5, ge=1, le=9)
+    knots: tuple[float, ...] = quantity(
+        "Full knot vector, cam angles from the nose, non-decreasing, each end repeated "
+        "degree + 1 times (coefficients + degree + 1 values)", "deg", min_items=4)
+    coefficients: tuple[float, ...] = quantity(
+        "B-spline coefficients; the first and last are 0 (the base circle)", "mm", min_items=2)
+
+    def problems(self, path: str) -> list[Problem]:
+        if len(self.knots) != len(self.coefficients) + self.degree + 1:
+            return [Problem(f"{path}.knots", f"has {len(self.knots)} values for "
+                            f"{len(self.coefficients)} coefficients of degree {self.degree}",
+                            None, f"{len(self.coefficients) + self.degree + 1} knots")]
+        return []
+
+
+@dataclass(frozen=True, kw_only=True)
 class Lift:
     """The lift law. Angles are cam degrees from the maximum-lift (nose) position."""
 
     form: Literal["four_power", "multipol", "table", "exp_poly", "polynomial",
-                  "williams_elementary", "williams_low_jerk"] = option(
+                  "williams_elementary", "williams_low_jerk", "spline"] = option(
         "Lift form: four_power, multipol, table, exp_poly, polynomial, williams_elementary, "
-        "williams_low_jerk", example="four_power")
+        "williams_low_jerk, spline", example="four_power")
     measured_at: Literal["valve", "cam"] = option(
         "Lift given at the valve, or at the cam on an inspection follower", default="valve")
     inspection_radius: float | None = quantity(
@@ -231,6 +251,8 @@ class Lift:
         "Williams elementary curve", applies="form = williams_elementary")
     williams_low_jerk: WilliamsLowJerk | None = section(
         "Williams low-jerk curve", applies="form = williams_low_jerk")
+    spline: Spline | None = section("B-spline lift (written by camtrain design)",
+                                    applies="form = spline")
 
     schema_rules = tuple(When("form", (form,), require=(form,),
                               forbid=tuple(f for f in LIFT_FORMS if f != form))

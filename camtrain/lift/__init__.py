@@ -19,6 +19,7 @@ from camtrain.lift.four_power import FourPowerLift
 from camtrain.lift.multipol import MultipolLift, Segment
 from camtrain.lift.polynomial import PolynomialLift, polydyne_coefficients
 from camtrain.lift.ramps import Ramps
+from camtrain.lift.spline import SplineLift
 from camtrain.lift.table import TableLift, TableNoise
 from camtrain.lift.williams import (
     ElementaryHalf,
@@ -35,11 +36,12 @@ REGISTRY: dict[str, type[LiftLaw]] = {
     "polynomial": PolynomialLift,
     "williams_elementary": WilliamsElementaryLift,
     "williams_low_jerk": WilliamsLowJerkLift,
+    "spline": SplineLift,
 }
 
 __all__ = [
     "DEG", "MM", "REGISTRY", "ElementaryHalf", "ExpPolyLift", "FourPowerLift", "JointJump",
     "LiftCurve", "LiftLaw", "LowJerkHalf", "MultipolLift", "PolynomialLift", "Ramps", "Segment",
-    "TableLift", "TableNoise", "WilliamsElementaryLift", "WilliamsLowJerkLift", "angle_grid",
+    "SplineLift", "TableLift", "TableNoise", "WilliamsElementaryLift", "WilliamsLowJerkLift", "angle_grid",
     "evaluate_on_grid", "polydyne_coefficients",
 ]

@@ -69,7 +69,8 @@ def translating_kinematics(datum, valve, scal: dict, n: int):
                                  base_radius=scal["base_radius"],
                                  follower_radius=np.inf if flat else scal["follower_radius"],
                                  offset=0.0 if flat or taper is not None else mech.offset,
-                                 omega=scal["omega"], taper_angle=taper)
+                                 omega=scal["omega"], taper_angle=taper,
+                                 shape="spherical" if flat else mech.follower_shape)
     with np.errstate(divide="ignore"):
         ratio = 1.0 / fields["arm_normal"]
     lc = valve

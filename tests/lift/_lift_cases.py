@@ -14,6 +14,7 @@ from camtrain.lift import (
     MultipolLift,
     PolynomialLift,
     Ramps,
+    SplineLift,
     WilliamsElementaryLift,
     WilliamsLowJerkLift,
 )
@@ -62,10 +63,20 @@ def analytic_laws() -> dict[str, object]:
                                                  ramps=Ramps(0.3 * MM, 20.0 * DEG)), True),
         "williams_elementary": (elementary_law(), True),
         "williams_low_jerk": (app1_law(), True),
+        "spline_bump": (spline_bump(), True),
         "williams_low_jerk_asym": (WilliamsLowJerkLift(
             app1_half(), 9.25 * MM, 0.00445 * ACC,
             closing=app1_half(s1=0.30, T=[12.0, 20.0] + APP1_T[2:])), False),
     }
+
+
+def spline_bump() -> SplineLift:
+    """A symmetric quintic B-spline over +-60 deg, 8 spans: lift, velocity, acceleration and
+    jerk zero at both ends (four zero coefficients each side)."""
+    inner = np.linspace(-60.0, 60.0, 9)
+    knots = np.concatenate(([-60.0] * 5, inner, [60.0] * 5)) * DEG
+    coefficients = np.array([0, 0, 0, 0, 1.0, 4.0, 8.0, 4.0, 1.0, 0, 0, 0, 0]) * MM
+    return SplineLift(knots, coefficients, 5)
 
 
 def problem(exc: InputError):

@@ -30,9 +30,9 @@ LAWS = analytic_laws()
 NAMES = sorted(LAWS)
 
 
-def test_registry_names_the_seven_forms():
+def test_registry_names_the_eight_forms():
     assert set(REGISTRY) == {"four_power", "multipol", "table", "exp_poly", "polynomial",
-                             "williams_elementary", "williams_low_jerk"}
+                             "williams_elementary", "williams_low_jerk", "spline"}
     for form, cls in REGISTRY.items():
         assert issubclass(cls, LiftLaw) and cls.form == form
 
