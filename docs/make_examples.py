@@ -231,6 +231,11 @@ PUBLISHED = {
                          "chamber gas (eq. 5.17's x_4), and Yang prints no outlet rule for a "
                          "starved ring (strict xfail in tests/piston/test_pack.py)"),
                     ]),
+    "zeta_bare_engine": ("The Ford Zeta as a bare engine (bore, stroke, cylinders, bearing "
+                         "sizes, valve-train layout, oil grade): the Patton-Nitschke-Heywood and "
+                         "Sandoval-Heywood correlations alone, without FLAME's component models "
+                         "(docs/engine.md). The correlations publish no Zeta figure to compare "
+                         "with.", []),
     "bearing_ocvirk_check": ("A stand-alone short journal bearing under a constant 500 N load: "
                              "a check against Ocvirk's closed-form short-bearing solution "
                              "(not a published result of the sources).", [
