@@ -14,7 +14,7 @@ import numpy as np
 from camtrain import __version__
 from camtrain.report import profile
 from camtrain.report.findings import Findings, find
-from camtrain.report.header import header_rows, title_line
+from camtrain.report.header import header_rows, report_heading, title_line
 from camtrain.report.page import Page
 from camtrain.report.panels import PANELS as CYCLE_PANELS
 from camtrain.report.panels import Ctx
@@ -60,7 +60,7 @@ def _header(fig, rect, deck, result: Result, heading: str, sha: str | None,
         fig.text(x, y, s, transform=band, **kw)
 
     text(0.0, 1.0, title or title_line(deck), fontsize=11, fontweight="bold", va="top")
-    text(0.0, 0.72, "CAM OPERATING CHARACTERISTICS", fontsize=7.5, color="#595959", va="top")
+    text(0.0, 0.72, report_heading(deck), fontsize=7.5, color="#595959", va="top")
     text(0.0, 0.58, heading, fontsize=10, va="top")
     foot = f"camtrain {__version__}" + (f"\ndeck sha256 {sha[:16]}" if sha else "")
     text(0.0, 0.0, foot, fontsize=6.5, color="#7f7f7f", va="bottom", linespacing=1.4)
@@ -221,8 +221,8 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
                 written += _save(page.fig, out_dir / f"sheet_{name}", formats)
                 drawn.add(name)
             done += 1
-            if progress:
-                progress(f"sheet {name}", done, total)
+            if progress:   # name only a sheet that was drawn (a deck without a shaft has none)
+                progress(f"sheet {name}" if name in drawn else "sheets", done, total)
         if single_panels:
             (out_dir / "panels").mkdir(exist_ok=True)
             panel_fig, square_fig = _figure(PANEL_SIZE), _figure((6.4, 6.4))
@@ -233,7 +233,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
                     written += _save(f, out_dir / "panels" / pname, formats)
                 done += 1
                 if progress:
-                    progress(f"panel {pname}", done, total)
+                    progress(f"panel {pname}" if sheet in drawn else "panels", done, total)
     return written + orbits
 
 

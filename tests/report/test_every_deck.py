@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import csv
 import json
+import math
+import re
 
 import pytest
 
 from camtrain import api
+from camtrain.report.display import fmt
 from tests.conftest import DECKS
 
 DECK_FILES = sorted(p.name for p in DECKS.glob("*.toml"))
@@ -44,3 +47,35 @@ def test_deck_outputs_render_and_parse(name, tmp_path):
         assert all(len(r) == len(header) for r in body)
     assert sum(len([c for c in result.columns.values() if c.axis == a])
                for a in result.axes) in (0, len(result.columns))
+    _check_terminal(name, result, loaded.model)
+
+
+def _check_terminal(name, result, deck):
+    """What the terminal prints after the run: the declared key results and summary tables;
+    an engine its crank-bearing table and FLAME total, a crank train the big-end's film."""
+    import io
+
+    from camtrain.report.console import PlainOut, key_metric_names, print_run, summary_tables
+
+    stream = io.StringIO()
+    print_run(PlainOut(stream, width=100), result, [], None, None, deck)
+    out = stream.getvalue()
+    assert key_metric_names(result), "no key result printed"
+    for table in summary_tables(result, deck):
+        assert table.title in out
+    if name == "zeta_engine.toml":
+        m = result.metrics
+        assert "engine friction (FLAME total)" in out and "crank bearings" in out
+        assert _row(out, "fmep [kPa]", fmt(m["fmep"].value * 1e-3))
+        assert _row(out, "total", fmt(m["flame_total"].value), "100.0")
+        share = 100 * m["flame_piston"].value / m["flame_total"].value
+        assert _row(out, "pistons", fmt(m["flame_piston"].value), f"{share:.1f}")
+    if name in ("zeta_engine.toml", "ruston_6veb.toml", "zeta_crank_bearings.toml"):
+        film = result.metrics["big_end_1_min_film_dynamic"]
+        assert _row(out, "big-end 1", fmt(film.value * 1e6), f"{math.degrees(film.angle):.1f}")
+
+
+def _row(out: str, *cells: str) -> bool:
+    """A table row that starts with these cells (whatever their padding)."""
+    pattern = r"│\s*" + r"\s*│\s*".join(re.escape(c) for c in cells) + r"\s*│"
+    return re.search(pattern, out) is not None
