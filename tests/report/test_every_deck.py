@@ -1,5 +1,7 @@
 """Every example deck runs and writes its full outputs: every sheet renders (files exist, sane
-sizes, no warnings), cycle.csv and summary.json parse back complete."""
+sizes, no warnings) with a clean layout (no text outside the page, no title or legend over a
+plot or its ticks, no legend over the data), cycle.csv and summary.json parse back complete,
+and the terminal prints what the effects declare."""
 from __future__ import annotations
 
 import csv
@@ -18,10 +20,22 @@ DECK_FILES = sorted(p.name for p in DECKS.glob("*.toml"))
 
 @pytest.mark.filterwarnings("error")
 @pytest.mark.parametrize("name", DECK_FILES)
-def test_deck_outputs_render_and_parse(name, tmp_path):
+def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
+    import camtrain.report.canvas as canvas
+    from camtrain.report.layout import layout_problems
+
+    problems, save_png = {}, canvas.save_png
+
+    def checked_save_png(fig, path, software=""):
+        problems[path.name] = layout_problems(fig)
+        save_png(fig, path, software)
+
+    monkeypatch.setattr(canvas, "save_png", checked_save_png)
     loaded = api.load(DECKS / name)
     result = api.run(loaded)
     written = api.write(result, loaded, tmp_path, 0.0, plots="pdf")
+    assert set(problems) == {p.name for p in written if p.suffix == ".png"}
+    assert {k: v for k, v in problems.items() if v} == {}
     names = {p.name for p in written}
     assert {"cycle.csv", "summary.json", "report.txt"} <= names
     pngs = [p for p in written if p.suffix == ".png"]
