@@ -55,13 +55,16 @@ def _name(text) -> str:
     return repr(s if len(s) <= 40 else s[:37] + "...")
 
 
-def layout_problems(fig) -> list[str]:
-    """What is wrong with the layout of ``fig`` (empty when nothing is)."""
+def layout_problems(fig, draw: bool = True) -> list[str]:
+    """What is wrong with the layout of ``fig`` (empty when nothing is). ``draw=False`` for a
+    figure just drawn (saved): its texts are measured where that drawing put them."""
     if not hasattr(fig.canvas, "get_renderer"):     # a bare Figure: give it an Agg canvas
         from matplotlib.backends.backend_agg import FigureCanvasAgg
 
         FigureCanvasAgg(fig)
-    fig.canvas.draw()
+        draw = True
+    if draw:
+        fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     page = fig.bbox
     axes = [ax for ax in fig.axes if ax.get_visible()]

@@ -27,8 +27,8 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     problems, save_png = {}, canvas.save_png
 
     def checked_save_png(fig, path, software=""):
-        problems[path.name] = layout_problems(fig)
         save_png(fig, path, software)
+        problems[path.name] = layout_problems(fig, draw=False)   # as it was just drawn
 
     monkeypatch.setattr(canvas, "save_png", checked_save_png)
     loaded = api.load(DECKS / name)
