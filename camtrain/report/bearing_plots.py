@@ -128,7 +128,28 @@ ORBIT_NOTE = ("Journal-centre path: radius = eccentricity ratio (dashed: the cle
               "the cycle goes on; star: the thinnest film.")
 
 
-def orbit_figure(series: OrbitSeries, title: str = "", sha: str | None = None):
+def rotation_note(deck) -> str:
+    """The sense in which the journal turns in its frame, from the deck: an engine's crank turns
+    counter-clockwise (camtrain.engine.crank), a camshaft as its ``camshaft.rotation`` says, a
+    stand-alone journal as the sign of its speed relative to the bush."""
+    if deck is None:
+        return ""
+    if hasattr(deck, "engine"):
+        return "The crank turns counter-clockwise in these frames."
+    shaft = getattr(deck, "camshaft", None)
+    if shaft is not None:
+        sense = "counter-clockwise" if shaft.rotation == "anticlockwise" else "clockwise"
+        return f"The camshaft turns {sense} (camshaft.rotation)."
+    speed = getattr(deck, "speed", None)
+    if speed is not None and hasattr(speed, "journal"):
+        relative = speed.journal - speed.bearing
+        sense = "counter-clockwise" if relative >= 0 else "clockwise"
+        return f"The journal turns {sense} relative to the bush (speed.journal, speed.bearing)."
+    return ""
+
+
+def orbit_figure(series: OrbitSeries, title: str = "", sha: str | None = None,
+                 rotation: str = ""):
     """A matplotlib Figure with one polar orbit, its legend beside it and the convention and
     provenance under it."""
     import matplotlib
@@ -155,7 +176,8 @@ def orbit_figure(series: OrbitSeries, title: str = "", sha: str | None = None):
 
             head.set_text(fit_text(title, 0.96 * fig.bbox.width, measure))
         foot = f"camtrain {__version__}" + (f", deck sha256 {sha[:16]}" if sha else "")
-        fig.text(0.02, 0.015, _wrapped(ORBIT_NOTE, 110) + "\n" + foot, fontsize=6,
+        note = ORBIT_NOTE + (f" {rotation}" if rotation else "")
+        fig.text(0.02, 0.015, _wrapped(note, 110) + "\n" + foot, fontsize=6,
                  color="#404040", va="bottom")
     return fig
 
@@ -167,8 +189,9 @@ def _wrapped(text: str, width: int) -> str:
 
 
 def write_orbit_plots(result: Result, out_dir: Path, *, title: str = "",
-                      fmt: str = "png", sha: str | None = None) -> list[Path]:
-    """One polar orbit plot per bearing, ``orbit_<bearing>.<fmt>``; returns the files."""
+                      fmt: str = "png", sha: str | None = None, deck=None) -> list[Path]:
+    """One polar orbit plot per bearing, ``orbit_<bearing>.<fmt>``; returns the files.
+    ``deck`` (when given) says which way the journal turns."""
     from camtrain.report.canvas import save_sheet
 
     out_dir = Path(out_dir)
@@ -176,7 +199,7 @@ def write_orbit_plots(result: Result, out_dir: Path, *, title: str = "",
     written = []
     for s in orbit_series(result):
         stem = out_dir / ("orbit_" + s.label.replace(" ", "_").replace("-", "_"))
-        written += save_sheet(orbit_figure(s, title, sha), stem, (fmt,))
+        written += save_sheet(orbit_figure(s, title, sha, rotation_note(deck)), stem, (fmt,))
     return written
 
 
@@ -205,8 +228,8 @@ def orbit_sheets(result: Result, out_dir: Path, *, deck=None, sha: str | None = 
                 orbit_axes(ax, s, markers=False, small=True)
                 ax.set_title(f"{s.label} ({s.frame})\n{thinnest_text(s)}", fontsize=7.5,
                              pad=17)
-            foot_note(fig, _wrapped(ORBIT_NOTE + " Rings at eccentricity ratio 0.25, 0.5, "
-                                    "0.75.", 150))
+            foot_note(fig, _wrapped(f"{ORBIT_NOTE} {rotation_note(deck)} Rings at "
+                                    "eccentricity ratio 0.25, 0.5, 0.75.", 150))
             stem = Path(out_dir) / ("sheet_orbits" if page == 0 else f"sheet_orbits_{page + 1}")
             Path(out_dir).mkdir(parents=True, exist_ok=True)
             written += save_sheet(fig, stem, formats)

@@ -154,7 +154,8 @@ def _other_sheets(result: Result, deck, out_dir: Path, formats, sha: str | None,
         written += orbit_sheets(result, out_dir, deck=deck, sha=sha, formats=formats)
         title = getattr(deck, "title", "") if deck is not None else ""
         for ext in formats:
-            written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha)
+            written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha,
+                                         deck=deck)
     for name, draw in (("lobes", lobe_sheet), ("engine loads", load_sheet),
                        ("piston", piston_sheet)):
         files = draw(result, out_dir, deck=deck, sha=sha, formats=formats)
