@@ -191,7 +191,7 @@ def print_run(out, result: Result, written: list[Path], checks=None,
         out.table(table)
     for table in summary_tables(result, deck):
         out.table(table)
-    if result.metrics:
+    if result.metrics and out_dir is not None:      # a run's files (camtrain lift has a table)
         out.line(f"{len(result.metrics)} results in all (summary.json, report.txt)")
     for w in result.warnings + find(result).messages(result.warnings):
         out.line(("warning:", "yellow"), f" {w}")

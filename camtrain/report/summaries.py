@@ -123,7 +123,7 @@ def flame(result: Result, deck) -> list[Table]:
     if not parts or total is None:
         return []
     table = Table("engine friction (FLAME total)", _right("component", "power [W]",
-                                                          "share [%]"))
+                                                          "of total [%]"))
     for label, power in parts:
         share = 100.0 * power / total.value if total.value else math.nan
         table.add_row(label, fmt(power), f"{share:.1f}")

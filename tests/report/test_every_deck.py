@@ -12,6 +12,7 @@ import re
 import pytest
 
 from camtrain import api
+from camtrain.effects.catalogue import kind_of
 from camtrain.report.display import fmt
 from tests.conftest import DECKS
 
@@ -62,6 +63,10 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     assert sum(len([c for c in result.columns.values() if c.axis == a])
                for a in result.axes) in (0, len(result.columns))
     _check_terminal(name, result, loaded.model)
+    heading = (tmp_path / "report.txt").read_text(encoding="utf-8").splitlines()[1]
+    kind = kind_of(loaded.model)
+    assert kind.title in heading
+    assert (kind.name == "valve_train") == ("CAM OPERATING" in heading)
 
 
 def _check_terminal(name, result, deck):
