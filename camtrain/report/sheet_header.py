@@ -82,12 +82,12 @@ def _width(text) -> float:
     return text.get_window_extent(text.figure.canvas.get_renderer()).width
 
 
-def fit_title(text, width_px: float, deck=None) -> None:
-    """Fit a title line into ``width_px``: a smaller font first, then the deck's title
-    shortened at a word (the speed after it is kept)."""
+def fit_title(text, width_px: float, deck=None, sizes=(11, 10, 9)) -> None:
+    """Fit a title line into ``width_px``: a smaller font first (``sizes`` [pt]), then the
+    deck's title shortened at a word (the speed after it is kept)."""
     from camtrain.report.layout import fit_text
 
-    for size in (11, 10, 9):
+    for size in sizes:
         text.set_fontsize(size)
         if _width(text) <= width_px:
             return

@@ -28,6 +28,7 @@ from camtrain.report.sheet_header import (
     TITLE_IN,
     XLABEL_IN,
     _frac,
+    fit_title,
     header,
 )
 from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
@@ -126,7 +127,8 @@ def _panel(fig, result: Result, deck, pname: str, ctx: Ctx) -> bool:
         title = PANELS[pname][0]
         ok = PANELS[pname][1](ax, result, ctx)
     ax.set_title(title)
-    fig.suptitle(title_line(deck), fontsize=7.5, color="#595959", y=0.995)
+    head = fig.suptitle(title_line(deck), fontsize=7.5, color="#595959", y=0.995)
+    fit_title(head, 0.96 * fig.bbox.width, deck, sizes=(7.5, 7.0, 6.5))
     return bool(ok)
 
 
