@@ -116,3 +116,15 @@ def test_dynamics_speed_says_its_speeds_are_the_camshafts():
                    "bounce_speed": 2500.0, "bounce_angle": -30.0})
     assert "camshaft rpm" in text
     assert all("rpm camshaft" in line for line in text.splitlines()[2:4])
+
+
+def test_a_long_effect_says_what_it_does_now():
+    """The crank-bearing effect names each bearing as it marches its orbit; the progress
+    callback gets it as "<effect>: <what>" with the effect's place in the plan."""
+    seen = []
+    api.run(DECKS / "zeta_crank_bearings.toml",
+            progress=lambda label, done, total: seen.append((label, done, total)))
+    bearings = [(label, done) for label, done, _ in seen if label.startswith("crank_bearings")]
+    assert ("crank_bearings: big-end 1 of 4", 1) in bearings
+    assert ("crank_bearings: main 5 of 5", 1) in bearings
+    assert seen[-1][0] == "done" and seen[-1][1] == seen[-1][2]
