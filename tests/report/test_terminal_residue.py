@@ -46,7 +46,8 @@ def screen(output: str) -> str:
 def test_progress_leaves_no_trace_on_a_terminal(tmp_path):
     main, secondary = pty.openpty()
     env = {**os.environ, "PYTHONPATH": str(ROOT), "COLUMNS": "100", "TERM": "xterm"}
-    env.pop("NO_COLOR", None)
+    for name in ("NO_COLOR", "FORCE_COLOR", "TTY_COMPATIBLE", "TTY_INTERACTIVE"):
+        env.pop(name, None)          # the terminal library decides from the pseudo-terminal
     proc = subprocess.Popen(
         [sys.executable, "-m", "camtrain.cli", "run", str(DECKS / "harrison_flat.toml"),
          str(DECKS / "bearing_ocvirk_check.toml"), "--no-plots", "--out", str(tmp_path)],
