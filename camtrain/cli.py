@@ -244,6 +244,8 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
 
     Returns (report, summary, after): ``after()`` prints the deck's report once its progress
     bar is gone."""
+    from functools import partial
+
     from camtrain import api
     from camtrain.report.junit import DeckReport
     from camtrain.report.limits import violated
@@ -295,21 +297,27 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     report.seconds = time.perf_counter() - start
     report.checks = checks
     report.exit_code = 1 if violated(checks) else 0
-
-    def after() -> None:
-        if show:
-            from camtrain.report.console import print_plan, print_run
-
-            console.rule((loaded.model.title, "bold"), f"  ({deck})")
-            print_plan(console, result.plan, result.timings)
-            print_run(console, result, written, checks, out_dir, loaded.model)
-        elif check and violated(checks):
-            from camtrain.report.console import print_checks
-
-            click.echo(f"{deck}:")
-            print_checks(console or _console(), violated(checks))
-
+    after = partial(_print_deck, console, deck, loaded, result, written, checks, out_dir,
+                    show=show, check=check)
     return report, summary_dict(result, loaded, wall, checks, units), after
+
+
+def _print_deck(console, deck: str, loaded, result, written, checks, out_dir, *, show: bool,
+                check: bool) -> None:
+    """A deck's report after its run (or only its violated limits with --check --quiet)."""
+    from camtrain.report.limits import violated
+
+    if show:
+        from camtrain.report.console import print_plan, print_run
+
+        console.rule((loaded.model.title, "bold"), f"  ({deck})")
+        print_plan(console, result.plan, result.timings)
+        print_run(console, result, written, checks, out_dir, loaded.model)
+    elif check and violated(checks):
+        from camtrain.report.console import print_checks
+
+        click.echo(f"{deck}:")
+        print_checks(console or _console(), violated(checks))
 
 
 def _print_batch(console, reports, check: bool) -> None:
