@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test test-reverse test-folders test-oldest fuzz bench lint clean venv
+.PHONY: demo test test-reverse test-folders test-oldest fuzz bench lint docs clean venv
 
 venv: $(STAMP)
 
@@ -51,8 +51,19 @@ fuzz: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -p no:cacheprovider
 
+# The documentation site: the gallery (every shipped deck run, its sheets and key results) is
+# generated, then docs/ is built into site/ by MkDocs; any warning fails the build.
+DOCS_STAMP := $(VENV)/.docs-installed
+$(DOCS_STAMP): $(STAMP) pyproject.toml
+	$(BIN)/python -m pip install --quiet -e '.[docs]'
+	touch $@
+
+docs: $(DOCS_STAMP)
+	$(BIN)/python docs/make_gallery.py
+	NO_MKDOCS_2_WARNING=1 $(BIN)/python -m mkdocs build --strict
+
 lint: $(STAMP)
 	$(BIN)/ruff check camtrain tests benchmarks
 
 clean:
-	rm -rf $(VENV) $(OLDEST) out build *.egg-info
+	rm -rf $(VENV) $(OLDEST) out build site docs/gallery docs/gallery.md *.egg-info

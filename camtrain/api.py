@@ -47,13 +47,15 @@ def plan(deck: LoadedDeck | Deck) -> Plan:
     return resolve(_model(deck))
 
 
-def run(deck: LoadedDeck | Deck | str | Path) -> Result:
-    """Run a deck (object or path) of any kind and return its Result."""
+def run(deck: LoadedDeck | Deck | str | Path, progress=None) -> Result:
+    """Run a deck (object or path) of any kind and return its Result.
+
+    ``progress(effect name, done, total)``, when given, is called before each effect runs."""
     from camtrain.runner import run_plan
 
     if isinstance(deck, str | Path):
         deck = load(deck)
-    return run_plan(_model(deck))
+    return run_plan(_model(deck), progress=progress)
 
 
 def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Result:

@@ -177,24 +177,23 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
 
         watch(lambda text: click.echo(text, err=True))
     reports, summaries, codes = [], [], []
+    from contextlib import nullcontext
+
     if show:
         from camtrain.report.console import progress_bar
-
-        bars = progress_bar(enabled=True)
-    else:
-        from contextlib import nullcontext
-
-        bars = nullcontext()
-    with interruptible(), bars as bar:
-        overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
-        for deck, out_dir in zip(decks, targets, strict=True):
-            report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
-                                       check=check, units=units)
+    with interruptible():
+        for i, (deck, out_dir) in enumerate(zip(decks, targets, strict=True)):
+            place = f"[{i + 1}/{len(decks)}] " if len(decks) > 1 else ""
+            # one transient bar per deck, gone before the deck's report is printed: nothing
+            # is drawn under a live bar, so the terminal keeps no trace of it
+            with progress_bar(enabled=True) if show else nullcontext() as bar:
+                report, summary, after = _run_one(deck, out_dir, plots, bar, console,
+                                                  show=show, check=check, units=units,
+                                                  place=place)
+            after()
             reports.append(report)
             summaries.append(summary)
             codes.append(report.exit_code if (check or report.exit_code != 1) else 0)
-            if overall is not None:
-                bar.advance(overall)
     if junit:
         from camtrain.report.tables import atomic_write
 
@@ -236,10 +235,23 @@ def _escape(text: str) -> str:
     return escape(text)
 
 
+def _say(bar, text: str) -> None:
+    """A line on standard error now: through the live bar's console when one is drawn (it is
+    printed above the bar, which is then redrawn below it), else plainly."""
+    if bar is not None:
+        bar.console.print(text, markup=False, highlight=False, soft_wrap=True)
+    else:
+        click.echo(text, err=True)
+
+
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
-             units: str = "deck"):
-    """Load, run, check and write one deck; errors become a report, never an exception."""
+             units: str = "deck", place: str = ""):
+    """Load, run, check and write one deck; errors become a report, never an exception.
+
+    Returns (report, summary, after): ``after()`` prints the deck's report once its progress
+    bar is gone."""
     from contextlib import ExitStack
+    from functools import partial
 
     from camtrain import api
     from camtrain.output_lock import output_lock
@@ -251,25 +263,27 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     name = out_dir.name
     report = DeckReport(name=name, path=deck)
     start = time.perf_counter()
-    task = bar.add_task(_escape(f"{name}: running"), total=None) if bar else None
+    task = bar.add_task(_escape(f"{place}{name}: loading"), total=None) if bar else None
+
+    def step(label: str, done: int, total: int) -> None:
+        if bar:
+            bar.update(task, description=_escape(f"{place}{name}: {label}"), completed=done,
+                       total=total)
+
     lock = ExitStack()
     try:
         lock.enter_context(output_lock(out_dir))   # one writer per directory, from the start
         loaded = api.load(deck)
         sizes = api.implausible(loaded)
         for w in sizes:                   # before the run: it explains a geometry failure there
-            click.echo(f"warning: {w}", err=True)
-        result = api.run(loaded)
+            _say(bar, f"warning: {w}")
+        result = api.run(loaded, progress=lambda effect, done, total: step(
+            f"running {effect} (effect {min(done + 1, total)} of {total})", done, total))
         for w in sizes:
             result.warn(w)
         wall = time.perf_counter() - start
         checks = check_limits(result, loaded)
-
-        def step(label: str, done: int, total: int) -> None:
-            if bar:
-                bar.update(task, description=_escape(f"{name}: {label}"), completed=done,
-                           total=total)
-
+        step("writing tables", 0, 1)
         written = write_run(result, loaded, out_dir, wall, checks=checks, plots=plots,
                             progress=step, units=units)
     except CamtrainError as exc:
@@ -277,15 +291,16 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
         message = str(exc) if shown in str(exc) else f"{shown}: {exc}"
         report.error, report.exit_code = message, exc.exit_code
         report.seconds = time.perf_counter() - start
-        click.echo(f"error: {report.error}", err=True)
-        return report, {"deck": {"path": deck}, "error": str(exc), "exit_code": exc.exit_code}
+        return report, {"deck": {"path": deck}, "error": str(exc), "exit_code": exc.exit_code}, \
+            lambda: click.echo(f"error: {report.error}", err=True)
     except Exception as exc:  # noqa: BLE001 - one bad deck must not hide the others' results
         report.error = f"{deck}: internal error: {type(exc).__name__}: {exc}"
         report.exit_code = EXIT_INTERNAL
         report.seconds = time.perf_counter() - start
-        click.echo(f"error: {report.error}\nThis is a bug; please report it with the deck.",
-                   err=True)
-        return report, {"deck": {"path": deck}, "error": report.error, "exit_code": EXIT_INTERNAL}
+        return report, {"deck": {"path": deck}, "error": report.error,
+                        "exit_code": EXIT_INTERNAL}, \
+            lambda: click.echo(f"error: {report.error}\nThis is a bug; please report it with "
+                               "the deck.", err=True)
     finally:
         lock.close()
         if bar and task is not None:
@@ -293,18 +308,27 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     report.seconds = time.perf_counter() - start
     report.checks = checks
     report.exit_code = 1 if violated(checks) else 0
+    after = partial(_print_deck, console, deck, loaded, result, written, checks, out_dir,
+                    show=show, check=check)
+    return report, summary_dict(result, loaded, wall, checks, units), after
+
+
+def _print_deck(console, deck: str, loaded, result, written, checks, out_dir, *, show: bool,
+                check: bool) -> None:
+    """A deck's report after its run (or only its violated limits with --check --quiet)."""
+    from camtrain.report.limits import violated
+
     if show:
         from camtrain.report.console import print_plan, print_run
 
         console.rule((loaded.model.title, "bold"), f"  ({deck})")
         print_plan(console, result.plan, result.timings)
-        print_run(console, result, written, checks, out_dir)
+        print_run(console, result, written, checks, out_dir, loaded.model)
     elif check and violated(checks):
         from camtrain.report.console import print_checks
 
         click.echo(f"{deck}:")
         print_checks(console or _console(), violated(checks))
-    return report, summary_dict(result, loaded, wall, checks, units)
 
 
 def _print_batch(console, reports, check: bool) -> None:

@@ -21,7 +21,8 @@ from camtrain.errors import CamtrainError
 def dynamics_speed(deck: str, tolerance: float, start: float | None, as_json: bool) -> None:
     """Bracket and bisect the camshaft speed at which DECK's elastic train ([dynamics]) first
     loses the follower while the valve is off its seat; print it beside the rigid train's
-    closed-form bounce speed."""
+    closed-form bounce speed. Speeds are camshaft rpm (a four-stroke engine turns at twice
+    that), angles cam deg from maximum lift."""
     try:
         from camtrain.study.dynamics_speed import dynamics_speed as search
         from camtrain.study.dynamics_speed import render

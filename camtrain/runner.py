@@ -45,19 +45,40 @@ def product_class(name: str) -> type:
     return getattr(importlib.import_module(module), cls)
 
 
-def run_plan(deck, plan: Plan | None = None) -> Result:
-    """Run every chosen effect of the plan (resolved here when not given)."""
+def run_plan(deck, plan: Plan | None = None, progress=None) -> Result:
+    """Run every chosen effect of the plan (resolved here when not given).
+
+    ``progress(effect name, done, total)``, when given, is called before each effect runs
+    (a progress bar names what runs) and once more when all have run."""
     plan = plan or resolve(deck)
     result = Result(plan=plan)
     products: dict[str, object] = {}
+    effects = plan.effects
     with trusted_inputs():  # the deck was validated at its boundary: no per-formula checks
-        for spec in plan.effects:
+        for done, spec in enumerate(effects):
+            if progress is not None:
+                progress(spec.name, done, len(effects))
             start = time.perf_counter()
-            out = effect_module(spec).run(deck, Inputs(spec, products), result)
+            with _details(progress, spec.name, done, len(effects)):
+                out = effect_module(spec).run(deck, Inputs(spec, products), result)
             result.timings[spec.name] = time.perf_counter() - start
             products.update(_checked(spec, out))
+    if progress is not None:
+        progress("done", len(effects), len(effects))
     warn_non_finite(result)
     return result
+
+
+def _details(progress, name: str, done: int, total: int):
+    """What the effect tells of its work (camtrain.progress.detail) goes to ``progress`` as
+    "<effect>: <what it does now>"."""
+    from contextlib import nullcontext
+
+    from camtrain.progress import listening
+
+    if progress is None:
+        return nullcontext()
+    return listening(lambda text: progress(f"{name}: {text}", done, total))
 
 
 def warn_non_finite(result: Result) -> None:

@@ -97,6 +97,7 @@ def run(deck, inputs, res):
         solve_bearing,
     )
     from camtrain.errors import ConvergenceError
+    from camtrain.progress import detail
 
     cs = deck.camshaft
     shaft = inputs[CamshaftLoads]
@@ -111,6 +112,7 @@ def run(deck, inputs, res):
     orbits, total = [], 0.0
     for i, b in enumerate(cs.bearings):
         k = i + 1
+        detail(f"bearing {k} of {len(cs.bearings)}")
         what, comp = f"bearing {k}", f"bearing_{k}"
         met = partial(res.add_metric, component=comp)
         brg = _journal(deck, i, b)

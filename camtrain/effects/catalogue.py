@@ -36,6 +36,12 @@ class EffectSpec:
     produces: tuple[str, ...] = ()
     uses: tuple[str, ...] = ()
     rank: int = 0
+    #: the metrics an engineer reads first from this effect, in this order: the terminal's and
+    #: report.txt's "key results" (those the run produced; every metric is in summary.json)
+    key_metrics: tuple[str, ...] = ()
+    #: "module:function" drawing this effect's own summary tables for the terminal and
+    #: report.txt, ``tables(result, deck) -> [Table]`` (per bearing, per component); "" = none
+    summary: str = ""
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -62,28 +68,37 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
     EffectSpec("kinematics", "camtrain.effects.kinematics",
                "lift law and follower kinematics: lift and derivatives, contact point, r_c, R, "
                "surface, entrainment and sliding velocities",
-               produces=("TrainKinematics",)),
+               produces=("TrainKinematics",),
+               key_metrics=("max_lift", "max_velocity", "min_acceleration", "max_acceleration")),
     EffectSpec("loads", "camtrain.effects.loads",
                "contact load from the rigid-train D'Alembert balance; loss of contact",
-               needs=("TrainKinematics",), produces=("ContactLoad",)),
+               needs=("TrainKinematics",), produces=("ContactLoad",),
+               key_metrics=("load_max", "load_min", "bounce_speed")),
     EffectSpec("dynamics", "camtrain.effects.dynamics",
                "contact load of the elastic train in time: separation, spring surge, valve "
                "seating (replaces the rigid-train load when the deck has [dynamics])",
-               needs=("TrainKinematics",), produces=("ContactLoad",), rank=1),
+               needs=("TrainKinematics",), produces=("ContactLoad",), rank=1,
+               key_metrics=("load_max", "dynamic_load_ratio", "separations", "jumps",
+                            "separation_angle", "seat_impacts", "seat_impact_speed_max",
+                            "valve_acceleration_max")),
     EffectSpec("hertz", "camtrain.effects.hertz",
                "Hertz contact half-width and maximum pressure",
-               needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",)),
+               needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",),
+               key_metrics=("hertz_max", "hertz_at_max_lift")),
     EffectSpec("film", "camtrain.effects.film",
                "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
-               needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",)),
+               needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",),
+               key_metrics=("film_min_at_max_lift", "film_min")),
     EffectSpec("friction", "camtrain.effects.friction",
                "friction force and coefficient: viscous shear capped by boundary friction",
                needs=("TrainKinematics", "ContactLoad", "ContactHertz", "ContactFilm"),
-               produces=("ContactFriction",)),
+               produces=("ContactFriction",),
+               key_metrics=("boundary_fraction",)),
     EffectSpec("power", "camtrain.effects.power",
                "friction torque about the cam axis and power loss",
                needs=("TrainKinematics", "ContactLoad", "ContactFriction"),
-               produces=("CamTorque",)),
+               produces=("CamTorque",),
+               key_metrics=("power_loss_mean", "friction_torque_peak")),
     EffectSpec("guides", "camtrain.effects.guides",
                "follower/guide and valve/guide Couette shear losses (Yang 1992 eq. 3.29)",
                needs=("TrainKinematics",), produces=("GuideLosses",)),
@@ -91,50 +106,63 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "camshaft: lobe torques phased and summed, drive power, harmonic orders, second "
                "bank, pendulum dampers",
                needs=("TrainKinematics", "ContactLoad"), uses=("ContactFriction", "CamTorque"),
-               produces=("CamshaftLoads",)),
+               produces=("CamshaftLoads",),
+               key_metrics=("drive_power_mean", "camshaft_torque_peak")),
     EffectSpec("camshaft_elastic", "camtrain.effects.camshaft_elastic",
                "elastic camshaft: bending in two planes and torsion under the lobe and drive "
                "loads, bearing reactions, deflections and twist per lobe, orders",
-               needs=("CamshaftLoads",), produces=("ElasticCamshaft",)),
+               needs=("CamshaftLoads",), produces=("ElasticCamshaft",),
+               key_metrics=("shaft_deflection_max", "shaft_twist_max")),
     EffectSpec("camshaft_coupled", "camtrain.effects.camshaft_coupled",
                "every lobe's elastic valve train on the elastic camshaft, iterated to one "
                "periodic state: lobe loads, bearing reactions, deflections, twist",
                needs=("TrainKinematics", "ContactLoad", "CamshaftLoads"),
-               produces=("ElasticCamshaft",), rank=1),
+               produces=("ElasticCamshaft",), rank=1,
+               key_metrics=("shaft_deflection_max", "shaft_twist_max")),
     EffectSpec("bearings", "camtrain.effects.bearings",
                "camshaft bearings: lobe and drive forces split as beams (or by the elastic "
                "shaft), journal orbits (Booker mobility), minimum film and power",
-               needs=("CamshaftLoads",), uses=("ElasticCamshaft",), produces=("BearingOrbits",)),
+               needs=("CamshaftLoads",), uses=("ElasticCamshaft",), produces=("BearingOrbits",),
+               key_metrics=("bearings_power_total",),
+               summary="camtrain.report.summaries:bearing_orbits"),
 )
 
 JOURNAL_BEARING: tuple[EffectSpec, ...] = (
     EffectSpec("journal_bearing", "camtrain.effects.journal_bearing",
                "journal orbit, minimum film and power of one bearing under its load diagram",
-               produces=("BearingOrbits",)),
+               produces=("BearingOrbits",),
+               key_metrics=("min_film", "max_eccentricity", "power_mean", "petroff_power")),
 )
 
 ENGINE: tuple[EffectSpec, ...] = (
     EffectSpec("crank_loads", "camtrain.effects.crank_loads",
                "crank-train loads: gas and inertia forces, side thrust, big-end loads in rod "
                "axes, main-bearing loads by the determinate bay split",
-               produces=("CrankLoads",)),
+               produces=("CrankLoads",),
+               key_metrics=("big_end_max_load",)),
     EffectSpec("crank_bearings", "camtrain.effects.crank_bearings",
                "big-end and main bearings: orbits to a periodic cycle, steady and Petroff "
                "columns, minimum film and power per bearing and in total",
-               needs=("CrankLoads",), produces=("EngineBearings",)),
+               needs=("CrankLoads",), produces=("EngineBearings",),
+               key_metrics=("total_power_dynamic",),
+               summary="camtrain.report.summaries:crank_bearings"),
     EffectSpec("piston", "camtrain.effects.piston",
                "piston assembly: inter-ring gas, compression-ring films (flooded, then starved "
                "passes), oil-control ring and skirt friction, power of every piston",
-               produces=("PistonFriction",)),
+               produces=("PistonFriction",),
+               key_metrics=("piston_power_mean", "piston_power_total"),
+               summary="camtrain.report.summaries:piston_rings"),
     EffectSpec("valve_trains", "camtrain.effects.valve_trains",
                "valve-train decks included by path, run at the camshaft speed: cams, camshaft "
                "bearings and guides",
-               produces=("ValveTrainFriction",)),
+               produces=("ValveTrainFriction",),
+               key_metrics=("valve_train_power_total",)),
     EffectSpec("flame", "camtrain.effects.flame",
                "FLAME engine total: bearings + valve trains + pistons + accessories, fmep and "
                "shares",
                uses=("EngineBearings", "ValveTrainFriction", "PistonFriction"),
-               produces=("EngineFriction",)),
+               produces=("EngineFriction",),
+               summary="camtrain.report.summaries:flame"),
     EffectSpec("correlations", "camtrain.effects.correlations",
                "friction correlations: Patton-Nitschke-Heywood 1989 and Sandoval-Heywood 2003 "
                "term by term, Chen-Flynn with the user's constants (beside FLAME, or alone on "
@@ -158,16 +186,21 @@ class DeckKind:
     #: none of its effects is a geometry effect, ``check(deck) -> (what was checked, warnings)``;
     #: it raises GeometryError (exit 3) as ``run`` would
     geometry: str = ""
+    #: what report.txt and every sheet of this kind are headed (Ball's "CAM OPERATING
+    #: CHARACTERISTICS" for a valve train)
+    title: str = "CAM OPERATING CHARACTERISTICS"
 
 
 #: every deck kind, by the name a deck gives in ``kind = "..."`` (valve_train is the default)
 KINDS: dict[str, DeckKind] = {k.name: k for k in (
     DeckKind("valve_train", "camtrain.deck.schema:Deck", VALVE_TRAIN),
     DeckKind("journal_bearing", "camtrain.deck.bearing_schema:BearingDeck", JOURNAL_BEARING,
-             header="camtrain.report.bearing_plots:bearing_header_rows"),
+             header="camtrain.report.bearing_plots:bearing_header_rows",
+             title="JOURNAL BEARING UNDER A DYNAMIC LOAD"),
     DeckKind("engine", "camtrain.deck.schema_engine:EngineDeck", ENGINE,
              header="camtrain.report.engine_report:engine_header_rows",
-             geometry="camtrain.build.engine:check_geometry"),
+             geometry="camtrain.build.engine:check_geometry",
+             title="ENGINE BEARINGS AND FRICTION"),
 )}
 DEFAULT_KIND = "valve_train"
 

@@ -25,12 +25,14 @@ def run(deck, inputs, result):
     from camtrain.build.oil import flame_oil_factor
     from camtrain.deck.load import load_deck
     from camtrain.engine.valve_trains import ValveTrainFriction, valve_train_parts
+    from camtrain.progress import detail
     from camtrain.runner import run_plan
     from camtrain.units import from_si
 
     parts, speeds, notes = {}, {}, {}
     factor = flame_oil_factor(deck)
     for vt in deck.flame.valve_trains:
+        detail(f"{vt.name} ({Path(vt.deck).name})")
         model = load_deck(vt.deck).model
         omega = vt.speed_ratio * deck.speed.engine
         model = dataclasses.replace(model, speed=dataclasses.replace(

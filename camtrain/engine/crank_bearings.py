@@ -24,6 +24,7 @@ import numpy as np
 
 from camtrain.bearings import JournalBearing, JournalOrbit, bearing_orbit, bearing_petroff_power, steady_orbit
 from camtrain.errors import field_error
+from camtrain.progress import detail
 
 from .loads import CrankLoads, MainLoads, crank_train_loads
 from .model import Engine
@@ -302,10 +303,16 @@ def solve_crank_bearings(loads: CrankLoads, big_end: BearingSpec, mains,
     period = engine.crank.cycle
     cyl, ml = list(loads.cylinders), loads.mains
     done: dict = {}
-    big = [_bearing(replace(big_end, name=f"{big_end.name} {i + 1}"), "big_end", i, c.load_x,
-                    c.load_y, c.omega_journal, angle, omega, period, opt, done)
-           for i, c in enumerate(cyl)]
+    big = []
+    for i, c in enumerate(cyl):
+        detail(f"big-end {i + 1} of {len(cyl)}")
+        big.append(_bearing(replace(big_end, name=f"{big_end.name} {i + 1}"), "big_end", i,
+                            c.load_x, c.load_y, c.omega_journal, angle, omega, period, opt,
+                            done))
     done = {}
-    mb = [_bearing(spec, "main", i, ml.load_x[i], ml.load_y[i], omega, angle, omega, period,
-                   opt, done) for i, spec in enumerate(mains)]
+    mb = []
+    for i, spec in enumerate(mains):
+        detail(f"main {i + 1} of {len(mains)}")
+        mb.append(_bearing(spec, "main", i, ml.load_x[i], ml.load_y[i], omega, angle, omega,
+                           period, opt, done))
     return EngineBearings(omega, angle, cyl, ml, big, mb, opt)

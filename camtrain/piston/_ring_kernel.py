@@ -13,13 +13,14 @@ import numpy as np
 from numba import njit
 
 from camtrain.numerics.roots import false_position_mean, illinois_update
+from camtrain.piston.film_floor import FILM_FLOOR
 
 RUPTURE_SCAN = 16
 #: Films below this [m] count as equal in the cyclic convergence of a self-fed ring: a dry ring
 #: (the march's floor is 0.1 nm), three orders below any ring's roughness.
 FILM_SCALE = 1e-9
 #: Bounds of the film march [ln m]: 0.1 nm (a dry ring, all boundary) to 1 mm.
-LOG_H_MIN = math.log(1e-10)
+LOG_H_MIN = math.log(FILM_FLOOR)
 LOG_H_MAX = math.log(1e-3)
 
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from camtrain.piston.ring import Ring, RingCycle, march_ring
+from camtrain.progress import detail
 
 
 @dataclass(frozen=True)
@@ -218,6 +219,8 @@ def solve_pack(pack: list[PackRing], theta, U, travel, omega: float, *, passes: 
             break
         if not converged and p - done >= passes:
             break
+        detail(f"ring pack, starved pass {p + 1}"
+               + ("" if p == done else f" (last change {change:.2g})"))
         change = 0.0
         for n in (order[::-1] if p % 2 == 0 else order):
             met = {m: version[m] for m in sources[n]}

@@ -138,3 +138,22 @@ def save_png(fig: Figure, path, software: str = "") -> None:
     if rgba[..., 3].min() == 255:
         image = image.convert("RGB")
     image.save(path, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi), pnginfo=info)
+
+
+def save_sheet(fig: Figure, stem, formats) -> list:
+    """Write ``fig`` as ``stem.<ext>`` for every format (PNG through :func:`save_png`, PDF with
+    camtrain as its creator); the paths written."""
+    from pathlib import Path
+
+    from camtrain import __version__
+
+    paths = []
+    for ext in formats:
+        path = Path(stem).with_suffix(f".{ext}")
+        if ext == "png":
+            save_png(fig, path, software=f"camtrain {__version__}")
+        else:
+            fig.savefig(path, metadata={"Creator": f"camtrain {__version__}"} if ext == "pdf"
+                        else None)
+        paths.append(path)
+    return paths

@@ -131,10 +131,30 @@ def terminal(stderr: bool = False):
     return RichOut(stderr=stderr)
 
 
-#: the numbers an engineer looks at first, in this order (all metrics are in summary.json)
-KEY_METRICS = ("max_lift", "power_loss_mean", "film_min_at_max_lift", "film_min", "hertz_max",
-               "hertz_at_max_lift", "load_max", "load_min", "bounce_speed",
-               "friction_torque_peak", "max_velocity", "min_acceleration", "max_acceleration")
+def key_metric_names(result: Result) -> list[str]:
+    """The metrics an engineer reads first, in plan order: those the effects that ran declare
+    (``EffectSpec.key_metrics``); a run without a plan (``camtrain lift``) takes what the
+    valve-train effects declare. Every metric is in summary.json and report.txt."""
+    from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
+
+    specs = result.plan.effects if result.plan is not None else KINDS[DEFAULT_KIND].effects
+    names = dict.fromkeys(n for spec in specs for n in spec.key_metrics)
+    return [n for n in names if n in result.metrics]
+
+
+def summary_tables(result: Result, deck) -> list[Table]:
+    """The summary tables the effects that ran declare (``EffectSpec.summary``), in plan
+    order: the crank-bearing table, the FLAME total, the camshaft bearings' orbits."""
+    import importlib
+
+    if result.plan is None:
+        return []
+    tables: list[Table] = []
+    for spec in result.plan.effects:
+        if spec.summary:
+            module, function = spec.summary.split(":")
+            tables += getattr(importlib.import_module(module), function)(result, deck)
+    return tables
 
 
 def print_echo(out, deck: LoadedDeck) -> None:
@@ -156,9 +176,10 @@ def print_plan(out, plan: Plan, timings: dict[str, float] | None = None) -> None
 
 
 def print_run(out, result: Result, written: list[Path], checks=None,
-              out_dir: Path | None = None) -> None:
-    """Key numbers, warnings and findings, limits, and where the files went."""
-    keys = [k for k in KEY_METRICS if k in result.metrics]
+              out_dir: Path | None = None, deck=None) -> None:
+    """Key numbers, the effects' summary tables, warnings and findings, limits, and where the
+    files went. ``deck`` is the run's deck model (the summaries read its geometry)."""
+    keys = key_metric_names(result)
     if keys:
         table = Table("key results", [
             ("quantity", "left", None), ("value", "right", None), ("unit", "left", None),
@@ -168,8 +189,10 @@ def print_run(out, result: Result, written: list[Path], checks=None,
             value, unit = shown(name, m.value, m.unit)
             table.add_row(name, value, unit, deg(m.angle), m.description)
         out.table(table)
-    elif result.metrics:
-        out.line(f"{len(result.metrics)} results (see summary.json)")
+    for table in summary_tables(result, deck):
+        out.table(table)
+    if result.metrics and out_dir is not None:      # a run's files (camtrain lift has a table)
+        out.line(f"{len(result.metrics)} results in all (summary.json, report.txt)")
     for w in result.warnings + find(result).messages(result.warnings):
         out.line(("warning:", "yellow"), f" {w}")
     print_checks(out, checks or [])

@@ -51,6 +51,18 @@ def display_unit(name: str, si_unit: str) -> tuple[str, float]:
 UNIT_SYSTEMS = ("deck", "si")
 
 
+#: how a unit written in ASCII in the code reads on a plot or page
+_TYPESET = (("^2", "²"), ("^3", "³"), ("^-1", "⁻¹"), ("*", "·"))
+
+
+def typeset(unit: str) -> str:
+    """A unit as people read it: m/s^2 -> m/s², N*m -> N·m (plots and sheets; the tables keep
+    their ASCII headers, which scripts parse)."""
+    for ascii_, shown_ in _TYPESET:
+        unit = unit.replace(ascii_, shown_)
+    return unit
+
+
 def output_unit(name: str, si_unit: str, units: str = "deck") -> tuple[str, float]:
     """(unit written beside a column or metric, factor from SI) in a file of ``units``.
 

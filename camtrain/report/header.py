@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 import math
 
-from camtrain.effects.catalogue import kind_of
+from camtrain.effects.catalogue import DEFAULT_KIND, KINDS, kind_of
 from camtrain.report.display import fmt
 from camtrain.result import Result
 from camtrain.units import from_si
@@ -62,3 +62,8 @@ def title_line(deck) -> str:
         return "camtrain run"
     # a deck kind whose speed is not a camshaft speed names it (the engine deck: "rpm engine")
     return f"{deck.title} — {speed_rpm(deck):g} {getattr(deck, 'speed_label', 'rpm camshaft')}"
+
+
+def report_heading(deck) -> str:
+    """What report.txt and the sheets of this deck's kind are headed (``DeckKind.title``)."""
+    return (KINDS[DEFAULT_KIND] if deck is None else kind_of(deck)).title

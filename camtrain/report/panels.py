@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from camtrain.report.display import LABELS, display_unit
+from camtrain.report.display import LABELS, display_unit, typeset
 from camtrain.report.findings import Findings, entrainment, in_contact
 from camtrain.report.style import COLORS, angle_axis, finish_axes, headroom
 from camtrain.result import Result
@@ -29,7 +29,7 @@ def has(r: Result, *names: str) -> bool:
 def shown(r: Result, name: str) -> tuple[np.ndarray, str]:
     col = r.columns[name]
     unit, factor = display_unit(name, col.unit)
-    return col.values * factor, unit
+    return col.values * factor, typeset(unit)
 
 
 def _cycle(ax, r: Result, ctx: Ctx, names, ylabel: str | None = None, colors=None,

@@ -92,5 +92,7 @@ def draw(ax, r: Result, findings: Findings, base_radius: float | None = None) ->
     if scale_text:
         ax.text(0.02, 0.02, scale_text, transform=ax.transAxes, fontsize=7.5,
                 color=COLORS["mean"])
-    ax.legend(loc="upper right", fontsize=6.5)
+    # below the drawing, off the cam and its film (which may fill any corner of the frame)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=3, fontsize=6.5,
+              frameon=False)
     return True

@@ -11,14 +11,26 @@ from pathlib import Path
 
 import numpy as np
 
-from camtrain import __version__
 from camtrain.report import profile
 from camtrain.report.findings import Findings, find
-from camtrain.report.header import header_rows, title_line
+from camtrain.report.header import title_line
 from camtrain.report.page import Page
 from camtrain.report.panels import PANELS as CYCLE_PANELS
 from camtrain.report.panels import Ctx
 from camtrain.report.panels_shaft import SHAFT_PANELS
+from camtrain.report.sheet_header import (
+    GAP_X_IN,
+    HEADER_IN,
+    LEFT_IN,
+    MAX_ROW_IN,
+    PAGE_IN,
+    RIGHT_IN,
+    TITLE_IN,
+    XLABEL_IN,
+    _frac,
+    fit_title,
+    header,
+)
 from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
 from camtrain.result import Result
 
@@ -46,55 +58,6 @@ Progress = Callable[[str, int, int], None]
 
 def _ctx(result: Result) -> Ctx:
     return Ctx(np.degrees(result["cam_angle"]), find(result))
-
-
-def _header(fig, rect, deck, result: Result, heading: str, sha: str | None,
-            title: str | None = None) -> None:
-    """Title across the page; sheet name and provenance left; key inputs boxed right (Ball).
-    Figure text placed in the header band ``rect`` (figure fractions), not an axes."""
-    from matplotlib.transforms import Bbox, BboxTransformTo, TransformedBbox
-
-    band = BboxTransformTo(TransformedBbox(Bbox.from_bounds(*rect), fig.transFigure))
-
-    def text(x, y, s, **kw):
-        fig.text(x, y, s, transform=band, **kw)
-
-    text(0.0, 1.0, title or title_line(deck), fontsize=11, fontweight="bold", va="top")
-    text(0.0, 0.72, "CAM OPERATING CHARACTERISTICS", fontsize=7.5, color="#595959", va="top")
-    text(0.0, 0.58, heading, fontsize=10, va="top")
-    foot = f"camtrain {__version__}" + (f"\ndeck sha256 {sha[:16]}" if sha else "")
-    text(0.0, 0.0, foot, fontsize=6.5, color="#7f7f7f", va="bottom", linespacing=1.4)
-    rows = header_rows(deck, result)
-    if not rows:
-        return
-    width = max(len(label) for label, _ in rows)
-    lines = [f"{label:<{width}} = {value}" for label, value in rows]
-    if len(lines) > 1 and lines[-1].startswith("Frictional"):
-        lines.insert(len(lines) - 1, "-" * (width + 10))
-    half = (len(lines) + 1) // 2 if len(lines) > 8 else len(lines)
-    cols = [lines[:half], lines[half:]] if half < len(lines) else [lines]
-    x = 0.385 if len(cols) == 2 else 0.62
-    for col in cols:
-        text(x, 0.72, "\n".join(col), family="DejaVu Sans Mono", fontsize=6.5, va="top",
-             linespacing=1.35,
-             bbox={"boxstyle": "square,pad=0.5", "fc": "#f7f7f7", "ec": "#bfbfbf", "lw": 0.6})
-        x += 0.315
-
-
-#: height of the header band and the tallest row of panels on a sheet [in]
-HEADER_IN = 1.45
-MAX_ROW_IN = 4.3
-#: fixed margins of a sheet [in]: page edges, room for titles above and tick labels and axis
-#: labels around each panel (a twin axis on the right of a panel needs the gap between columns)
-PAGE_IN = 0.1
-LEFT_IN, RIGHT_IN = 0.5, 0.45
-GAP_X_IN = 0.95
-TITLE_IN, XLABEL_IN = 0.28, 0.42
-
-
-def _frac(x0: float, y0: float, w: float, h: float, size) -> list[float]:
-    """A rectangle in inches from the bottom left as figure fractions."""
-    return [x0 / size[0], y0 / size[1], w / size[0], h / size[1]]
 
 
 def _panel_rects(count: int, size=A4_PORTRAIT) -> list[list[float]]:
@@ -125,7 +88,7 @@ def _sheet(page: Page, result: Result, deck, name: str, ctx: Ctx, sha: str | Non
     page.new_sheet()
     heading = SHEETS[name][0]
     size = page.size
-    _header(page.fig, _frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
+    header(page.fig, _frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
                             HEADER_IN - 0.1, size), deck, result, heading, sha, title)
     if name == "profile":
         if not profile.can_draw(result):
@@ -155,7 +118,8 @@ def _panel(fig, result: Result, deck, pname: str, ctx: Ctx) -> bool:
     """One panel alone on ``fig`` (PANEL_SIZE, or square for the profile)."""
     square = pname == "profile"
     w, h = fig.get_size_inches()
-    ax = fig.add_axes(_frac(0.8, 0.55, w - 1.5, h - 1.05, (w, h)))
+    bottom = 1.1 if square else 0.55      # the profile's legend goes under its drawing
+    ax = fig.add_axes(_frac(0.8, bottom, w - 1.5, h - bottom - 0.5, (w, h)))
     if square:
         ok = profile.draw(ax, result, ctx.findings, deck.cam.base_radius if deck else None)
         title = "Cam profile and film"
@@ -163,7 +127,8 @@ def _panel(fig, result: Result, deck, pname: str, ctx: Ctx) -> bool:
         title = PANELS[pname][0]
         ok = PANELS[pname][1](ax, result, ctx)
     ax.set_title(title)
-    fig.suptitle(title_line(deck), fontsize=7.5, color="#595959", y=0.995)
+    head = fig.suptitle(title_line(deck), fontsize=7.5, color="#595959", y=0.995)
+    fit_title(head, 0.96 * fig.bbox.width, deck, sizes=(7.5, 7.0, 6.5))
     return bool(ok)
 
 
@@ -172,6 +137,34 @@ def _figure(size):
     from camtrain.report.canvas import figure
 
     return figure(size)
+
+
+def _other_sheets(result: Result, deck, out_dir: Path, formats, sha: str | None,
+                  progress: Progress | None) -> list[Path]:
+    """The sheets that are not cycle panels, each in the house style: journal orbits (one A4
+    sheet of them all, and one plot per bearing), an engine's load diagrams, its piston and
+    FLAME sheet. What the result holds decides which (none for a run without them)."""
+    from camtrain.report.bearing_plots import orbit_series, orbit_sheets, write_orbit_plots
+    from camtrain.report.engine_plots import load_sheet
+    from camtrain.report.panels_shaft import lobe_sheet
+    from camtrain.report.piston_plots import piston_sheet
+
+    written: list[Path] = []
+    if orbit_series(result):
+        if progress:
+            progress("sheet orbits", 0, 1)
+        written += orbit_sheets(result, out_dir, deck=deck, sha=sha, formats=formats)
+        title = getattr(deck, "title", "") if deck is not None else ""
+        for ext in formats:
+            written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha,
+                                         deck=deck)
+    for name, draw in (("lobes", lobe_sheet), ("engine loads", load_sheet),
+                       ("piston", piston_sheet)):
+        files = draw(result, out_dir, deck=deck, sha=sha, formats=formats)
+        if files and progress:
+            progress(f"sheet {name}", 1, 1)
+        written += files
+    return written
 
 
 #: --plots: which files a run draws (sheet formats, and whether every panel also goes alone)
@@ -186,22 +179,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
     and a polar orbit plot per journal bearing when the run has bearings.
 
     One A4 figure is drawn on, saved and cleared for every sheet in turn."""
-    from camtrain.report.bearing_plots import orbit_series, write_orbit_plots
-
-    orbits: list[Path] = []
-    if orbit_series(result):
-        title = getattr(deck, "title", "") if deck is not None else ""
-        for ext in formats:
-            orbits += write_orbit_plots(result, out_dir, title=title, fmt=ext)
-    if "crank_angle" in result.columns:
-        from camtrain.report.engine_plots import load_sheet
-
-        orbits += load_sheet(result, out_dir, title=getattr(deck, "title", ""), formats=formats)
-    if "ring_angle" in result.columns:
-        from camtrain.report.piston_plots import piston_sheet
-
-        orbits += piston_sheet(result, out_dir, title=getattr(deck, "title", ""),
-                               formats=formats)
+    orbits = _other_sheets(result, deck, out_dir, formats, sha, progress)
     if "cam_angle" not in result.columns:
         return orbits
     import matplotlib
@@ -221,8 +199,8 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
                 written += _save(page.fig, out_dir / f"sheet_{name}", formats)
                 drawn.add(name)
             done += 1
-            if progress:
-                progress(f"sheet {name}", done, total)
+            if progress:   # name only a sheet that was drawn (a deck without a shaft has none)
+                progress(f"sheet {name}" if name in drawn else "sheets", done, total)
         if single_panels:
             (out_dir / "panels").mkdir(exist_ok=True)
             panel_fig, square_fig = _figure(PANEL_SIZE), _figure((6.4, 6.4))
@@ -233,7 +211,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
                     written += _save(f, out_dir / "panels" / pname, formats)
                 done += 1
                 if progress:
-                    progress(f"panel {pname}", done, total)
+                    progress(f"panel {pname}" if sheet in drawn else "panels", done, total)
     return written + orbits
 
 
@@ -250,18 +228,9 @@ def kinematics_sheet(result: Result, deck, title: str, stem: Path,
 
 
 def _save(fig, stem: Path, formats) -> list[Path]:
-    from camtrain.report.canvas import save_png
+    from camtrain.report.canvas import save_sheet
 
-    paths = []
-    for ext in formats:
-        path = stem.with_suffix(f".{ext}")
-        if ext == "png":
-            save_png(fig, path, software=f"camtrain {__version__}")
-        else:
-            fig.savefig(path, metadata={"Creator": f"camtrain {__version__}"} if ext == "pdf"
-                        else None)
-        paths.append(path)
-    return paths
+    return save_sheet(fig, stem, formats)
 
 
 def findings_of(result: Result) -> Findings:

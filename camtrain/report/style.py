@@ -103,9 +103,11 @@ def finish_axes(ax, legend: bool = False, handles=None) -> None:
         ax.tick_params(which="both", right=False)
     handles = handles or ax.get_legend_handles_labels()
     if legend and handles[0]:
-        headroom(ax)
-        ax.legend(*handles, loc="upper center", ncol=2 if len(handles[0]) > 2 else 1,
-                  columnspacing=1.0, handlelength=1.8)
+        # two columns only when two labels fit side by side within the panel
+        ncol = 2 if len(handles[0]) > 2 and max(map(len, handles[1])) <= 24 else 1
+        rows = -(-len(handles[0]) // ncol)
+        headroom(ax, 0.32 if rows <= 2 else 0.14 * rows)
+        ax.legend(*handles, loc="upper center", ncol=ncol, columnspacing=1.0, handlelength=1.8)
 
 
 def headroom(ax, fraction: float = 0.32) -> None:

@@ -14,7 +14,7 @@ from camtrain.report.display import LABELS, deg, display_unit, fmt, shown
 from camtrain.report.echo import echo_rows
 from camtrain.report.engine_report import bearing_table_lines
 from camtrain.report.findings import find
-from camtrain.report.header import header_rows, title_line
+from camtrain.report.header import header_rows, report_heading, title_line
 from camtrain.result import Result
 
 WIDTH = 100
@@ -33,7 +33,7 @@ def _rule(title: str = "", char: str = "=") -> str:
 def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
                 checks=None, wall_time: float | None = None, step_deg: float = 5.0) -> str:
     """The whole report as text; ``deck`` is the Deck model (SI) or None."""
-    lines = [_rule(), f"camtrain {__version__}   CAM OPERATING CHARACTERISTICS",
+    lines = [_rule(), f"camtrain {__version__}   {report_heading(deck)}",
              title_line(deck), _rule(), ""]
     if path:
         lines.append(f"deck file : {path}")
@@ -71,6 +71,7 @@ def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
     if not result.metrics:
         lines.append("  (no scalar results)")
     lines.append("")
+    lines += _summary_lines(result, deck)
     lines += bearing_table_lines(result, WIDTH)
     if checks:
         lines += [_rule("DESIGN LIMITS", "-")]
@@ -82,6 +83,19 @@ def report_text(result: Result, deck=None, *, path: str = "", sha: str = "",
         lines.append("")
     lines += _cycle_table(result, step_deg)
     return "\n".join(lines).rstrip() + "\n"
+
+
+def _summary_lines(result: Result, deck) -> list[str]:
+    """The summary tables the effects that ran declare, as the terminal prints them."""
+    from camtrain.report.boxes import table
+    from camtrain.report.console import summary_tables
+
+    lines = []
+    for t in summary_tables(result, deck):
+        rows = [[text for text, _ in row] for row in t.rows]
+        lines += table(t.title, [(name, justify) for name, justify, _ in t.columns], rows,
+                       WIDTH) + [""]
+    return lines
 
 
 def _cycle_table(result: Result, step_deg: float) -> list[str]:

@@ -38,9 +38,9 @@ def dynamics_speed(deck_path: str, *, rtol: float = 2e-3, start_rpm: float | Non
         search = first_separation_speed(
             separation_check(deck, kin, stiffness_scale=stiffness_scale), start, rtol=rtol)
     except ValueError as exc:
-        return {"deck": deck_path, "found": False, "message": str(exc),
+        return {"deck": deck_path, "found": False, "speed_of": "camshaft", "message": str(exc),
                 **_rigid(rigid, rad_s_to_rpm)}
-    return {"deck": deck_path, "found": True,
+    return {"deck": deck_path, "found": True, "speed_of": "camshaft",
             "separation_speed": rad_s_to_rpm(search.omega),
             "separating_speed": rad_s_to_rpm(search.upper),
             "separation_angle": math.degrees(search.angle) if search.angle is not None else None,
@@ -55,17 +55,22 @@ def _rigid(bounce, to_rpm) -> dict:
 
 
 def render(report: dict) -> str:
-    """The search as a few readable lines."""
-    lines = [f"deck: {report['deck']}"]
+    """The search as a few readable lines. Every speed is the camshaft's (a valve-train deck's
+    ``speed.camshaft``; a four-stroke crankshaft turns twice as fast), every angle a cam angle
+    from maximum lift."""
+    lines = [f"deck: {report['deck']}",
+             "speeds are camshaft rpm (a four-stroke engine turns at twice that); angles are "
+             "cam deg from maximum lift"]
     if report["bounce_speed"] is not None:
         lines.append(f"rigid train, closed-form bounce speed: {report['bounce_speed']:.1f} rpm "
-                     f"(contact lost first at {report['bounce_angle']:.1f} deg)")
+                     f"camshaft (contact lost first at {report['bounce_angle']:.1f} deg cam)")
     if not report["found"]:
         lines.append(f"elastic train: {report['message']}")
         return "\n".join(lines)
-    lines.append(f"elastic train keeps contact up to {report['separation_speed']:.1f} rpm; "
-                 f"separates at {report['separating_speed']:.1f} rpm (first loss at "
-                 f"{report['separation_angle']:.2f} deg); bracket {100 * report['rtol']:g} %")
-    lines.append("speeds tried (rpm, separated): " + ", ".join(
+    lines.append(f"elastic train keeps contact up to {report['separation_speed']:.1f} rpm "
+                 f"camshaft; separates at {report['separating_speed']:.1f} rpm camshaft (first "
+                 f"loss at {report['separation_angle']:.2f} deg cam); bracket "
+                 f"{100 * report['rtol']:g} %")
+    lines.append("camshaft speeds tried (rpm, separated): " + ", ".join(
         f"{w:.0f} {'yes' if s else 'no'}" for w, s in report["evaluations"]))
     return "\n".join(lines)
