@@ -167,7 +167,8 @@ ENGINE: tuple[EffectSpec, ...] = (
                "friction correlations: Patton-Nitschke-Heywood 1989 and Sandoval-Heywood 2003 "
                "term by term, Chen-Flynn with the user's constants (beside FLAME, or alone on "
                "a bare engine deck)",
-               produces=("FrictionCorrelations",)),
+               produces=("FrictionCorrelations",),
+               summary="camtrain.report.summaries:correlations"),
 )
 
 

@@ -132,3 +132,27 @@ def flame(result: Result, deck) -> list[Table]:
     if fmep is not None:
         table.add_row(("fmep [kPa]", "bold"), (fmt(fmep.value * 1e-3), "bold"), "")
     return [table]
+
+
+#: the correlation models an engine deck may compute, with the names their metrics carry
+CORRELATION_MODELS = (("pnh1989", "PNH 1989"),
+                      ("sandoval_heywood2003", "S-H 2003"),
+                      ("chen_flynn", "C-F"))
+#: (group, its short heading: the table must read at 80 columns)
+CORRELATION_GROUPS = (("crankshaft", "crank"), ("reciprocating", "recip."),
+                      ("valve_train", "valves"), ("auxiliaries", "aux."))
+
+
+def correlations(result: Result, deck) -> list[Table]:
+    """Each friction correlation the run computed: fmep, power and its power by group."""
+    ran = [(name, label) for name, label in CORRELATION_MODELS if name in result.components]
+    if not ran:
+        return []
+    table = Table("friction correlations (PNH Patton-Nitschke-Heywood, S-H Sandoval-Heywood, "
+                  "C-F Chen-Flynn)",
+                  _right("model", "fmep [kPa]", "total [W]",
+                         *(f"{short} [W]" for _, short in CORRELATION_GROUPS)))
+    for name, label in ran:
+        table.add_row(label, _value(result, name, "fmep", 1e-3), _value(result, name, "power"),
+                      *(_value(result, name, f"{g}_power") for g, _ in CORRELATION_GROUPS))
+    return [table]

@@ -128,3 +128,15 @@ def test_a_long_effect_says_what_it_does_now():
     assert ("crank_bearings: big-end 1 of 4", 1) in bearings
     assert ("crank_bearings: main 5 of 5", 1) in bearings
     assert seen[-1][0] == "done" and seen[-1][1] == seen[-1][2]
+
+
+def test_bare_engine_deck_prints_each_correlation_by_group():
+    loaded = api.load(DECKS / "zeta_bare_engine.toml")
+    result = api.run(loaded)
+    text = _printed(result, loaded.model)
+    assert "friction correlations" in text
+    for name, label in (("pnh1989", "PNH 1989"), ("sandoval_heywood2003", "S-H 2003")):
+        row = next(line for line in text.splitlines() if label in line)
+        fmep = result.component(name).metrics["fmep"].value * 1e-3
+        assert f"{fmep:.1f}" in row
+        assert f"{result.component(name).metrics['power'].value:.0f}" in row
