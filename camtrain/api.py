@@ -9,6 +9,7 @@ The command line is a thin layer over these functions.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 from camtrain.deck.load import LoadedDeck, load_deck, load_deck_text
@@ -17,9 +18,26 @@ from camtrain.result import Result
 from camtrain.scene import Plan, resolve
 
 
-def load(path: str | Path) -> LoadedDeck:
-    """Read and validate a deck file ('-' for standard input). Raises InputError."""
-    return load_deck(str(path))
+def load(path: str | Path, sets: Sequence[str] = ()) -> LoadedDeck:
+    """Read and validate a deck file ('-' for standard input). Raises InputError.
+
+    ``sets``: changes as on the command line (``run --set``), each ``"path=value"`` in the
+    deck's units, e.g. ``["solver.angle_points=720", "tribology.entrainment=mean"]``; the
+    deck is validated with them, and its recorded text ends with them as comments."""
+    if not sets:
+        return load_deck(str(path))
+    import hashlib
+
+    from camtrain.deck.load import parse_toml, read_text, validate
+    from camtrain.study.assign import apply_fixed, assignment_text, parse_assignment
+
+    name, text = read_text(str(path))
+    raw = parse_toml(text, name)
+    fixed = [parse_assignment(raw, s) for s in sets]
+    base = Path(path).resolve().parent if str(path) != "-" else Path.cwd()
+    model = validate(apply_fixed(raw, fixed), name, base)
+    text += assignment_text(fixed)
+    return LoadedDeck(model, name, hashlib.sha256(text.encode()).hexdigest(), text)
 
 
 def loads(text: str, name: str = "<text>") -> LoadedDeck:

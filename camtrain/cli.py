@@ -152,8 +152,11 @@ EXIT_PRECEDENCE = (EXIT_INTERNAL, 2, 3, 4, 1, 0)
 @click.option("--json", "as_json", is_flag=True,
               help="Print summary.json to standard output (a list for several decks).")
 @click.option("--units", **UNITS_OPTION)
+@click.option("--set", "sets", multiple=True, metavar="PATH=VALUE",
+              help="Change a deck field for this run, in the deck's units (repeatable), e.g. "
+                   "solver.angle_points=720 or tribology.entrainment=mean.")
 def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None, plots: str,
-        no_plots: bool, quiet: bool, as_json: bool, units: str) -> None:
+        no_plots: bool, quiet: bool, as_json: bool, units: str, sets: tuple[str, ...]) -> None:
     """Run DECK... and write cycle.csv, report.txt, plot sheets and summary.json for each.
 
     \b
@@ -183,7 +186,7 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
         overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
         for deck, out_dir in zip(decks, targets, strict=True):
             report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
-                                       check=check, units=units)
+                                       check=check, units=units, sets=sets)
             reports.append(report)
             summaries.append(summary)
             codes.append(report.exit_code if (check or report.exit_code != 1) else 0)
@@ -231,7 +234,7 @@ def _escape(text: str) -> str:
 
 
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
-             units: str = "deck"):
+             units: str = "deck", sets: tuple[str, ...] = ()):
     """Load, run, check and write one deck; errors become a report, never an exception."""
     from camtrain import api
     from camtrain.report.junit import DeckReport
@@ -244,7 +247,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     start = time.perf_counter()
     task = bar.add_task(_escape(f"{name}: running"), total=None) if bar else None
     try:
-        loaded = api.load(deck)
+        loaded = api.load(deck, sets)
         sizes = api.implausible(loaded)
         for w in sizes:                   # before the run: it explains a geometry failure there
             click.echo(f"warning: {w}", err=True)

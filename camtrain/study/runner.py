@@ -17,7 +17,8 @@ from camtrain.errors import InputError, Problem
 from camtrain.report.tables import atomic_write
 from camtrain.study import sweep_output as so
 from camtrain.study.executors import Job, make_executor, run_case
-from camtrain.study.sweep import Case, Parameter, apply_fixed, build_parameters, cases, parse_assignment
+from camtrain.study.assign import apply_fixed, parse_assignment
+from camtrain.study.sweep import Case, Parameter, build_parameters, cases
 
 
 @dataclass

@@ -11,10 +11,11 @@ from camtrain.study.sweep import (
     build_parameters,
     case_raw,
     cases,
-    parse_assignment,
     parse_values,
     resolve_path,
 )
+
+from camtrain.study.assign import parse_assignment
 
 from .conftest import DECKS
 
