@@ -67,6 +67,9 @@ def main() -> None:
       camtrain check my.toml
       camtrain run my.toml --out out/my
     """
+    from camtrain.numerics.compile_notice import listen
+
+    listen(lambda text: click.echo(f"note: {text}", err=True))
 
 
 @main.command()
@@ -170,6 +173,10 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
 
     plots = "none" if no_plots else plots
     show = not (quiet or as_json)
+    if quiet:
+        from camtrain.numerics.compile_notice import listen
+
+        listen(None)
     # a quiet or --json run prints no tables: it does not import the terminal library
     console = _console() if show else None
     targets = _output_dirs(decks, out)
@@ -356,8 +363,10 @@ def _register_study_commands() -> None:
     from camtrain.cli_accuracy import accuracy
     from camtrain.cli_dynamics import dynamics_speed
     from camtrain.cli_sweep import sweep
+    from camtrain.cli_warmup import warmup
 
     main.add_command(sweep)
+    main.add_command(warmup)
     main.add_command(accuracy)
     main.add_command(dynamics_speed)
 
