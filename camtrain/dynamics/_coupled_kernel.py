@@ -210,4 +210,4 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
     return switches_total, cut, missed
 
 
-announce("shaft-and-trains", (revolution))
+announce("shaft-and-trains", (revolution,))
