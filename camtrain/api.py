@@ -139,5 +139,33 @@ def write(result: Result, deck: LoadedDeck, out_dir: str | Path, wall_time: floa
                      checks=check_limits(result, deck), plots=plots, units=units)
 
 
+def sweep(deck: str | Path, parameters: dict[str, str | Sequence[float]],
+          out_dir: str | Path, *, sets: Sequence[str] = (), zipped: bool = False,
+          jobs: int | None = 1, units: str = "deck", plots: bool = False):
+    """Run ``deck`` for many values of its design variables, as ``camtrain sweep`` does, and
+    return its Outcome (``outcome.to_dataframe()``: one row per case, the swept values, the
+    status and every metric in ``units``); sweep.csv and the trend table go to ``out_dir``.
+
+    ``parameters``: name (an alias such as ``base_radius`` or a dotted deck path) -> the values
+    in the deck field's unit, or a spec as on the command line: ``"range:14:22:9"`` or
+    ``"relative:-25%:+25%:11"``. ``sets``: fixed changes, as :func:`load`'s.
+
+        >>> outcome = sweep("decks/harrison_flat.toml", {"base_radius": [16, 18, 20]},
+        ...                 "out/rb")                                   # doctest: +SKIP
+        >>> outcome.to_dataframe()["power_loss_mean[W]"]                # doctest: +SKIP
+    """
+    from camtrain.study.runner import prepare, run_sweep
+
+    specs = []
+    for name, values in parameters.items():
+        if isinstance(values, str):
+            kind, _, text = values.partition(":")
+            specs.append((name, kind, text))
+        else:
+            specs.append((name, "values", ",".join(repr(float(v)) for v in values)))
+    prepared = prepare(deck, specs, list(sets), zipped, units)
+    return run_sweep(prepared, out_dir, jobs=jobs, plots=plots)
+
+
 def _model(deck: LoadedDeck | Deck) -> Deck:
     return deck.model if isinstance(deck, LoadedDeck) else deck
