@@ -110,7 +110,10 @@ def schema(out: str | None, markdown: bool, kind: str | None) -> None:
 @main.command()
 @click.argument("deck", type=str)
 @click.option("--quiet", "-q", is_flag=True, help="Print nothing; the exit code tells.")
-def check(deck: str, quiet: bool) -> None:
+@click.option("--full", is_flag=True,
+              help="Echo every field with its description (defaults included), not only the "
+                   "fields the deck sets.")
+def check(deck: str, quiet: bool, full: bool) -> None:
     """Validate DECK ('-' for standard input), run its cheap geometry checks and echo the input
     and the plan. Exit 0, 2 (invalid input) or 3 (impossible geometry, as `run` would)."""
     from camtrain import api
@@ -123,13 +126,28 @@ def check(deck: str, quiet: bool) -> None:
     checked, warnings = api.check(loaded)
     if not quiet:
         console = _console()
-        print_echo(console, loaded)
+        if full:
+            print_echo(console, loaded)
+        else:
+            _print_given(loaded)
         print_plan(console, plan)
         for message in getattr(loaded.model, "advisories", list)():
             click.echo(f"warning: {message}")
         for w in warnings:
             click.echo(f"warning: {w}")
         click.echo(f"{loaded.path}: valid; {checked}")
+
+
+def _print_given(loaded) -> None:
+    """The fields the deck sets, one per line (path = value unit): reads at 80 columns."""
+    from camtrain.deck.load import parse_toml
+    from camtrain.report.echo import given_rows
+
+    rows, defaults = given_rows(loaded.model, parse_toml(loaded.text, loaded.path))
+    click.echo(f"{loaded.model.title}  ({loaded.path})")
+    for path, _doc, value, unit in rows:
+        click.echo(f"  {path} = {value}" + ("" if unit in ("-", "") else f" {unit}"))
+    click.echo(f"  ... and {defaults} fields at their defaults (check --full: every field)")
 
 
 #: exit-code precedence over a batch of decks: a bug first, then invalid input, then the other
