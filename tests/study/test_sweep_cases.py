@@ -6,6 +6,7 @@ import tomllib
 import pytest
 
 from camtrain.errors import InputError
+from camtrain.study.assign import parse_assignment
 from camtrain.study.sweep import (
     ALIASES,
     build_parameters,
@@ -14,8 +15,6 @@ from camtrain.study.sweep import (
     parse_values,
     resolve_path,
 )
-
-from camtrain.study.assign import parse_assignment
 
 from .conftest import DECKS
 
