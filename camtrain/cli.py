@@ -208,6 +208,11 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
 
         bars = nullcontext()
     with interruptible(), bars as bar:
+        if bar:     # a compile notice goes above the live bar, not onto its line
+            from camtrain.numerics.compile_notice import listen
+
+            listen(lambda text: bar.console.print(f"note: {text}", markup=False,
+                                                  highlight=False))
         overall = bar.add_task("decks", total=len(decks)) if bar and len(decks) > 1 else None
         for deck, out_dir in zip(decks, targets, strict=True):
             report, summary = _run_one(deck, out_dir, plots, bar, console, show=show,
