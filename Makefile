@@ -15,7 +15,10 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
+# The warm-up compiles every numba kernel once (numba's disk cache), so that no deck's first run
+# pays for it (docs/performance.md, "First run").
 demo: $(STAMP)
+	$(BIN)/camtrain warmup
 	$(BIN)/camtrain run decks/harrison_flat.toml --out out/harrison_flat
 
 test: $(STAMP)
@@ -39,7 +42,7 @@ $(OLDEST)/.installed: pyproject.toml scripts/oldest_pins.py
 	touch $@
 
 test-oldest: $(OLDEST)/.installed
-	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w)=='
+	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w|pillow|pandas)=='
 	CAMTRAIN_GOLDEN_RTOL=1e-8 $(OLDEST)/bin/python -m pytest -p no:cacheprovider
 
 # Thousands of fuzzed decks through `camtrain run` (make test runs the first 200 cases).

@@ -9,6 +9,7 @@ The command line is a thin layer over these functions.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 from camtrain.deck.load import LoadedDeck, load_deck, load_deck_text
@@ -17,9 +18,26 @@ from camtrain.result import Result
 from camtrain.scene import Plan, resolve
 
 
-def load(path: str | Path) -> LoadedDeck:
-    """Read and validate a deck file ('-' for standard input). Raises InputError."""
-    return load_deck(str(path))
+def load(path: str | Path, sets: Sequence[str] = ()) -> LoadedDeck:
+    """Read and validate a deck file ('-' for standard input). Raises InputError.
+
+    ``sets``: changes as on the command line (``run --set``), each ``"path=value"`` in the
+    deck's units, e.g. ``["solver.angle_points=720", "tribology.entrainment=mean"]``; the
+    deck is validated with them, and its recorded text ends with them as comments."""
+    if not sets:
+        return load_deck(str(path))
+    import hashlib
+
+    from camtrain.deck.load import parse_toml, read_text, validate
+    from camtrain.study.assign import apply_fixed, assignment_text, parse_assignment
+
+    name, text = read_text(str(path))
+    raw = parse_toml(text, name)
+    fixed = [parse_assignment(raw, s) for s in sets]
+    base = Path(path).resolve().parent if str(path) != "-" else Path.cwd()
+    model = validate(apply_fixed(raw, fixed), name, base)
+    text += assignment_text(fixed)
+    return LoadedDeck(model, name, hashlib.sha256(text.encode()).hexdigest(), text)
 
 
 def loads(text: str, name: str = "<text>") -> LoadedDeck:
@@ -187,6 +205,34 @@ def optimize(deck: str | Path, variables, objective: str = "power_loss_mean",
 
         write_optimize(outcome, out_dir, plots=plots)
     return outcome
+
+
+def sweep(deck: str | Path, parameters: dict[str, str | Sequence[float]],
+          out_dir: str | Path, *, sets: Sequence[str] = (), zipped: bool = False,
+          jobs: int | None = 1, units: str = "deck", plots: bool = False):
+    """Run ``deck`` for many values of its design variables, as ``camtrain sweep`` does, and
+    return its Outcome (``outcome.to_dataframe()``: one row per case, the swept values, the
+    status and every metric in ``units``); sweep.csv and the trend table go to ``out_dir``.
+
+    ``parameters``: name (an alias such as ``base_radius`` or a dotted deck path) -> the values
+    in the deck field's unit, or a spec as on the command line: ``"range:14:22:9"`` or
+    ``"relative:-25%:+25%:11"``. ``sets``: fixed changes, as :func:`load`'s.
+
+        >>> outcome = sweep("decks/harrison_flat.toml", {"base_radius": [16, 18, 20]},
+        ...                 "out/rb")                                   # doctest: +SKIP
+        >>> outcome.to_dataframe()["power_loss_mean[W]"]                # doctest: +SKIP
+    """
+    from camtrain.study.runner import prepare, run_sweep
+
+    specs = []
+    for name, values in parameters.items():
+        if isinstance(values, str):
+            kind, _, text = values.partition(":")
+            specs.append((name, kind, text))
+        else:
+            specs.append((name, "values", ",".join(repr(float(v)) for v in values)))
+    prepared = prepare(deck, specs, list(sets), zipped, units)
+    return run_sweep(prepared, out_dir, jobs=jobs, plots=plots)
 
 
 def _model(deck: LoadedDeck | Deck) -> Deck:

@@ -69,6 +69,9 @@ def main() -> None:
       camtrain check my.toml
       camtrain run my.toml --out out/my
     """
+    from camtrain.numerics.compile_notice import listen
+
+    listen(lambda text: click.echo(f"note: {text}", err=True))
 
 
 @main.command()
@@ -109,7 +112,10 @@ def schema(out: str | None, markdown: bool, kind: str | None) -> None:
 @main.command()
 @click.argument("deck", type=str)
 @click.option("--quiet", "-q", is_flag=True, help="Print nothing; the exit code tells.")
-def check(deck: str, quiet: bool) -> None:
+@click.option("--full", is_flag=True,
+              help="Echo every field with its description (defaults included), not only the "
+                   "fields the deck sets.")
+def check(deck: str, quiet: bool, full: bool) -> None:
     """Validate DECK ('-' for standard input), run its cheap geometry checks and echo the input
     and the plan. Exit 0, 2 (invalid input) or 3 (impossible geometry, as `run` would)."""
     from camtrain import api
@@ -122,13 +128,28 @@ def check(deck: str, quiet: bool) -> None:
     checked, warnings = api.check(loaded)
     if not quiet:
         console = _console()
-        print_echo(console, loaded)
+        if full:
+            print_echo(console, loaded)
+        else:
+            _print_given(loaded)
         print_plan(console, plan)
         for message in getattr(loaded.model, "advisories", list)():
             click.echo(f"warning: {message}")
         for w in warnings:
             click.echo(f"warning: {w}")
         click.echo(f"{loaded.path}: valid; {checked}")
+
+
+def _print_given(loaded) -> None:
+    """The fields the deck sets, one per line (path = value unit): reads at 80 columns."""
+    from camtrain.deck.load import parse_toml
+    from camtrain.report.echo import given_rows
+
+    rows, defaults = given_rows(loaded.model, parse_toml(loaded.text, loaded.path))
+    click.echo(f"{loaded.model.title}  ({loaded.path})")
+    for path, _doc, value, unit in rows:
+        click.echo(f"  {path} = {value}" + ("" if unit in ("-", "") else f" {unit}"))
+    click.echo(f"  ... and {defaults} fields at their defaults (check --full: every field)")
 
 
 #: exit-code precedence over a batch of decks: a bug first, then invalid input, then the other
@@ -154,8 +175,11 @@ EXIT_PRECEDENCE = (EXIT_INTERNAL, 2, 3, 4, 1, 0)
 @click.option("--json", "as_json", is_flag=True,
               help="Print summary.json to standard output (a list for several decks).")
 @click.option("--units", **UNITS_OPTION)
+@click.option("--set", "sets", multiple=True, metavar="PATH=VALUE",
+              help="Change a deck field for this run, in the deck's units (repeatable), e.g. "
+                   "solver.angle_points=720 or tribology.entrainment=mean.")
 def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None, plots: str,
-        no_plots: bool, quiet: bool, as_json: bool, units: str) -> None:
+        no_plots: bool, quiet: bool, as_json: bool, units: str, sets: tuple[str, ...]) -> None:
     """Run DECK... and write cycle.csv, report.txt, plot sheets and summary.json for each.
 
     \b
@@ -172,10 +196,10 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
     # a quiet or --json run prints no tables: it does not import the terminal library
     console = _console() if show else None
     targets = _output_dirs(decks, out)
-    if not quiet:   # a first run compiles the kernels for a while: say so, not a silent hang
-        from camtrain.numerics.compile_notice import watch
+    from camtrain.numerics import compile_notice
 
-        watch(lambda text: click.echo(text, err=True))
+    if quiet:
+        compile_notice.listen(None)
     reports, summaries, codes = [], [], []
     from contextlib import nullcontext
 
@@ -187,9 +211,12 @@ def run(decks: tuple[str, ...], out: str | None, check: bool, junit: str | None,
             # one transient bar per deck, gone before the deck's report is printed: nothing
             # is drawn under a live bar, so the terminal keeps no trace of it
             with progress_bar(enabled=True) if show else nullcontext() as bar:
+                if bar:     # a compile notice goes above the live bar, not onto its line
+                    compile_notice.listen(lambda text, bar=bar: bar.console.print(
+                        f"note: {text}", markup=False, highlight=False))
                 report, summary, after = _run_one(deck, out_dir, plots, bar, console,
                                                   show=show, check=check, units=units,
-                                                  place=place)
+                                                  place=place, sets=sets)
             after()
             reports.append(report)
             summaries.append(summary)
@@ -245,7 +272,7 @@ def _say(bar, text: str) -> None:
 
 
 def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, check: bool,
-             units: str = "deck", place: str = ""):
+             units: str = "deck", place: str = "", sets: tuple[str, ...] = ()):
     """Load, run, check and write one deck; errors become a report, never an exception.
 
     Returns (report, summary, after): ``after()`` prints the deck's report once its progress
@@ -273,7 +300,7 @@ def _run_one(deck: str, out_dir: Path, plots: str, bar, console, *, show: bool, 
     lock = ExitStack()
     try:
         lock.enter_context(output_lock(out_dir))   # one writer per directory, from the start
-        loaded = api.load(deck)
+        loaded = api.load(deck, sets)
         sizes = api.implausible(loaded)
         for w in sizes:                   # before the run: it explains a geometry failure there
             _say(bar, f"warning: {w}")
@@ -394,8 +421,10 @@ def _register_study_commands() -> None:
     from camtrain.cli_friction_map import friction_map
     from camtrain.cli_sensitivity import sensitivity
     from camtrain.cli_sweep import sweep
+    from camtrain.cli_warmup import warmup
 
     main.add_command(sweep)
+    main.add_command(warmup)
     main.add_command(accuracy)
     main.add_command(dynamics_speed)
     main.add_command(friction_map)

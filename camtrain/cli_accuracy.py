@@ -24,8 +24,10 @@ from camtrain.errors import CamtrainError
               help="Relative tolerance for the cheapest setting, e.g. 0.1% or 1e-3.")
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,
               help="Write accuracy.csv, accuracy.json and accuracy.png into this directory.")
-@click.option("--repeat", type=click.IntRange(1, 100), default=1, show_default=True,
-              help="Time each rung this many times and keep the fastest.")
+@click.option("--repeat", type=click.IntRange(1, 100), default=5, show_default=True,
+              help="Time each rung up to this many times, until its two fastest runs agree "
+                   "within 10 %; the table gives the fastest and that spread ('!' when it "
+                   "stayed above 10 %).")
 @click.option("--quiet", "-q", is_flag=True, help="Print only errors.")
 @click.option("--units", type=click.Choice(["deck", "si"]), default="deck", show_default=True,
               help="Units of accuracy.csv and accuracy.json: deck (mm, µm, MPa, ...) or si.")

@@ -206,6 +206,10 @@ def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overla
                   auto_refresh=False) as bar:
         task = bar.add_task("sweep", total=len(sweep_def.cases), bad="")
         failed, shown = [0], [0.0]
+        from camtrain.numerics.compile_notice import listen
+
+        # a compile notice goes above the bar, not onto its line
+        listen(lambda text: bar.console.print(f"note: {text}", markup=False, highlight=False))
 
         def progress(record, done, total):
             import time

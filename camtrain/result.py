@@ -217,23 +217,42 @@ class Result:
     def _default_axis(self) -> str:
         return self.axes[0] if self.axes else ""
 
-    def to_dataframe(self, axis: str | None = None):
+    def to_dataframe(self, axis: str | None = None, units: str = "deck"):
         """The columns on ``axis`` (default: the first) as a pandas DataFrame indexed by the
-        axis; column names are flat names, units in ``df.attrs['units']``. Needs pandas
-        (``pip install camtrain[pandas]``)."""
-        try:
-            import pandas as pd
-        except ImportError:  # pragma: no cover - depends on the installation
-            raise ImportError("Result.to_dataframe needs pandas: pip install "
-                              "'camtrain[pandas]'") from None
+        axis; column names are flat names, units in ``df.attrs['units']``.
+
+        ``units="deck"`` (default): what cycle.csv and the terminal show, the cam angle in
+        degrees, films in µm, stresses in MPa; ``units="si"``: as computed (m, rad, Pa). Needs
+        pandas (``pip install 'camtrain[pandas]'``)."""
+        pd = _pandas("Result.to_dataframe")
         axis = axis or self._default_axis
         cols = self.on_axis(axis)
         if axis not in cols:
             raise KeyError(f"no axis {axis!r} in this result (axes: {self.axes})")
-        index = pd.Index(cols[axis].values, name=axis)
-        df = pd.DataFrame({k: c.values for k, c in cols.items() if k != axis}, index=index)
-        df.attrs["units"] = {k: c.unit for k, c in cols.items()}
+        shown = {k: _in_units(k, c.unit, units) for k, c in cols.items()}
+        index = pd.Index(cols[axis].values * shown[axis][1], name=axis)
+        df = pd.DataFrame({k: c.values * shown[k][1] for k, c in cols.items() if k != axis},
+                          index=index)
+        df.attrs["units"] = {k: unit for k, (unit, _) in shown.items()}
         return df
+
+    def metrics_frame(self, units: str = "deck"):
+        """The metrics as a pandas DataFrame indexed by flat name: value and unit (deck units
+        by default, as summary.json; ``units="si"``), the angle where each occurs (deg, or rad
+        in SI), its component and description."""
+        pd = _pandas("Result.metrics_frame")
+        rows = {}
+        for key, m in self.metrics.items():
+            unit, factor = _in_units(key, m.unit, units)
+            _, to_angle = _in_units("cam_angle", "rad", units)
+            rows[key] = {"value": m.value * factor, "unit": unit,
+                         "angle": None if m.angle is None else m.angle * to_angle,
+                         "component": m.component, "description": m.description}
+        frame = pd.DataFrame.from_dict(rows, orient="index",
+                                       columns=["value", "unit", "angle", "component",
+                                                "description"])
+        frame.index.name = "metric"
+        return frame
 
     def __repr__(self) -> str:
         plan = ", ".join(self.plan.chosen) if self.plan is not None else "none"
@@ -291,3 +310,20 @@ class Result:
             res.plan = Plan(p["mode"], tuple(Step(s["effect"], s["chosen"], s["reason"])
                                              for s in p["steps"]), meta["kind"] or "valve_train")
         return res
+
+
+def _pandas(what: str):
+    try:
+        import pandas as pd
+    except ImportError:  # pragma: no cover - depends on the installation
+        raise ImportError(f"{what} needs pandas: pip install 'camtrain[pandas]'") from None
+    return pd
+
+
+def _in_units(name: str, si_unit: str, units: str) -> tuple[str, float]:
+    """(unit, factor from SI) of a column or metric in "deck" or "si" units: the same rules as
+    the files a run writes (one table of display rules, :mod:`camtrain.report.display`, which
+    imports nothing of camtrain)."""
+    from camtrain.report.display import output_unit
+
+    return output_unit(name, si_unit, units)

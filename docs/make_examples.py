@@ -1,7 +1,11 @@
-"""Regenerate the generated documentation: docs/examples.md (+ docs/img/) and docs/mechanism_*.md.
+"""Regenerate the generated documentation: docs/examples.md (+ docs/img/), docs/mechanism_*.md
+and the FLAME table of docs/piston.md (between its markers).
 
     python docs/make_examples.py              # everything
+    python docs/make_examples.py --no-images  # the text only, docs/img/ left as it is
     python docs/make_examples.py --pages      # only the mechanism pages (fast)
+
+tests/golden/test_generated_docs.py fails when a page differs from what the decks give.
 
 Each deck in decks/ is run as shipped; its published numbers (Ball 1988, Yang 1992) are put
 beside camtrain's. A deck that cannot run yet, or a quantity camtrain does not compute yet, is
@@ -11,6 +15,7 @@ fills the gaps without editing anything by hand.
 from __future__ import annotations
 
 import argparse
+import functools
 import math
 import sys
 import tempfile
@@ -285,18 +290,36 @@ def _num(x: float | None, digits: int = 4) -> str:
     return fmt(x, digits)
 
 
-def _run(path: Path):
+@functools.cache
+def _run(path: Path, sets: tuple[str, ...] = ()):
     from camtrain import api
     from camtrain.errors import CamtrainError
 
-    loaded = api.load(path)
+    loaded = api.load(path, sets)
     try:
         return loaded, api.run(loaded), ""
     except CamtrainError as exc:
         return loaded, None, str(exc)
 
 
-def _images(stem: str, result, loaded) -> list[tuple[str, str]]:
+def _picks(stem: str) -> list[tuple[str, str, str]]:
+    """(sheet file a run writes, image in docs/img, what it shows) of the images shown."""
+    picks = [(f"sheet_{s}.png", f"{stem}_{s}.png", s) for s in SHEETS_SHOWN]
+    picks.append(("panels/profile.png", f"{stem}_profile.png", "profile"))
+    picks += [(f"orbit_bearing_{k}.png", f"{stem}_orbit_bearing_{k}.png",
+               f"orbit, bearing {k}") for k in range(1, 10)]
+    picks += [(f"orbit_{b}.png", f"{stem}_orbit_{b}.png", f"orbit, {b.replace('_', ' ')}")
+              for b in ("big_end_1", "main_3", "main_3_grooved")]
+    picks.append(("sheet_engine_loads.png", f"{stem}_engine_loads.png", "load diagrams"))
+    picks.append(("sheet_piston.png", f"{stem}_piston.png", "piston assembly"))
+    return picks
+
+
+def _images(stem: str, result, loaded, draw: bool = True) -> list[tuple[str, str]]:
+    """The images of a deck's section, drawn into docs/img; with ``draw`` False the ones
+    already there (the text of the page without drawing, as the test compares it)."""
+    if not draw:
+        return [(dst, what) for _, dst, what in _picks(stem) if (IMG / dst).exists()]
     from camtrain.report.sheets import write_plots
 
     IMG.mkdir(exist_ok=True)
@@ -304,15 +327,7 @@ def _images(stem: str, result, loaded) -> list[tuple[str, str]]:
     with tempfile.TemporaryDirectory() as tmp:
         write_plots(result, loaded.model, Path(tmp), formats=("png",), sha=loaded.sha256,
                     dpi=100)
-        picks = [(f"sheet_{s}.png", f"{stem}_{s}.png", s) for s in SHEETS_SHOWN]
-        picks.append(("panels/profile.png", f"{stem}_profile.png", "profile"))
-        picks += [(f"orbit_bearing_{k}.png", f"{stem}_orbit_bearing_{k}.png",
-                   f"orbit, bearing {k}") for k in range(1, 10)]
-        picks += [(f"orbit_{b}.png", f"{stem}_orbit_{b}.png", f"orbit, {b.replace('_', ' ')}")
-                  for b in ("big_end_1", "main_3", "main_3_grooved")]
-        picks.append(("sheet_engine_loads.png", f"{stem}_engine_loads.png", "load diagrams"))
-        picks.append(("sheet_piston.png", f"{stem}_piston.png", "piston assembly"))
-        for src, dst, what in picks:
+        for src, dst, what in _picks(stem):
             if (Path(tmp) / src).exists():
                 _compact_png(Path(tmp) / src, IMG / dst)
                 shown.append((dst, what))
@@ -327,7 +342,7 @@ def _compact_png(src: Path, dst: Path) -> None:
         img.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(dst, optimize=True)
 
 
-def deck_section(path: Path) -> list[str]:
+def deck_section(path: Path, draw: bool = True) -> list[str]:
     stem = path.stem
     what, published = PUBLISHED.get(stem, ("", []))
     loaded, result, error = _run(path)
@@ -373,7 +388,7 @@ def deck_section(path: Path) -> list[str]:
         lines.append("")
     if result is not None and ("cam_angle" in result.columns
                                or "crank_angle" in result.columns):
-        for image, what in _images(stem, result, loaded):
+        for image, what in _images(stem, result, loaded, draw):
             lines += [f"![{stem}: {what}](img/{image})", ""]
     return lines
 
@@ -491,7 +506,7 @@ def conventions_section() -> list[str]:
     return lines + [""]
 
 
-def examples_md() -> str:
+def examples_md(draw: bool = True) -> str:
     from camtrain import __version__
 
     lines = ["# Worked examples", "",
@@ -506,9 +521,66 @@ def examples_md() -> str:
              "was tried. The last section shows every Ball target under both entrainment "
              "conventions and both clearances.", ""]
     for path in sorted((ROOT / "decks").glob("*.toml")):
-        lines += deck_section(path)
+        lines += deck_section(path, draw)
     lines += conventions_section()
     return "\n".join(lines).rstrip() + "\n"
+
+
+#: Yang (1992) Table 7.1, the Ford Zeta at full load [kW]: bearings, valve train, piston
+#: assembly, accessories, total
+YANG_TABLE_7_1 = {
+    2000: (0.275, 0.446, 1.480, 0.551, 2.751), 3000: (0.552, 0.667, 2.080, 0.825, 4.124),
+    4000: (0.836, 0.866, 2.876, 1.144, 5.722), 5000: (1.203, 1.031, 3.660, 1.474, 7.368),
+    6000: (1.604, 1.153, 4.472, 1.807, 9.036), 6400: (1.785, 1.187, 4.800, 1.943, 9.714),
+    7000: (2.074, 1.223, 5.264, 2.140, 10.701)}
+_FLAME = ("flame_bearings", "flame_valve_train", "flame_piston", "flame_accessories",
+          "flame_total")
+#: docs/piston.md's generated block: the FLAME table of decks/zeta_engine.toml over speed
+FLAME_BEGIN = "<!-- generated by docs/make_examples.py from decks/zeta_engine.toml -->"
+FLAME_END = "<!-- end of generated table -->"
+
+
+def flame_rows() -> dict[int, tuple[float, ...]]:
+    """camtrain's FLAME columns [kW] and fmep [kPa] of the Zeta engine at each speed of Table 7.1."""
+    rows = {}
+    for rpm in YANG_TABLE_7_1:
+        _, result, error = _run(ROOT / "decks" / "zeta_engine.toml", (f"speed.engine={rpm}",))
+        if error:
+            raise SystemExit(f"zeta_engine at {rpm} rpm: {error}")
+        m = result.metrics
+        rows[rpm] = tuple(m[k].value / 1e3 for k in _FLAME) + (m["fmep"].value / 1e3,)
+    return rows
+
+
+def _shares(bearings: float, valves: float, piston: float) -> str:
+    total = bearings + valves + piston
+    return " / ".join(f"{100 * x / total:.0f}" for x in (bearings, valves, piston))
+
+
+def flame_block() -> str:
+    """The Table 7.1 comparison of docs/piston.md, from the deck at every speed."""
+    rows = flame_rows()
+    lines = [FLAME_BEGIN, "",
+             "| rpm | bearings | Yang | valve train | Yang | piston | Yang | accessories | Yang "
+             "| total | Yang | fmep kPa |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for rpm, ours in rows.items():
+        yang = YANG_TABLE_7_1[rpm]
+        cells = [f"{ours[i]:.3f} | {yang[i]:.3f}" for i in range(5)]
+        lines.append(f"| {rpm} | " + " | ".join(cells) + f" | {ours[5]:.2f} |")
+    lines += ["", "Shares of the components (bearings / valve train / piston): camtrain "
+              f"{_shares(*rows[3000][:3])} % at 3000 rpm and {_shares(*rows[6000][:3])} % at "
+              f"6000 rpm; Yang {_shares(*YANG_TABLE_7_1[3000][:3])} % and "
+              f"{_shares(*YANG_TABLE_7_1[6000][:3])} %.", "", FLAME_END]
+    return "\n".join(lines)
+
+
+def piston_md(text: str) -> str:
+    """docs/piston.md with its generated block replaced by what the deck gives now."""
+    head, sep, rest = text.partition(FLAME_BEGIN)
+    _, sep2, tail = rest.partition(FLAME_END)
+    if not (sep and sep2):
+        raise SystemExit("docs/piston.md lacks the generated-table markers")
+    return head + flame_block() + tail
 
 
 def write_pages() -> None:
@@ -522,10 +594,15 @@ def write_pages() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--pages", action="store_true", help="only the mechanism pages")
+    parser.add_argument("--no-images", action="store_true",
+                        help="write the text only, linking the images already in docs/img")
     args = parser.parse_args()
     write_pages()
     if not args.pages:
-        (DOCS / "examples.md").write_text(examples_md(), encoding="utf-8")
+        text = examples_md(draw=not args.no_images)
+        (DOCS / "examples.md").write_text(text, encoding="utf-8")
+        piston = DOCS / "piston.md"
+        piston.write_text(piston_md(piston.read_text(encoding="utf-8")), encoding="utf-8")
 
 
 if __name__ == "__main__":

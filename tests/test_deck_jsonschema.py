@@ -184,3 +184,15 @@ def test_bank_two_lobe_with_v_angle_passes_both(validator):
     raw["camshaft"]["v_angle"] = 60.0
     validate(raw, "v", DECKS)
     assert _errors(validator, raw) == []
+
+
+def test_every_shipped_deck_names_the_schema_file_shipped_beside_it():
+    """Editors (taplo, Even Better TOML) validate a deck against the file its `#:schema` line
+    names, relative to the deck: decks/camtrain-deck.schema.json, which is what `camtrain
+    schema --out decks/camtrain-deck.schema.json` writes today."""
+    from camtrain.deck.jsonschema import SCHEMA_FILE
+
+    for deck in DECKS.glob("*.toml"):
+        assert deck.read_text(encoding="utf-8").startswith(f"#:schema ./{SCHEMA_FILE}\n"), deck
+    shipped = json.loads((DECKS / SCHEMA_FILE).read_text(encoding="utf-8"))
+    assert shipped == deck_json_schema(), "rerun camtrain schema --out decks/" + SCHEMA_FILE

@@ -16,7 +16,9 @@ import math
 import numpy as np
 from numba import njit
 
-from ._orbit_kernel import BUDGET, NOT_PERIODIC, OFF_MAP, OK, STALL_CYCLES, _squeeze
+from camtrain.numerics.compile_notice import announce
+
+from ._orbit_kernel import BUDGET, NOT_PERIODIC, OFF_MAP, OK, STALL_CYCLES, _squeeze, steady_start
 
 # Dormand-Prince 5(4) tableau (rows of A padded with zeros).
 _C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
@@ -382,3 +384,6 @@ def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, per
                                                    state, t_eps, t_mxi, t_mmu)
     status = OK if change <= period_tol else NOT_PERIODIC
     return cur, vel, cycles, change, status, 0.0, 0.0, steps
+
+
+announce("journal-orbit", (march_orbit, linear_coefficients, periodic_spline, steady_start))

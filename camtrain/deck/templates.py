@@ -44,14 +44,20 @@ EXAMPLES: dict[str, dict[str, object]] = {
               "mechanism.type": "domed", "mechanism.follower_radius": 250.0,
               "mechanism.offset": 0.0, "cam.base_radius": 18.0, "cam.width": 12.0,
               **_HARRISON_LIFT, **_HARRISON_LOADS},
-    "finger": {"title": "Cam and end-pivoted finger follower (Pinto geometry, Ball 1988)",
+    "finger": {"title": "Ford Pinto inlet cam and end-pivoted finger follower (Ball 1988)",
                "speed.camshaft": 2500.0, "mechanism.type": "finger",
+               "mechanism.rotation": "anticlockwise",
                "mechanism.follower_radius": 44.0, "mechanism.A": 51.80, "mechanism.B": 61.80,
                "mechanism.D": 46.20, "mechanism.kappa": 39.7, "mechanism.lambda": 31.9,
-               "cam.base_radius": 15.0, "cam.width": 21.0, **_HARRISON_LIFT,
+               "cam.base_radius": 15.0, "cam.width": 21.0,
+               # Ball App E: the Pinto cam lift itself (as seen by the 44 mm follower), not a
+               # lift law of another engine, so the flank stays convex and the film real
+               "lift.form": "table", "lift.measured_at": "cam", "lift.inspection_radius": 44.0,
+               "lift.table.dataset": "pinto_inlet_cam",
+               "lift.table.derivative": "smoothing_spline",
                "spring.rate": 40.0, "spring.preload_compression": 11.0,
-               "masses.valve_side": 0.148, "lubricant.viscosity": 0.013,
-               "lubricant.pressure_viscosity": 22.0},
+               "masses.valve_side": 0.148, "clearance.valve_clearance": 0.4,
+               "lubricant.viscosity": 0.013, "lubricant.pressure_viscosity": 22.0},
     "rocker": {"title": "Cam and centrally pivoted rocker (Rover 2300, Ball 1988)",
                "speed.camshaft": 2500.0, "mechanism.type": "rocker",
                "mechanism.follower_radius": 35.56, "mechanism.A": 50.06, "mechanism.B": 54.00,
@@ -59,7 +65,7 @@ EXAMPLES: dict[str, dict[str, object]] = {
                "cam.base_radius": 14.30, "cam.width": 17.0, "lift.form": "exp_poly",
                "lift.exp_poly.coefficients": [2.317111, -0.8104e-3, -1.526837, -0.1552985,
                                               -1.789897, 0.1171634, -0.2422081],
-               "lift.exp_poly.cutoff": 0.01, "spring.rate": 60.0,
+               "lift.exp_poly.cutoff": 1e-4, "spring.rate": 60.0,
                "spring.preload_compression": 4.0, "masses.valve_side": 0.10,
                "lubricant.viscosity": 0.013, "lubricant.pressure_viscosity": 15.0,
                "materials.cam_poisson": 0.3, "materials.follower_poisson": 0.3},
@@ -170,7 +176,11 @@ def render_bearing_template() -> str:
 
 
 #: The engine template: Yang's (1992) Ruston 6VEB-X Mk III, complete in his Appendix A
-#: (decks/ruston_6veb.toml is the same engine with every source note).
+#: (decks/ruston_6veb.toml is the same engine with every source note). Yang's pressure table
+#: (bar, read as gauge: 1.21 bar through the gas exchange is the boost of this turbocharged
+#: engine) is written absolute, plus one standard atmosphere, the crankcase pressure an
+#: absolute table is referred to: the same gauge pressures, stated without ambiguity.
+_ATMOSPHERE_BAR = 1.01325
 _RUSTON_BAR = [47.37, 64.12, 48.61, 34.82, 25.51, 18.62, 14.48, 11.52, 9.03, 7.59, 6.59, 5.90,
                5.41, 5.00, 4.72, 4.10, 3.14, 2.45, 1.76, 1.41, 1.35] + [1.21] * 38 + [
                1.41, 1.41, 1.76, 2.10, 2.45, 3.14, 4.10, 6.10, 8.65, 12.45, 18.62, 26.55, 34.82]
@@ -184,8 +194,8 @@ ENGINE_EXAMPLE: dict[str, object] = {
     "crank_components": [{"bay": i + 1, "position": 222.25, "angle": float(a),
                           "moment": 139.19, "moment_unit": "N·m"}
                          for i, a in enumerate((0, 240, 120, 120, 240, 0))],
-    "pressure": [{"speeds": [600.0], "reference": "gauge", "unit": "bar", "angle_step": 10.0,
-                  "values": _RUSTON_BAR}],
+    "pressure": [{"speeds": [600.0], "reference": "absolute", "unit": "bar", "angle_step": 10.0,
+                  "values": [round(v + _ATMOSPHERE_BAR, 5) for v in _RUSTON_BAR]}],
     **{f"bearings.{b}.{k}": v for b in ("big_end", "main") for k, v in (
         ("diameter", 203.2), ("length", 57.15), ("clearance", 0.08255), ("viscosity", [0.015]))},
     "solver.bearing_model": "short",   # as Yang: reproduces his printed numbers

@@ -17,6 +17,7 @@ from camtrain.dynamics._coupled_film_kernel import film_step, table_coefficient
 from camtrain.dynamics._coupled_lowrank import basis_rows
 from camtrain.dynamics._coupled_partition import predict_loads
 from camtrain.dynamics._coupled_step import advance, cam_gap
+from camtrain.numerics.compile_notice import announce
 
 
 @njit(cache=True)
@@ -207,3 +208,6 @@ def revolution(q, v, acc, act_c, act_s, w_prev, x_f0, P, Q, blocks, ainv_basis, 
                 if film_on:
                     out_film[j, g] = film_h[j]
     return switches_total, cut, missed
+
+
+announce("shaft-and-trains", (revolution,))

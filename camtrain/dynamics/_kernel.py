@@ -27,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
 MAX_SWITCHES = 8
@@ -435,3 +436,6 @@ def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, strid
                 u_prev[i] = u[i]
                 u[i] = nxt
     return nev, work, 0
+
+
+announce("valve-train dynamics", (newmark_march, central_difference_march))

@@ -92,8 +92,13 @@ def run(deck, inputs, res):
     bank1 = [lobe for lobe in cs.lobes if lobe.bank == 1]
     curves = [shift_curve(single, lobe.max_lift_angle) for lobe in bank1]
     total = np.sum(curves, axis=0) if curves else np.zeros_like(theta)
+    res.add_column("shaft_angle", theta, "rad",
+                   "camshaft angle, the abscissa of the camshaft's columns from here on (torque, "
+                   "drive power, bearings, shaft, lobes), on which each lobe's nose sits at its "
+                   "camshaft.lobes max_lift_angle; the columns before it (lift to the guide "
+                   "powers) are the train's, at its own lobe's cam_angle (nose at 0)")
     res.add_column("camshaft_torque", total, "N*m",
-                   f"summed torque of the {len(bank1)} lobes on this shaft")
+                   f"summed torque of the {len(bank1)} lobes on this shaft, at shaft_angle")
     power, mean_power = drive_power(total, omega)
     res.add_column("drive_power", power, "W", "camshaft drive power T omega")
     res.add_metric("drive_power_mean", mean_power, "W", "cycle-mean camshaft drive power")

@@ -155,9 +155,10 @@ def run(deck, inputs, res):
                        "largest difference of any lobe's load between the waveform iteration "
                        "and the monolithic march it started from, over the largest marched load")
     for j, g in enumerate(gammas):
-        seps = findings(responses[j]).separations
+        seps = [s for s in findings(responses[j]).separations if s.in_flight]
         res.add_metric("separations", len(seps), "-",
-                       f"lobe {j + 1}: separations of the cam contact", component=f"lobe_{j + 1}")
+                       f"lobe {j + 1}: losses of the cam contact while the valve is in flight "
+                       "(not its landing on the seat)", component=f"lobe_{j + 1}")
         for s in seps:
             res.add_event("contact_loss", math.remainder(s.loss + g, 2 * math.pi),
                           f"lobe {j + 1}: the cam loses the follower", component=f"lobe_{j + 1}")

@@ -30,6 +30,45 @@ def reason(deck, planned) -> str:
     return f"[dynamics] given: elastic train, {d.integrator}, {spring}"
 
 
+def _separations(res, found) -> None:
+    """Separations are the cam losing the follower while the valve is in flight (a jump); the
+    contact opening after the valve has landed on its seat (taking up the lash at the end of the
+    lift, or a rebound of the valve off its seat, which the seat-impact count reports) is a
+    landing, reported with the valve's landing speed but neither counted nor warned about."""
+    import math
+
+    flights = [s for s in found.separations if s.in_flight]
+    landings = [s for s in found.separations if not s.in_flight]
+    for s in flights:
+        res.add_event("contact_loss", s.loss, "the cam loses the follower (elastic train)")
+        res.add_event("contact_regained", s.regained, f"the follower lands on the cam again at "
+                      f"{abs(s.speed):.3g} m/s")
+    landed = found.seat_impacts[0][1] if found.seat_impacts else math.nan
+    for s in landings:
+        res.add_event("landing", s.loss, f"the valve is on its seat (landed at {landed:.3g} m/s); "
+                      "the cam contact opens across the lash")
+    res.add_metric("separations", len(flights), "-", "losses of the cam contact while the valve "
+                   "is in flight (a follower jump; the contact opening once the valve has landed "
+                   "on its seat is a landing, not a separation)")
+    res.add_metric("landings", len(landings), "-", "openings of the cam contact after the valve "
+                   "landed on its seat (the lash taken up, or a rebound off the seat)")
+    if found.seat_impacts:
+        res.add_metric("landing_speed", landed, "m/s", "valve speed at its first landing on the "
+                       "seat", found.seat_impacts[0][0])
+    if not flights:
+        return
+    dwell = min(s.dwell for s in flights)
+    res.add_metric("separation_dwell_min", dwell, "rad", "shortest separation")
+    res.add_metric("separation_angle", flights[0].loss, "rad", "first loss of contact in flight",
+                   flights[0].loss)
+    deg = ", ".join(f"{math.degrees(s.loss):.1f}" for s in flights[:6])
+    res.warn(f"valve-train separation: the cam loses the follower {len(flights)} times per "
+             f"revolution while the valve is in flight (at {deg} deg; shortest dwell "
+             f"{math.degrees(dwell):.3g} deg); loads there are impacts, not a design load; "
+             "a stiffer spring (spring.rate, spring.preload_compression) or a lower "
+             "speed.camshaft keeps the contact")
+
+
 def run(deck, inputs, res):
     import math
 
@@ -96,39 +135,19 @@ def run(deck, inputs, res):
     res.add_metric("cycles", resp.cycles, "-", "camshaft revolutions marched")
     res.add_metric("period_change", resp.change, "-", "change between the last two revolutions")
     found = findings(resp)
-    for s in found.separations:
-        res.add_event("contact_loss", s.loss, "the cam loses the follower (elastic train)")
-        res.add_event("contact_regained", s.regained, f"the follower lands on the cam again at "
-                      f"{abs(s.speed):.3g} m/s")
-    for angle, speed in found.seat_impacts:
-        res.add_event("seat_impact", angle, f"the valve lands on its seat at {speed:.3g} m/s")
-    res.add_metric("separations", len(found.separations), "-",
-                   "separations of the cam contact during the lift event")
-    jumps = [s for s in found.separations if s.in_flight]
-    res.add_metric("jumps", len(jumps), "-", "separations while the valve is off its seat "
-                   "(follower jump; the others are rebounds of the valve landing)")
-    if found.separations:
-        dwell = min(s.dwell for s in found.separations)
-        res.add_metric("separation_dwell_min", dwell, "rad", "shortest separation")
-        first = found.separations[0]
-        res.add_metric("separation_angle", first.loss, "rad", "first loss of contact",
-                       first.loss)
-        deg = ", ".join(f"{math.degrees(s.loss):.1f}" for s in found.separations[:6])
-        res.warn(f"valve-train separation: the cam loses the follower {len(found.separations)} "
-                 f"times per revolution ({len(jumps)} while the valve is in flight; at {deg} "
-                 f"deg; shortest dwell {math.degrees(dwell):.3g} deg); loads there are impacts, "
-                 "not a design load")
+    _separations(res, found)
     if found.seat_impacts:
         speeds = [s for _, s in found.seat_impacts]
         res.add_metric("seat_impacts", len(speeds), "-", "valve landings on the seat")
         res.add_metric("seat_impact_speed_max", max(speeds), "m/s", "fastest valve landing")
         if len(speeds) > 1:
             res.warn(f"valve bounce: the valve lands on its seat {len(speeds)} times per "
-                     f"revolution (fastest {max(speeds):.3g} m/s)")
+                     f"revolution (fastest {max(speeds):.3g} m/s; dynamics.damping_ratio damps "
+                     "the rebound, a gentler closing ramp, lift.ramps, lowers the landing speed)")
     if found.base_circle_changes:
         res.warn(f"zero lash: the follower touches and leaves the cam {found.base_circle_changes}"
-                 " times on the base circle (ringing at no load; give a clearance or an "
-                 "adjuster load to settle the base-circle contact)")
+                 " times on the base circle (ringing at no load; clearance.valve_clearance or "
+                 "clearance.adjuster_load settles the base-circle contact)")
     if not resp.converged:
         res.warn(f"dynamics: no periodic state after {resp.cycles} revolutions (last change "
                  f"{resp.change:.3g} > period_tol {settings.period_tol:g}); results are the "

@@ -230,6 +230,11 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
         result.warn(warning)
 
 
+#: what the zero-entrainment warning says of the steady film, naming the option that changes it
+STEADY_FILM_NOTE = (" (tribology.film_model = \"steady\" has no squeeze film; \"squeeze\" or "
+                    "\"averaged_reynolds\" marches the film through it)")
+
+
 @by_identity
 def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving: bool):
     """The metric rows, zero-entrainment angles and warning of :func:`kinematics_metrics`: they
@@ -273,7 +278,7 @@ def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving
         where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
         warning = (f"entrainment velocity passes through zero{label} at {where} deg: the "
                    "steady EHL film vanishes there"
-                   + (carried or " (squeeze films are not modelled)"))
+                   + (carried or STEADY_FILM_NOTE))
     return tuple(metrics), zeros, warning
 
 

@@ -182,7 +182,8 @@ def run(deck, inputs, res):
         deg = np.degrees(kin.theta[lost])
         res.warn(f"valve bounce: the cam loses contact (W <= 0) at {int(lost.sum())} angles "
                  f"between {deg.min():.1f} and {deg.max():.1f} deg; the rigid-train results "
-                 "there are not physical")
+                 "there are not physical; a stiffer spring (spring.rate, "
+                 "spring.preload_compression) or a lower speed.camshaft keeps the contact")
     if sol.friction is None and depends:
         res.warn("friction/load iteration skipped (no lubricant or cam width): loads use the "
                  f"boundary coefficient {deck.tribology.boundary_friction:g} everywhere")

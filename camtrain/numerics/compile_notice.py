@@ -1,71 +1,60 @@
-"""A one-line notice when camtrain compiles its numerical kernels in this process.
+"""Say so, once and by name, when a family of compiled kernels is about to be compiled.
 
-The numba kernels (journal orbits, the elastic valve train, the coupled camshaft) are compiled
-on first use and cached on disk (``cache=True``); a run that finds the cache is fast (the
-coupled camshaft deck: about 6 s of CPU), one that does not first spends 30-70 s of CPU
-compiling: after an install, an upgrade, or any change of a kernel's source file. Without a word
-that looks like a hang, so :func:`watch` prints once, when numba actually compiles (a kernel
-loaded from the cache says nothing).
+numba compiles a kernel on its first call and keeps the machine code in its disk cache
+(``cache=True``), so the compile is paid once per installation (``camtrain warmup`` pays it
+ahead; docs/performance.md, "First run"). When a kernel module is imported (only decks that use
+it import it) it calls :func:`announce` with its entry kernels: if any of them has no fresh entry
+in the disk cache, the listeners (the command line prints to standard error) hear
+"compiling the journal-orbit kernels, once per installation, about 15 s".
 
-numba is imported only by decks that use a kernel, so the listener is installed when numba is
-first imported (an import hook), never by importing numba here.
+The cache is read through numba's own index of the kernel (its source stamp and numba version
+must match, as numba checks them itself); a numba whose cache layout differs is not guessed at:
+nothing is announced.
 """
 from __future__ import annotations
 
-import sys
-from collections.abc import Callable
-from importlib.abc import MetaPathFinder
-from importlib.machinery import PathFinder
+from collections.abc import Callable, Iterable
 
-NOTICE = ("note: compiling camtrain's numerical kernels (first use after an install or an "
-          "upgrade: up to about a minute, once; later runs load them from the cache)")
+#: family -> CPU seconds its compile took on the reference machine (docs/performance.md,
+#: "First run": a deck's cold run less its warm run, the other families already cached)
+COMPILE_SECONDS = {
+    "journal-orbit": 13,
+    "valve-train dynamics": 13,
+    "shaft-and-trains": 30,
+    "ring-film": 5,
+}
 
-_said = [False]
-
-
-def _listen(say: Callable[[str], None]) -> None:
-    from numba.core import event
-
-    class _Compiling(event.Listener):
-        def on_start(self, ev):
-            if not _said[0]:
-                _said[0] = True
-                say(NOTICE)
-
-        def on_end(self, ev):
-            pass
-
-    event.register("numba:compile", _Compiling())
+_listeners: list[Callable[[str], None]] = []
+_announced: set[str] = set()
 
 
-class _OnNumbaImport(MetaPathFinder):
-    """Finds nothing itself; wraps numba's loader so the listener is installed once numba is."""
-
-    def __init__(self, say):
-        self.say = say
-
-    def find_spec(self, name, path=None, target=None):
-        if name != "numba":
-            return None
-        sys.meta_path.remove(self)
-        spec = PathFinder.find_spec(name, path)
-        if spec is None or spec.loader is None:
-            return spec
-        run_module, say = spec.loader.exec_module, self.say
-
-        def exec_module(module):
-            run_module(module)
-            _listen(say)
-
-        spec.loader.exec_module = exec_module
-        return spec
+def listen(listener: Callable[[str], None] | None) -> None:
+    """Hand notices to ``listener`` (replacing any other); None silences them."""
+    _listeners.clear()
+    if listener is not None:
+        _listeners.append(listener)
 
 
-def watch(say: Callable[[str], None]) -> None:
-    """Call ``say(NOTICE)`` the first time numba compiles a kernel in this process."""
-    if _said[0]:
-        return
-    if "numba" in sys.modules:
-        _listen(say)
-    elif not any(isinstance(f, _OnNumbaImport) for f in sys.meta_path):
-        sys.meta_path.insert(0, _OnNumbaImport(say))
+def is_cached(kernel) -> bool:
+    """True when numba's disk cache holds a fresh compile of ``kernel`` (or it cannot tell)."""
+    try:
+        return bool(kernel._cache._cache_file._load_index())
+    except Exception:  # noqa: BLE001 - another numba's internals: do not claim a compile
+        return True
+
+
+def message(family: str) -> str:
+    seconds = COMPILE_SECONDS.get(family)
+    about = f", about {seconds} s" if seconds else ""
+    return (f"compiling the {family} kernels, once per installation{about} "
+            "(`camtrain warmup` compiles every kernel ahead)")
+
+
+def announce(family: str, kernels: Iterable) -> bool:
+    """Tell the listeners, once per process, that ``family`` will compile; True if it was said."""
+    if family in _announced or all(is_cached(k) for k in kernels):
+        return False
+    _announced.add(family)
+    for listener in _listeners:
+        listener(message(family))
+    return True

@@ -12,6 +12,7 @@ import math
 import numpy as np
 from numba import njit
 
+from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position_mean, illinois_update
 from camtrain.piston.film_floor import FILM_FLOOR
 
@@ -402,3 +403,6 @@ def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, own_from, own_to, o
         if change < tolerance and cycles > 1:
             break
     return h, g, used, cycles, change
+
+
+announce("ring-film", (march, step, film, integrals))

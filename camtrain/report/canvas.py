@@ -6,6 +6,12 @@ glyph in Python on every draw, a third of a sheet's drawing time. Here each dist
 (text, font, dpi, antialiasing) is rendered by FreeType into a bitmap once per process and
 blitted where it is drawn, placed to the whole pixel as matplotlib up to 3.10 placed its text
 bitmaps. Mathematical text and anything unusual go through matplotlib's own path.
+
+The cache leans on matplotlib internals (``RendererAgg._prepare_font`` and its
+``_renderer.draw_text_image``, ``FigureCanvasAgg._lastKey``,
+``fontManager._find_fonts_by_props``). :data:`CACHED_TEXT` checks once that they exist; on a
+matplotlib without them every figure is drawn on matplotlib's own ``FigureCanvasAgg``: the
+same sheets, only slower text (tests/report/test_canvas.py draws a sheet both ways).
 """
 from __future__ import annotations
 
@@ -88,6 +94,23 @@ def _shaped(mtext) -> bool:
     return bool((features and features()) or (language and language()))
 
 
+def _internals_present() -> bool:
+    """True when the matplotlib internals the string cache uses exist."""
+    try:
+        from matplotlib.font_manager import fontManager
+
+        return (callable(getattr(RendererAgg, "_prepare_font", None))
+                and callable(getattr(fontManager, "_find_fonts_by_props", None))
+                and hasattr(RendererAgg(1, 1, 72)._renderer, "draw_text_image")
+                and hasattr(FigureCanvasAgg(Figure()), "_lastKey"))
+    except Exception:  # noqa: BLE001 - any change of those internals means: do not use them
+        return False
+
+
+#: draw text through the string cache (False: matplotlib's own canvas, see the module doc)
+CACHED_TEXT = _internals_present()
+
+
 class Canvas(FigureCanvasAgg):
     """FigureCanvasAgg drawing with the string-caching renderer."""
 
@@ -103,7 +126,7 @@ class Canvas(FigureCanvasAgg):
 def figure(size) -> Figure:
     """A bare figure on the canvas (no pyplot figure manager: nothing to close, nothing kept)."""
     fig = Figure(figsize=size)
-    Canvas(fig)
+    (Canvas if CACHED_TEXT else FigureCanvasAgg)(fig)
     return fig
 
 

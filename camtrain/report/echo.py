@@ -51,3 +51,27 @@ def _walk(obj, prefix: str, rows: list) -> None:
                 unit = info.unit
                 text = _fmt(value, unit)
             rows.append((path, info.doc, text, "" if unit == "-" else unit))
+
+
+def given_paths(raw: dict, prefix: str = "") -> set[str]:
+    """The dotted paths (``camshaft.lobes[0].max_lift_angle``) a deck's TOML sets itself."""
+    out = set()
+    for key, value in raw.items():
+        path = f"{prefix}.{key}" if prefix else key
+        if isinstance(value, dict):
+            out |= given_paths(value, path)
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            for i, item in enumerate(value):
+                out |= given_paths(item, f"{path}[{i}]")
+        else:
+            out.add(path)
+    return out
+
+
+def given_rows(deck: Deck, raw: dict) -> tuple[list[tuple[str, str, str, str]], int]:
+    """The echo rows of the fields the deck sets itself, and how many other fields (defaults)
+    the full echo holds."""
+    rows = echo_rows(deck)
+    given = given_paths(raw)
+    mine = [r for r in rows if r[0] in given]
+    return mine, len(rows) - len(mine)

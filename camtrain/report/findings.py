@@ -35,7 +35,8 @@ class Findings:
             out.append("zero entrainment (quasi-static film collapses) at "
                        + ", ".join(f"{math.degrees(a):+.1f}°" for a in self.zero_entrainment))
         if self.boundary:
-            out.append("boundary lubrication (λ < 1) at " + ranges_text(self.boundary))
+            out.append("boundary lubrication (λ < 1) at " + ranges_text(self.boundary)
+                       + " (λ = film / lubricant.roughness; lubricant.viscosity raises the film)")
         topics = {"valve bounce": ("bounce", "loses contact", "loss of contact"),
                    "concave": ("concave",), "zero entrainment": ("entrainment",),
                    "boundary": ("boundary lubrication",)}

@@ -150,26 +150,47 @@ def check_knobs(raw: dict, names: Sequence[str] | None) -> list[str]:
     return out
 
 
-def _run_rung(raw: dict, base_dir, repeat: int) -> dict:
-    """Validate and run one rung; its metrics, best-of-``repeat`` wall time, or its error."""
+#: a rung's time is stable when its two fastest runs agree within this fraction
+STABLE_SPREAD = 0.1
+
+
+def timing_spread(times: Sequence[float]) -> float:
+    """(second fastest - fastest) / fastest of a rung's timed runs; inf for a single run."""
+    if len(times) < 2:
+        return math.inf
+    first, second = sorted(times)[:2]
+    return (second - first) / first if first > 0 else math.inf
+
+
+def _run_rung(raw: dict, base_dir, repeat: int, least: int = 1) -> dict:
+    """Validate and run one rung; its metrics and wall time, or its error.
+
+    The rung is timed again (at least ``least`` runs, at most ``repeat``) until its two fastest
+    runs agree within STABLE_SPREAD: a single run of a few milliseconds is noise. The fastest
+    time is kept, with the spread of the two fastest and the number of runs."""
     from camtrain import api
     from camtrain.deck.load import validate
 
+    times: list[float] = []
     try:
         model = validate(raw, base_dir=base_dir)
-        wall = math.inf
-        for _ in range(max(1, repeat)):
+        while len(times) < max(1, repeat):
             start = time.perf_counter()
             result = api.run(model)
-            wall = min(wall, time.perf_counter() - start)
+            times.append(time.perf_counter() - start)
+            if len(times) >= least and timing_spread(times) <= STABLE_SPREAD:
+                break
     except CamtrainError as exc:
         return {"status": "error", "message": str(exc), "exit_code": exc.exit_code,
-                "wall_time": None, "metrics": {}}
+                "wall_time": None, "wall_spread": None, "timed_runs": len(times), "metrics": {}}
     metrics = {k: {"value": m.value, "unit": m.unit} for k, m in result.metrics.items()}
-    return {"status": "ok", "message": "", "exit_code": 0, "wall_time": wall, "metrics": metrics}
+    spread = timing_spread(times)
+    return {"status": "ok", "message": "", "exit_code": 0, "wall_time": min(times),
+            "wall_spread": spread if math.isfinite(spread) else None,
+            "timed_runs": len(times), "metrics": metrics}
 
 
-def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat: int = 1,
+def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat: int = 5,
                ladder: Sequence[float] | None = None,
                metrics: Sequence[str] = KEY_METRICS) -> dict:
     """Run the ladder of one knob and analyse every key metric it produced."""
@@ -177,8 +198,9 @@ def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat:
     values = tuple(ladder or knob.ladder_of(raw))
     values = tuple(int(v) for v in values) if knob.integer else values
     setter = knob.setter or (lambda r, v: set_path(r, knob.path, v))
-    runs = max(repeat, 2) if knob.warm else repeat
-    rungs = [dict(value=v, **_run_rung(setter(raw, v), base_dir, runs)) for v in values]
+    least = 2 if knob.warm else 1      # a warm knob's first run builds a table: time another
+    rungs = [dict(value=v, **_run_rung(setter(raw, v), base_dir, max(repeat, least), least))
+             for v in values]
     steps = [knob.step(v) for v in values]
     found = [m for m in metrics if any(m in r["metrics"] for r in rungs)]
     if metrics is KEY_METRICS:
@@ -204,7 +226,7 @@ def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat:
 
 
 def study(deck: str, knobs: Sequence[str] | None = None, tolerance: float = 1e-3, *,
-          repeat: int = 1, progress: Callable[[str], None] | None = None) -> dict:
+          repeat: int = 5, progress: Callable[[str], None] | None = None) -> dict:
     """The accuracy study of a deck file: every requested knob's ladder, analysed."""
     from pathlib import Path
 
@@ -227,7 +249,7 @@ def study(deck: str, knobs: Sequence[str] | None = None, tolerance: float = 1e-3
 
 # --------------------------------------------------------------------------- tables
 
-CSV_FIELDS = ("knob", "value", "status", "wall_time_s", "metric", "unit", "metric_value",
+CSV_FIELDS = ("knob", "value", "status", "wall_time_s", "wall_spread", "metric", "unit", "metric_value",
               "reference", "reference_kind", "relative_error", "observed_order")
 
 
@@ -237,7 +259,7 @@ def rows(report: dict) -> list[dict]:
     for knob, k in report["knobs"].items():
         for i, rung in enumerate(k["rungs"]):
             base = {"knob": knob, "value": rung["value"], "status": rung["status"],
-                    "wall_time_s": rung["wall_time"]}
+                    "wall_time_s": rung["wall_time"], "wall_spread": rung.get("wall_spread")}
             if rung["status"] != "ok":
                 out.append({**base, "metric": "", "unit": "", "metric_value": None,
                             "reference": None, "reference_kind": "", "relative_error": None,
@@ -260,6 +282,22 @@ def value_text(v) -> str:
     return format(v, "g") if isinstance(v, int | float) else str(v)
 
 
+def _verdict(rung: dict, worst: float | None, tolerance: float) -> str:
+    """met / not met against the tolerance, or why the rung did not run."""
+    if rung["status"] != "ok":
+        return f"{rung['status']}: {rung['message'].splitlines()[0]}"
+    if worst is None:
+        return "-"
+    return "met" if worst <= tolerance else "not met"
+
+
+def _spread_text(spread: float | None, runs: int | None) -> str:
+    """The spread of a rung's two fastest times, '-' for a rung timed once."""
+    if spread is None:
+        return "-"
+    return f"{100 * spread:.0f}%" + ("" if spread <= STABLE_SPREAD else "!")
+
+
 def render_table(report: dict) -> str:
     """Plain-text tables for the terminal: per knob, the time of each rung, then per metric the
     value, relative error and observed order at each rung (metrics the knob leaves unchanged are
@@ -268,14 +306,15 @@ def render_table(report: dict) -> str:
     lines = [f"{report['title']}: accuracy study (tolerance {tol:.3g})"]
     for knob, k in report["knobs"].items():
         lines += ["", f"{knob} ({k['path']}): {k['description']}",
-                  f"  {'value':>10} {'time ms':>9} {'worst err':>10}  status"]
+                  f"  {'value':>10} {'time ms':>9} {'spread':>7} {'worst err':>10}  "
+                  f"tolerance {tol:.3g}"]
         for i, rung in enumerate(k["rungs"]):
-            t = rung["wall_time"]
-            msg = rung["status"] if rung["status"] == "ok" else \
-                f"{rung['status']}: {rung['message'].splitlines()[0]}"
+            t, spread = rung["wall_time"], rung.get("wall_spread")
             lines.append(f"  {value_text(rung['value']):>10} "
                          f"{_fmt(None if t is None else 1e3 * t, '.1f'):>9}"
-                         f" {_fmt(k['worst_error'][i], '.2e'):>10}  {msg}")
+                         f" {_spread_text(spread, rung.get('timed_runs')):>7}"
+                         f" {_fmt(k['worst_error'][i], '.2e'):>10}  "
+                         f"{_verdict(rung, k['worst_error'][i], tol)}")
         unchanged = []
         for metric, m in k["metrics"].items():
             if not any(m["errors"][i] for i in range(len(m["errors"]))):

@@ -64,10 +64,15 @@ def route(raw: dict, params: list[Parameter], name: str, base_dir: str, key: str
         article = "an" if kind[:1] in "aeiou" else "a"
         return Route(False, f"{article} {kind} deck runs each case through its own plan")
     for p in params:
-        if p.path not in BATCH_PATHS or not changes_only_its_field(raw, p):
+        if p.path not in BATCH_PATHS:
             return Route(False, f"{p.path} is not a scalar the chain uses elementwise (batched: "
                          "speed, cam base radius and width, spring rate and preload, valve-side "
                          "mass, lubricant, boundary friction, materials)")
+        if not changes_only_its_field(raw, p):
+            mech = raw.get("mechanism") if isinstance(raw.get("mechanism"), dict) else {}
+            return Route(False, f"on a {mech.get('type', 'pivoted')} follower {p.path} moves "
+                         "other fields with it (Ball's pivot rules), so each case is built and "
+                         "validated on its own")
     try:
         from camtrain.scene import resolve
         from camtrain.study.case_model import datum_model

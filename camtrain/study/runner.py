@@ -16,8 +16,9 @@ from pathlib import Path
 from camtrain.errors import InputError, Problem
 from camtrain.report.tables import atomic_write
 from camtrain.study import sweep_output as so
+from camtrain.study.assign import apply_fixed, parse_assignment
 from camtrain.study.executors import Job, make_executor, run_case
-from camtrain.study.sweep import Case, Parameter, apply_fixed, build_parameters, cases, parse_assignment
+from camtrain.study.sweep import Case, Parameter, build_parameters, cases
 
 
 @dataclass
@@ -49,6 +50,24 @@ class Outcome:
     route: object = None
     #: what the sweep wants its user to know (e.g. why finished cases were run again)
     notes: list[str] = field(default_factory=list)
+
+    def to_dataframe(self):
+        """One row per case (indexed by case number): the swept values, the status and its
+        message, and every metric as a column ``name[unit]`` in the sweep's units. Needs
+        pandas (``pip install 'camtrain[pandas]'``)."""
+        from camtrain.result import _pandas
+
+        pd = _pandas("Outcome.to_dataframe")
+        rows = []
+        for rec in self.records:
+            row = dict(rec["values"])
+            row["status"] = rec["status"]
+            row["message"] = rec.get("message", "")
+            for name, (value, unit) in (rec.get("metrics") or {}).items():
+                row[f"{name}[{unit}]"] = value
+            rows.append(row)
+        index = pd.Index([rec["index"] for rec in self.records], name="case")
+        return pd.DataFrame(rows, index=index)
 
     def count(self, status: str) -> int:
         return sum(r["status"] == status for r in self.records)

@@ -86,8 +86,13 @@ def _schema_of(raw: dict) -> type:
     return getattr(importlib.import_module(module), cls)
 
 
-def _field_at(path: str, option: str, schema: type | None = None):
-    """Walk the deck schema along ``path``; return (Shape, FieldInfo, default in SI) of the leaf."""
+#: leaf kinds ``--set`` may also change (a sweep's parameters are numbers)
+SCALARS = ("boolean", "string", "choice")
+
+
+def _field_at(path: str, option: str, schema: type | None = None, scalars: bool = False):
+    """Walk the deck schema along ``path``; return (Shape, FieldInfo, default in SI) of the leaf:
+    a number, or with ``scalars`` also a boolean, string or choice."""
     from camtrain.deck.fields import deck_key, schema_paths, section_fields
     from camtrain.deck.schema import Deck
 
@@ -118,6 +123,8 @@ def _field_at(path: str, option: str, schema: type | None = None):
             return shape, info, f.default
         elif last and shape.kind == "numbers" and index is not None:
             return shape, info, None
+        elif last and scalars and shape.kind in SCALARS and index is None:
+            return shape, info, f.default
         else:
             raise _bad(option, path, "does not name a single number in the deck",
                        "a numeric field (a list entry needs an index, e.g. [0])")
@@ -283,27 +290,3 @@ def case_raw(raw: dict, params: list[Parameter], case: Case) -> dict:
 
     apply_pivot_rules(raw, out, {p.path for p in params})
     return out
-
-
-def apply_fixed(raw: dict, fixed: list[Parameter]) -> dict:
-    """The raw deck with every ``--set`` value written in (pivot rules applied)."""
-    out = copy.deepcopy(raw)
-    for p in fixed:
-        set_path(out, p.path, int(p.values[0]) if p.integer else float(p.values[0]))
-    if fixed:
-        from camtrain.study.pivot import apply_pivot_rules
-
-        apply_pivot_rules(raw, out, {p.path for p in fixed})
-    return out
-
-
-def parse_assignment(raw: dict, text: str) -> Parameter:
-    """``--set path=value``: a fixed change to the deck for every case."""
-    if "=" not in text:
-        raise _bad("--set", text, "needs PATH=VALUE", "e.g. solver.angle_points=360")
-    name, value = text.split("=", 1)
-    p = resolve_path(raw, name.strip(), "--set")
-    p = Parameter(p.name, p.path, p.unit, p.integer, p.datum,
-                  (_number(value, "--set", text),), p.info)
-    check_values(p, "--set")
-    return p

@@ -237,7 +237,7 @@ def test_point_contact_refuses_the_line_contact_model(tmp_path):
 
 def test_steady_decks_keep_the_old_warning():
     r = api.run(load_deck_text((DECKS / "harrison_flat.toml").read_text()).model)
-    assert "squeeze films are not modelled" in " ".join(r.warnings)
+    assert 'tribology.film_model = "steady" has no squeeze film' in " ".join(r.warnings)
     assert "film_steady" not in r.columns
 
 

@@ -56,3 +56,33 @@ def test_cached_text_has_matplotlibs_extents_and_ink():
     assert np.allclose(boxes_a, boxes_b)
     ink_a, ink_b = (255 - a).sum(), (255 - b).sum()
     assert abs(ink_a - ink_b) < 0.01 * ink_b
+
+
+def test_this_matplotlib_has_the_internals_the_text_cache_uses():
+    """The fast path is the one the sheets take here (and the one the tests above check)."""
+    from camtrain.report import canvas
+
+    assert canvas.CACHED_TEXT and isinstance(figure((1.0, 1.0)).canvas, canvas.Canvas)
+
+
+def test_without_those_internals_figures_use_matplotlibs_own_canvas(tmp_path, monkeypatch):
+    """A matplotlib that changed its internals: the fallback draws the same pixels as
+    matplotlib's FigureCanvasAgg and writes them as the PNG."""
+    from camtrain.report import canvas
+
+    with pytest.MonkeyPatch.context() as changed:      # a renderer without _prepare_font
+        changed.setattr(canvas, "RendererAgg", type("RendererAgg", (), {}))
+        assert not canvas._internals_present()
+    monkeypatch.setattr(canvas, "CACHED_TEXT", False)
+    with matplotlib.rc_context(RC):
+        fig = figure((3.0, 2.0))
+        assert type(fig.canvas) is FigureCanvasAgg
+        _drawn(fig)
+        save_png(fig, tmp_path / "f.png")
+        theirs = Figure(figsize=(3.0, 2.0))
+        FigureCanvasAgg(theirs)
+        _drawn(theirs)
+        theirs.set_dpi(fig.dpi)
+        theirs.canvas.draw()
+        expected = np.asarray(theirs.canvas.buffer_rgba())
+    assert np.array_equal(np.asarray(Image.open(tmp_path / "f.png").convert("RGBA")), expected)

@@ -162,3 +162,38 @@ def test_cli_bad_options_exit_2_naming_the_option(args, option):
     res = CliRunner().invoke(accuracy, [str(HARRISON), *args])
     assert res.exit_code == 2
     assert option in res.output and "Traceback" not in res.output
+
+
+def test_table_says_met_or_not_met_never_ok_beside_a_large_error():
+    """A rung that ran but misses the tolerance reads 'not met', one within it 'met'."""
+    rung = {"status": "ok", "message": "", "wall_time": 0.01, "wall_spread": 0.05,
+            "timed_runs": 2, "value": 720}
+    report = {"title": "t", "tolerance": 1e-3, "knobs": {"angle_points": {
+        "path": "solver.angle_points", "description": "d",
+        "rungs": [dict(rung, value=720), dict(rung, value=1440, wall_spread=0.3)],
+        "worst_error": [3.1e-2, 5e-4], "metrics": {}, "cheapest": None}}}
+    lines = acc.render_table(report).splitlines()
+    coarse = next(line for line in lines if line.strip().startswith("720 "))
+    fine = next(line for line in lines if line.strip().startswith("1440 "))
+    assert coarse.endswith("not met") and " ok" not in coarse and "5%" in coarse
+    assert fine.endswith(" met") and "30%!" in fine
+
+
+def test_rung_is_timed_until_its_two_fastest_runs_agree(monkeypatch):
+    """Times 10, 5, 5.2 ms: the first pair differs by 100 %, the third run agrees with the
+    second within 10 %, so three runs and the fastest kept, spread 4 %."""
+    import tomllib
+
+    from camtrain import api
+
+    raw = tomllib.loads(HARRISON.read_text(encoding="utf-8"))
+    raw["solver"]["angle_points"] = 180
+    done = api.run(api.loads(HARRISON.read_text(encoding="utf-8"), "h"))
+    monkeypatch.setattr(api, "run", lambda model: done)      # only the clock is timed here
+    ticks = iter([0.0, 0.010, 1.0, 1.005, 2.0, 2.0052, 3.0, 3.001])
+    monkeypatch.setattr(acc.time, "perf_counter", lambda: next(ticks))
+    rung = acc._run_rung(raw, HARRISON.parent, repeat=5)
+    assert rung["timed_runs"] == 3
+    assert rung["wall_time"] == pytest.approx(0.005)
+    assert rung["wall_spread"] == pytest.approx(0.04)
+    assert acc.timing_spread([0.01]) == math.inf

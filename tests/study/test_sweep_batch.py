@@ -138,6 +138,8 @@ def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path, m
                              'film_model = "steady"\nfriction_model = "greenwood_tripp"'},
      [("viscosity", "values", "0.01")], "greenwood_tripp"),
     ("pinto_finger.toml", {}, [("speed", "values", "2000")], "finger follower"),
+    ("pinto_finger.toml", {}, [("base_radius", "values", "14,16")],
+     "on a finger follower cam.base_radius moves other fields with it"),
     ("zeta_intake_camshaft.toml", {}, [("speed", "values", "2000")], "camshaft_torque"),
 ])
 def test_route_falls_back_where_the_physics_branches_per_case(tmp_path, deck, replace, specs,
@@ -146,6 +148,8 @@ def test_route_falls_back_where_the_physics_branches_per_case(tmp_path, deck, re
     r = route(sweep.raw, sweep.params, sweep.name, sweep.base_dir)
     assert not r.batch and why in r.reason
     assert r.describe().startswith("cases run one by one: ")
+    # a reason never names as not batched what its own list calls batched
+    assert not ("is not a scalar" in r.reason and specs[0][0].replace("_", " ") in r.reason)
 
 
 def test_sweep_tables_are_the_same_on_both_paths(tmp_path, monkeypatch):

@@ -6,12 +6,12 @@ import tomllib
 import pytest
 
 from camtrain.errors import InputError
+from camtrain.study.assign import parse_assignment
 from camtrain.study.sweep import (
     ALIASES,
     build_parameters,
     case_raw,
     cases,
-    parse_assignment,
     parse_values,
     resolve_path,
 )
