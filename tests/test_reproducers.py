@@ -199,3 +199,24 @@ def test_sigterm_while_writing_a_lift_table_leaves_nothing(monkeypatch, tmp_path
     res = _cli("lift", DECKS / "harrison_flat.toml", "--out", tmp_path / "o", "-q")
     assert res.exit_code == 143, res.output
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_kernel_compile_is_announced_once_and_a_cached_one_is_not(capsys):
+    """A first run with an empty kernel cache compiles for up to a minute: it says so."""
+    import numpy as np
+    from numba import njit
+
+    from camtrain.numerics import compile_notice
+
+    said = []
+    compile_notice._said[0] = False
+    compile_notice.watch(said.append)
+
+    @njit
+    def twice(x):
+        return 2.0 * x
+
+    assert twice(np.float64(2.0)) == 4.0 and twice(np.float64(3.0)) == 6.0
+    assert said == [compile_notice.NOTICE]
+    compile_notice.watch(said.append)     # once per process
+    assert said == [compile_notice.NOTICE]

@@ -43,17 +43,20 @@ class _OnNumbaImport(MetaPathFinder):
 
     def __init__(self, say):
         self.say = say
+        self.used = False
 
     def find_spec(self, name, path=None, target=None):
-        if name != "numba":
+        if name != "numba" or self.used:
             return None
-        sys.meta_path.remove(self)
+        self.used = True      # (it leaves sys.meta_path later: the import is iterating it now)
         spec = PathFinder.find_spec(name, path)
         if spec is None or spec.loader is None:
             return spec
-        run_module, say = spec.loader.exec_module, self.say
+        run_module, say, finder = spec.loader.exec_module, self.say, self
 
         def exec_module(module):
+            if finder in sys.meta_path:
+                sys.meta_path.remove(finder)
             run_module(module)
             _listen(say)
 
