@@ -9,8 +9,6 @@ import pytest
 
 from camtrain.study.executors import ProcessExecutor, SerialExecutor, WorkerLost
 
-PARENT = os.getpid()
-
 
 def _square(x: int) -> int:
     time.sleep(0.002)
@@ -18,7 +16,12 @@ def _square(x: int) -> int:
 
 
 def _dies_in_a_worker(x: int) -> int:
-    if os.getpid() != PARENT:
+    # a worker whether forked or spawned: the pool spawns once another test has left a thread
+    # running (forking a threaded process can deadlock); a pid taken at import would be the
+    # spawned worker's own, so it would not die
+    import multiprocessing
+
+    if multiprocessing.parent_process() is not None:
         os._exit(9)
     time.sleep(0.02)
     return x
