@@ -20,30 +20,40 @@ from importlib.machinery import PathFinder
 NOTICE = ("note: compiling camtrain's numerical kernels (first use after an install or an "
           "upgrade: up to about a minute, once; later runs load them from the cache)")
 
-_said = [False]
+class _State:
+    """One listener per process, saying the notice once to whoever asked last."""
+
+    say: Callable[[str], None] | None = None
+    said = False
+    listening = False
 
 
-def _listen(say: Callable[[str], None]) -> None:
+def _on_compile() -> None:
+    if not _State.said and _State.say is not None:
+        _State.said = True
+        _State.say(NOTICE)
+
+
+def _listen() -> None:
+    if _State.listening:
+        return
     from numba.core import event
 
     class _Compiling(event.Listener):
         def on_start(self, ev):
-            if not _said[0]:
-                _said[0] = True
-                say(NOTICE)
+            _on_compile()
 
         def on_end(self, ev):
             pass
 
     event.register("numba:compile", _Compiling())
+    _State.listening = True
 
 
 class _OnNumbaImport(MetaPathFinder):
     """Finds nothing itself; wraps numba's loader so the listener is installed once numba is."""
 
-    def __init__(self, say):
-        self.say = say
-        self.used = False
+    used = False
 
     def find_spec(self, name, path=None, target=None):
         if name != "numba" or self.used:
@@ -52,23 +62,25 @@ class _OnNumbaImport(MetaPathFinder):
         spec = PathFinder.find_spec(name, path)
         if spec is None or spec.loader is None:
             return spec
-        run_module, say, finder = spec.loader.exec_module, self.say, self
+        run_module, finder = spec.loader.exec_module, self
 
         def exec_module(module):
             if finder in sys.meta_path:
                 sys.meta_path.remove(finder)
             run_module(module)
-            _listen(say)
+            _listen()
 
         spec.loader.exec_module = exec_module
         return spec
 
 
 def watch(say: Callable[[str], None]) -> None:
-    """Call ``say(NOTICE)`` the first time numba compiles a kernel in this process."""
-    if _said[0]:
+    """Call ``say(NOTICE)`` the first time numba compiles a kernel in this process (the last
+    ``say`` given is the one called)."""
+    _State.say = say
+    if _State.said or _State.listening:
         return
     if "numba" in sys.modules:
-        _listen(say)
+        _listen()
     elif not any(isinstance(f, _OnNumbaImport) for f in sys.meta_path):
-        sys.meta_path.insert(0, _OnNumbaImport(say))
+        sys.meta_path.insert(0, _OnNumbaImport())
