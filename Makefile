@@ -45,11 +45,16 @@ test-oldest: $(OLDEST)/.installed
 	$(OLDEST)/bin/python -m pip list --format=freeze | grep -i -E '^(numpy|scipy|numba|matplotlib|click|rich|tomli.w|pillow|pandas)=='
 	CAMTRAIN_GOLDEN_RTOL=1e-8 $(OLDEST)/bin/python -m pytest -p no:cacheprovider
 
-# Thousands of fuzzed decks through `camtrain run` (make test runs the first 200 cases).
+# Thousands of fuzzed decks of every kind through `camtrain run` (make test runs the first 200
+# cases); each case is time-boxed (FUZZ_BOX s); the cases per kind and exit code are written to
+# out/fuzz_report.txt and printed.
 FUZZ_CASES ?= 3000
+FUZZ_BOX ?= 180
 fuzz: $(STAMP)
-	CAMTRAIN_FUZZ_START=200 CAMTRAIN_FUZZ_CASES=$(FUZZ_CASES) $(BIN)/python -m pytest \
-		tests/test_fuzz_decks.py -k mutated_deck -p no:cacheprovider
+	CAMTRAIN_FUZZ_START=200 CAMTRAIN_FUZZ_CASES=$(FUZZ_CASES) CAMTRAIN_FUZZ_BOX=$(FUZZ_BOX) \
+		CAMTRAIN_FUZZ_REPORT=out/fuzz_report.txt $(BIN)/python -m pytest \
+		tests/test_fuzz_decks.py -k mutated_deck -p no:cacheprovider; \
+		status=$$?; cat out/fuzz_report.txt; exit $$status
 
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -p no:cacheprovider

@@ -51,6 +51,10 @@ def _accuracy(deck, knobs, tolerance, out, repeat, quiet, units="deck") -> None:
     from camtrain.study.accuracy import in_units, parse_tolerance, render_table, study, write_outputs
 
     tol = parse_tolerance(tolerance)
+    if out:     # before the study: a --out that cannot be a directory is refused at once
+        from camtrain.output_lock import checked_output_dir
+
+        checked_output_dir(out)
     progress = None if quiet else (lambda k: click.echo(f"studying {k} ...", err=True))
     report = study(deck, knobs, tol, repeat=repeat, progress=progress)
     written = write_outputs(report, out, units) if out else []

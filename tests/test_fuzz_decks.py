@@ -18,10 +18,10 @@ from hypothesis import strategies as st
 
 from camtrain.cli import main
 from camtrain.deck.templates import render_template
-from tests.fuzz.mutate import ROOT, small_grid
+from tests.fuzz.mutate import ROOT, SLOW_KINDS, kind_of_case, kinds, small_grid
 from tests.fuzz.mutate import case as fuzz_case
 from tests.fuzz.mutate import sources as fuzz_sources
-from tests.fuzz.verdict import assert_sane, run_deck
+from tests.fuzz.verdict import Hang, assert_sane, run_deck, write_report
 
 TEMPLATES = {m: tomllib.loads(render_template(m)) for m in ("flat", "finger", "rocker", "domed")}
 TEMPLATE_TEXT = render_template("flat")
@@ -123,14 +123,36 @@ def test_base_radius_any_float(x):
 
 FUZZ_CASES = int(os.environ.get("CAMTRAIN_FUZZ_CASES", "200"))
 FUZZ_START = int(os.environ.get("CAMTRAIN_FUZZ_START", "0"))
+#: time box of one case [s]: a run still going after it fails the case as a hang (the slowest
+#: kinds take about 10 s on a loaded machine)
+FUZZ_BOX = float(os.environ.get("CAMTRAIN_FUZZ_BOX", "180"))
+#: with CAMTRAIN_FUZZ_REPORT set, the cases per kind and their exit codes are written there
+FUZZ_REPORT = os.environ.get("CAMTRAIN_FUZZ_REPORT")
+_tally: dict[tuple[str, str], int] = {}
+
+
+@pytest.fixture(scope="module")
+def fuzz_report():
+    import time
+
+    start = time.monotonic()
+    yield _tally
+    if FUZZ_REPORT and _tally:
+        write_report(FUZZ_REPORT, _tally, time.monotonic() - start)
 
 
 @pytest.mark.parametrize("seed", range(FUZZ_START, FUZZ_START + FUZZ_CASES))
-def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path, monkeypatch):
+def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path, monkeypatch, fuzz_report):
     monkeypatch.chdir(ROOT / "decks")   # standard input: decks name their files from here
     name, text, done = fuzz_case(seed)
     out = tmp_path / "out"
-    assert_sane(run_deck(text, out), out, f"fuzz case {seed}: {name}: {done}")
+    key = (kind_of_case(seed), "hang")
+    try:
+        res = run_deck(text, out, FUZZ_BOX)
+        key = (key[0], str(res.exit_code))
+    finally:
+        fuzz_report[key] = fuzz_report.get(key, 0) + 1
+    assert_sane(res, out, f"fuzz case {seed}: {name}: {done}")
 
 
 def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path, monkeypatch):
@@ -142,11 +164,30 @@ def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path, monkeypatch):
     from camtrain.cli import MECHANISM_CHOICES
 
     assert len([n for n in names if n.startswith("template:")]) == len(MECHANISM_CHOICES)
+    assert {n.split(":")[1] for n in names if n.startswith("repro:")} == {
+        p.stem for p in (ROOT / "tests" / "repro").glob("*.toml")}
+    every = {"valve_train", "dynamics", "camshaft", "elastic_camshaft", "coupled_camshaft",
+             "transient_film", "journal_bearing", "finite_bearing", "engine"}
+    assert set(kinds().values()) == every and set(SLOW_KINDS) <= every
     for i, name in enumerate(names):
         out = tmp_path / str(i)
-        res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(fuzz_sources()[name]))), out)
+        res = run_deck(tomli_w.dumps(small_grid(tomllib.loads(fuzz_sources()[name]))), out,
+                       FUZZ_BOX)
         assert_sane(res, out, name)
-        assert res.exit_code in (0, 1), (name, res.output[-500:])
+        # the reproducers are refused on purpose (exit 2), except the slow ones, which run
+        if not name.startswith("repro:") or name.endswith("_slow"):
+            assert res.exit_code in (0, 1), (name, res.output[-500:])
+
+
+def test_the_time_box_stops_a_hanging_case(monkeypatch, tmp_path):
+    import time
+
+    import camtrain.effects.kinematics as kinematics
+
+    monkeypatch.setattr(kinematics, "run", lambda *a, **k: time.sleep(30))
+    with pytest.raises(Hang, match="time box of 0.5 s"):
+        run_deck(tomli_w.dumps(small_grid(tomllib.loads(TEMPLATE_TEXT))), tmp_path / "o", 0.5)
+    assert not (tmp_path / "o").exists()
 
 
 class _Crash(RuntimeError):

@@ -76,6 +76,20 @@ def test_two_engine_decks_including_each_other_are_refused_naming_both(tmp_path)
     assert "include cycle" in res.output and chain in res.output, res.output
 
 
+def test_a_two_way_coupled_camshaft_without_a_lubricant_is_refused_by_check():
+    """Found by the fuzz (case 2071: [lubricant] deleted): the coupled march reads every lobe's
+    contact friction, which needs the lubricant; it ended in an AttributeError (exit 70)."""
+    import tomllib
+
+    import tomli_w
+
+    raw = tomllib.loads((REPRO / "coupled_no_camshaft_viscosity_slow.toml").read_text("utf-8"))
+    del raw["lubricant"]
+    res = _cli("check", "-", "-q", input=tomli_w.dumps(raw))
+    assert res.exit_code == 2, res.output
+    assert "lubricant" in res.output and "two_way" in res.output
+
+
 def test_a_utf8_byte_order_mark_is_read_as_utf8(tmp_path):
     res = _cli("check", REPRO / "utf8_bom_zeta_intake.toml", "-q")
     assert res.exit_code == 0, res.output

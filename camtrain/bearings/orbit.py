@@ -56,6 +56,9 @@ MOBILITIES = ("exact", "booker")
 LOAD_INTERPOLATIONS = ("linear", "pchip", "spline")
 STEPS = ("free", "grid")
 _NO_TABLE = (np.zeros(2), np.zeros((2, 1)), np.zeros((2, 1)))
+for _a in _NO_TABLE:     # read-only as the mobility maps are: one compiled march, not two
+    _a.setflags(write=False)
+del _a
 
 
 def diagram_rate(angle_rate, omega_journal) -> float:

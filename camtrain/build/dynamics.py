@@ -179,11 +179,11 @@ def setup(deck, kin, *, stiffness_scale: float = 1.0, omega: float | None = None
     return DynamicSetup(model, cam, base, Settings(**kw), lash_of(deck), pushrod_ratio(deck))
 
 
-#: Most time steps per camshaft revolution a fixed-step march may take. The shipped decks take
-#: about 10^4; each step keeps about a dozen float64 values of every node, so this bound keeps a
-#: run's arrays to a few hundred MB instead of letting a very low speed (or a huge
-#: ``steps_per_degree``) ask for gigabytes.
-MAX_STEPS_PER_REVOLUTION = 2_000_000
+#: Most time steps per camshaft revolution a march may take. The shipped decks take about 10^4
+#: (the stiff-limit tests 3e6); the march keeps about ten float64 values per step (time, cam
+#: input and its rates, geometry), so this bound keeps its arrays below about a GB instead of
+#: letting a very low speed (or a huge ``steps_per_degree``) ask for tens of GB.
+MAX_STEPS_PER_REVOLUTION = 8_000_000
 
 
 def _check_step_count(deck, base: TimeBase, steps: int) -> None:

@@ -172,6 +172,11 @@ def dynamics_problems(deck) -> list[Problem]:
         out.append(Problem("dynamics.contact_model", "hertz_line is not modelled by the two-way "
                            "coupled camshaft yet", "hertz_line", "linear"))
     if (shaft is not None and getattr(shaft, "coupling", "one_way") == "two_way"
+            and getattr(deck, "lubricant", None) is None):
+        out.append(Problem("lubricant", "is required with camshaft.flexibility.coupling = "
+                           "two_way (every lobe's contact friction enters the coupled march)",
+                           None, "a [lubricant] section"))
+    if (shaft is not None and getattr(shaft, "coupling", "one_way") == "two_way"
             and d.speed_oscillation > 0):
         out.append(Problem("dynamics.speed_oscillation", "with two_way coupling every lobe "
                            "turns with the camshaft's drive: its oscillation is "
