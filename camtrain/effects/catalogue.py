@@ -168,6 +168,7 @@ ENGINE: tuple[EffectSpec, ...] = (
                "term by term, Chen-Flynn with the user's constants (beside FLAME, or alone on "
                "a bare engine deck)",
                produces=("FrictionCorrelations",),
+               key_metrics=("pnh1989_fmep", "sandoval_heywood2003_fmep", "chen_flynn_fmep"),
                summary="camtrain.report.summaries:correlations"),
 )
 

@@ -42,10 +42,11 @@ def write_run(result: Result, loaded: LoadedDeck, out_dir: Path, wall_time: floa
     summary = json.dumps(summary_dict(result, loaded, wall_time, checks, units), indent=2,
                          allow_nan=False, ensure_ascii=False) + "\n"
     texts = {
-        "cycle.csv": csv_text(result, units=units),
         "report.txt": report_text(result, loaded.model, path=loaded.path, sha=loaded.sha256,
                                   checks=checks, wall_time=wall_time),
     }
+    if result.columns:    # a run of single values (a bare engine's correlations) has no cycle
+        texts["cycle.csv"] = csv_text(result, units=units)
     for axis in result.axes[1:]:   # columns on another grid (e.g. the piston's ring_angle)
         texts[f"cycle_{axis}.csv"] = csv_text(result, axis, units)
     out_dir.parent.mkdir(parents=True, exist_ok=True)

@@ -145,6 +145,7 @@ def _other_sheets(result: Result, deck, out_dir: Path, formats, sha: str | None,
     sheet of them all, and one plot per bearing), an engine's load diagrams, its piston and
     FLAME sheet. What the result holds decides which (none for a run without them)."""
     from camtrain.report.bearing_plots import orbit_series, orbit_sheets, write_orbit_plots
+    from camtrain.report.correlation_plots import correlation_sheet
     from camtrain.report.engine_plots import load_sheet
     from camtrain.report.panels_shaft import lobe_sheet
     from camtrain.report.piston_plots import piston_sheet
@@ -159,7 +160,7 @@ def _other_sheets(result: Result, deck, out_dir: Path, formats, sha: str | None,
             written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha,
                                          deck=deck)
     for name, draw in (("lobes", lobe_sheet), ("engine loads", load_sheet),
-                       ("piston", piston_sheet)):
+                       ("piston", piston_sheet), ("correlations", correlation_sheet)):
         files = draw(result, out_dir, deck=deck, sha=sha, formats=formats)
         if files and progress:
             progress(f"sheet {name}", 1, 1)

@@ -104,8 +104,8 @@ class Predictor:
     """camtrain's values of every data point for sets of constants (SI units)."""
 
     def __init__(self, datum, constants: list[Constant], datasets: list[DataSet], executor):
+        from camtrain.study.assign import apply_fixed, parse_assignment
         from camtrain.study.case_model import datum_key, datum_model
-        from camtrain.study.sweep import apply_fixed, parse_assignment
 
         self.datum, self.constants, self.executor = datum, constants, executor
         self.sources = []

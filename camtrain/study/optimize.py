@@ -133,7 +133,7 @@ def _problem(deck, variables, objective, constraints, method, jobs, scheduler, s
 def _datum_deck(deck, sets) -> tuple[dict, str, str]:
     """The raw datum deck (``--set`` values written in, then validated), its name and folder."""
     from camtrain.deck.load import load_deck, parse_toml, validate
-    from camtrain.study.sweep import apply_fixed, parse_assignment
+    from camtrain.study.assign import apply_fixed, parse_assignment
 
     loaded = load_deck(str(deck))
     raw = parse_toml(loaded.text, loaded.path)
