@@ -1,0 +1,138 @@
+"""The discrete steady line-contact EHL system and its exact Jacobian (see :mod:`.ehl_line`).
+
+Unknowns: the interior pressures P_1..P_{n-2} (P_0 = P_{n-1} = 0) and the rigid approach H0.
+Rows: min(P_i, s_i G_i) = 0 (Reynolds with the Reynolds exit condition, s_i > 0 a row scale
+that leaves the solution unchanged) and the load balance dX sum P - pi/2 = 0.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .ehl_elastic import ElasticKernel
+from .ehl_oil import ScaledOil
+
+#: Upwind weights of the wedge term d(rho H)/dX on offsets (0, -1, -2), times 1/dX.
+WEDGE = {"upwind1": (1.0, -1.0, 0.0), "upwind2": (1.5, -2.0, 0.5)}
+
+
+@dataclass
+class Fields:
+    """Film and oil at the nodes for one iterate."""
+
+    H: np.ndarray
+    rho: np.ndarray
+    drho: np.ndarray
+    dlog_eta: np.ndarray
+    eps: np.ndarray
+
+
+@dataclass(frozen=True)
+class DiscreteEHL:
+    """The grid, the deflection operator, the scaled oil and lambda of one contact."""
+
+    X: np.ndarray
+    kernel: ElasticKernel
+    oil: ScaledOil
+    lam: float
+    scheme: str
+
+    @property
+    def dx(self) -> float:
+        return self.kernel.dx
+
+    def fields(self, P: np.ndarray, H0: float) -> Fields:
+        H = H0 + 0.5 * self.X**2 + self.kernel.deflection(P)
+        log_eta, dlog_eta = self.oil.log_viscosity(P)
+        rho, drho = self.oil.density(P)
+        eps = rho * np.maximum(H, 0.0) ** 3 * np.exp(-log_eta) / self.lam
+        return Fields(H, rho, drho, dlog_eta, eps)
+
+    def _wedge_weights(self, n: int) -> list[np.ndarray]:
+        """Per-row weights on (rho H)_{i}, _{i-1}, _{i-2}; row 1 falls back to first order."""
+        weights = [np.full(n, c / self.dx) for c in WEDGE[self.scheme]]
+        first = WEDGE["upwind1"]
+        for k in range(3):
+            weights[k][:2] = first[k] / self.dx
+        return weights
+
+    def reynolds(self, P: np.ndarray, f: Fields) -> np.ndarray:
+        """G_i = d(rho H)/dX - d/dX(eps dP/dX) at every node (ends set to 0)."""
+        dx2 = self.dx**2
+        e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
+        flux = e_half * np.diff(P) / dx2
+        G = np.zeros_like(P)
+        rh = f.rho * f.H
+        w0, w1, w2 = self._wedge_weights(P.size)
+        G[1:-1] = w0[1:-1] * rh[1:-1] + w1[1:-1] * rh[:-2] - (flux[1:] - flux[:-1])
+        G[2:-1] += w2[2:-1] * rh[:-3]
+        return G
+
+    def row_scale(self, f: Fields) -> np.ndarray:
+        """s_i = 1 / (the size of dG_i/dP_i): makes min(P, s G) well balanced."""
+        e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
+        diag = np.full(f.eps.size, 1.0 / self.dx)
+        diag[1:-1] += (e_half[1:] + e_half[:-1]) / self.dx**2
+        return 1.0 / diag
+
+    def system(self, P: np.ndarray, H0: float, jacobian: bool = True):
+        """F (interior rows, then the load row), and its Jacobian in (P_interior, H0)."""
+        f = self.fields(P, H0)
+        G = self.reynolds(P, f)
+        s = self.row_scale(f)
+        sG = s * G
+        active = P[1:-1] <= sG[1:-1]          # cavitated / on the P = 0 branch of the min
+        F = np.concatenate((np.where(active, P[1:-1], sG[1:-1]),
+                            [self.dx * P.sum() - 0.5 * np.pi]))
+        if not jacobian:
+            return F, f
+        dG, dG_dH0 = self._reynolds_jacobian(P, f)
+        n = P.size
+        J = np.zeros((n - 1, n - 1))
+        J[:-1, :-1] = s[1:-1, None] * dG[1:-1, 1:-1]
+        J[:-1, -1] = s[1:-1] * dG_dH0[1:-1]
+        idx = np.flatnonzero(active)
+        J[idx, :] = 0.0
+        J[idx, idx] = 1.0
+        J[-1, :-1] = self.dx
+        return F, f, J
+
+    def _reynolds_jacobian(self, P: np.ndarray, f: Fields):
+        """dG/dP (n x n, dense through the deflection) and dG/dH0."""
+        n, dx2 = P.size, self.dx**2
+        e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
+        dP = np.diff(P)
+        # coefficients of d eps_{i+o}, o = -1, 0, 1 in -poiseuille_i
+        c_eps = {1: np.zeros(n), 0: np.zeros(n), -1: np.zeros(n)}
+        c_eps[1][1:-1] = -dP[1:] / (2 * dx2)
+        c_eps[0][1:-1] = -(dP[1:] - dP[:-1]) / (2 * dx2)
+        c_eps[-1][1:-1] = dP[:-1] / (2 * dx2)
+        w0, w1, w2 = self._wedge_weights(n)
+        c_rh = {0: w0, -1: w1, -2: w2}
+        for c in c_rh.values():
+            c[[0, -1]] = 0.0
+        c_rh[-2][:2] = 0.0
+        deps_dH = 3.0 * f.eps / np.where(f.H > 0, f.H, np.inf)
+        deps_dP = f.eps * (f.drho / f.rho - f.dlog_eta)
+        drh_dH, drh_dP = f.rho, f.drho * f.H
+        local = np.zeros((n, n))
+        t_H = {}
+        rows = np.arange(n)
+        for o in (-2, -1, 0, 1):
+            ce = c_eps.get(o, np.zeros(n))
+            cr = c_rh.get(o, np.zeros(n))
+            ok = (rows + o >= 0) & (rows + o < n)
+            r, c = rows[ok], rows[ok] + o
+            t_H[o] = (r, c, ce[r] * deps_dH[c] + cr[r] * drh_dH[c])
+            local[r, c] += ce[r] * deps_dP[c] + cr[r] * drh_dP[c]
+        inner = rows[1:-1]                      # direct Poiseuille terms on P
+        local[inner, inner + 1] -= e_half[1:] / dx2
+        local[inner, inner - 1] -= e_half[:-1] / dx2
+        local[inner, inner] += (e_half[1:] + e_half[:-1]) / dx2
+        Kd = self.kernel.dense()
+        dG_dH0 = np.zeros(n)
+        for r, c, t in t_H.values():
+            local[r] += t[:, None] * Kd[c]
+            np.add.at(dG_dH0, r, t)
+        return local, dG_dH0
