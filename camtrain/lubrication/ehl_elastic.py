@@ -1,4 +1,4 @@
-"""Elastic deformation of a plane-strain half-space under a line load, in Hertzian units.
+r"""Elastic deformation of a plane-strain half-space under a line load, in Hertzian units.
 
 With x = b X, p = p_h P, h = (b^2/R) H and p_h = b E'/(4R) (Hertz), the combined normal
 deflection of both surfaces (plane strain, E' = 2/[(1-nu1^2)/E1 + (1-nu2^2)/E2]) is

@@ -7,6 +7,7 @@ that leaves the solution unchanged) and the load balance dX sum P - pi/2 = 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -28,7 +29,7 @@ class Fields:
     eps: np.ndarray
 
 
-@dataclass(frozen=True)
+@dataclass
 class DiscreteEHL:
     """The grid, the deflection operator, the scaled oil and lambda of one contact."""
 
@@ -37,6 +38,11 @@ class DiscreteEHL:
     oil: ScaledOil
     lam: float
     scheme: str
+
+    @cached_property
+    def influence(self) -> np.ndarray:
+        """The dense dV/dP, built once per grid."""
+        return self.kernel.dense()
 
     @property
     def dx(self) -> float:
@@ -130,7 +136,7 @@ class DiscreteEHL:
         local[inner, inner + 1] -= e_half[1:] / dx2
         local[inner, inner - 1] -= e_half[:-1] / dx2
         local[inner, inner] += (e_half[1:] + e_half[:-1]) / dx2
-        Kd = self.kernel.dense()
+        Kd = self.influence
         dG_dH0 = np.zeros(n)
         for r, c, t in t_H.values():
             local[r] += t[:, None] * Kd[c]
