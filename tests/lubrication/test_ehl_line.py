@@ -2,8 +2,10 @@
 
 Cases on a grid of Moes' (M, L) (mean-speed convention, formulas_and_anchors §4.1 of the
 reference notes; docs/ehl.md): E' = 226 GPa, R = 20 mm, eta0 = 0.04 Pa s, G = alpha E' = 4500,
-U = (L/G)^4/2 and W = M sqrt(2U). Tolerances are the 5 % the formulas' own fits are quoted to
-(Moes 1992; Dowson & Higginson 1977; Pan & Hamrock 1989).
+U = (L/G)^4/2 and W = M sqrt(2U). Tolerances: the 5 % of the acceptance criterion.
+Sources: Moes (1992) Wear 159:57, the central-film eq. (four-regime interpolation);
+Dowson & Higginson (1977) minimum-film eq. (Ball 1988 eq. 4.1); Pan & Hamrock (1989) ASME J.
+Tribol. 111:246, minimum-film eq.; Martin (1916) rigid-isoviscous limit.
 """
 from __future__ import annotations
 
@@ -121,3 +123,29 @@ def test_friction_eyring_below_newtonian_and_rolling_without_sliding():
     eyring = ehl_friction(sliding, "eyring", eyring_stress=5e6)
     assert 0 < eyring.sliding < newton.sliding
     assert ehl_friction(solved(20, 10)).sliding == 0.0
+
+
+def test_cli_ehl_prints_and_writes(tmp_path):
+    from click.testing import CliRunner
+
+    from camtrain.cli import main
+
+    args = ["ehl", "--load", "200", "--radius", "20", "--speed", "1", "--eta0", "0.04",
+            "--alpha", "20", "--nodes", "256", "--out", str(tmp_path)]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 0, result.output
+    assert "central film h_c" in result.output and "µm" in result.output
+    assert (tmp_path / "ehl.csv").read_text().startswith("x [mm],p [MPa],h [µm]")
+    assert (tmp_path / "ehl.png").stat().st_size > 0
+
+
+def test_cli_ehl_rejects_a_negative_load(tmp_path):
+    from click.testing import CliRunner
+
+    from camtrain.cli import main
+
+    result = CliRunner().invoke(main, ["ehl", "--load", "-1", "--radius", "20", "--speed", "1",
+                                       "--eta0", "0.04", "--alpha", "20", "--out",
+                                       str(tmp_path / "o")])
+    assert result.exit_code == 2 and "--load" in result.output
+    assert not (tmp_path / "o").exists()
