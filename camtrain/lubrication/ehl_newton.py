@@ -93,52 +93,59 @@ class DiscreteEHL:
                             [self.dx * P.sum() - 0.5 * np.pi]))
         if not jacobian:
             return F, f
-        dG, dG_dH0 = self._reynolds_jacobian(P, f)
-        n = P.size
+        local, t_H = self._reynolds_bands(P, f)
+        return F, f, self._assemble(s, active, local, t_H)
+
+    def _assemble(self, s, active, local, t_H) -> np.ndarray:
+        """J in (P_1..P_{n-2}, H0): the scaled Reynolds rows s_i dG_i (band of local terms plus
+        the dense elastic part sum_o t_o[i] dH_{i+o}/dP), unit rows where the min is on P, and
+        the load row."""
+        n = s.size
         J = np.zeros((n - 1, n - 1))
-        J[:-1, :-1] = s[1:-1, None] * dG[1:-1, 1:-1]
-        J[:-1, -1] = s[1:-1] * dG_dH0[1:-1]
+        D = J[:-1, :-1]                          # rows and columns 1..n-2
+        buf = np.empty_like(D)
+        Kd = self.influence
+        for o, t in t_H.items():
+            lo = max(1, -o)
+            rows = slice(lo - 1, n - 2)
+            np.multiply((s * t)[lo:n - 1, None], Kd[lo + o:n - 1 + o, 1:n - 1], out=buf[rows])
+            D[rows] += buf[rows]
+            J[rows, -1] += (s * t)[lo:n - 1]
+        for o, c in local.items():
+            i = np.arange(max(1, 1 - o), min(n - 1, n - 1 - o))
+            D[i - 1, i + o - 1] += s[i] * c[i]
         idx = np.flatnonzero(active)
         J[idx, :] = 0.0
         J[idx, idx] = 1.0
         J[-1, :-1] = self.dx
-        return F, f, J
+        return J
 
-    def _reynolds_jacobian(self, P: np.ndarray, f: Fields):
-        """dG/dP (n x n, dense through the deflection) and dG/dH0."""
+    def _reynolds_bands(self, P: np.ndarray, f: Fields):
+        """Coefficients of dG_i: on P_{i+o} directly (local, o = -2..1) and on H_{i+o} (t_H),
+        each an array over i."""
         n, dx2 = P.size, self.dx**2
         e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
         dP = np.diff(P)
-        # coefficients of d eps_{i+o}, o = -1, 0, 1 in -poiseuille_i
-        c_eps = {1: np.zeros(n), 0: np.zeros(n), -1: np.zeros(n)}
+        zero = np.zeros(n)
+        c_eps = {1: zero.copy(), 0: zero.copy(), -1: zero.copy(), -2: zero}
         c_eps[1][1:-1] = -dP[1:] / (2 * dx2)
         c_eps[0][1:-1] = -(dP[1:] - dP[:-1]) / (2 * dx2)
         c_eps[-1][1:-1] = dP[:-1] / (2 * dx2)
         w0, w1, w2 = self._wedge_weights(n)
-        c_rh = {0: w0, -1: w1, -2: w2}
-        for c in c_rh.values():
-            c[[0, -1]] = 0.0
+        c_rh = {0: w0, -1: w1, -2: w2, 1: zero}
         c_rh[-2][:2] = 0.0
         deps_dH = 3.0 * f.eps / np.where(f.H > 0, f.H, np.inf)
         deps_dP = f.eps * (f.drho / f.rho - f.dlog_eta)
         drh_dH, drh_dP = f.rho, f.drho * f.H
-        local = np.zeros((n, n))
-        t_H = {}
-        rows = np.arange(n)
+        local, t_H = {}, {}
         for o in (-2, -1, 0, 1):
-            ce = c_eps.get(o, np.zeros(n))
-            cr = c_rh.get(o, np.zeros(n))
-            ok = (rows + o >= 0) & (rows + o < n)
-            r, c = rows[ok], rows[ok] + o
-            t_H[o] = (r, c, ce[r] * deps_dH[c] + cr[r] * drh_dH[c])
-            local[r, c] += ce[r] * deps_dP[c] + cr[r] * drh_dP[c]
-        inner = rows[1:-1]                      # direct Poiseuille terms on P
-        local[inner, inner + 1] -= e_half[1:] / dx2
-        local[inner, inner - 1] -= e_half[:-1] / dx2
-        local[inner, inner] += (e_half[1:] + e_half[:-1]) / dx2
-        Kd = self.influence
-        dG_dH0 = np.zeros(n)
-        for r, c, t in t_H.values():
-            local[r] += t[:, None] * Kd[c]
-            np.add.at(dG_dH0, r, t)
-        return local, dG_dH0
+            shifted = slice(max(0, o), n + min(0, o))     # the i + o of i in ``rows``
+            rows = slice(max(0, -o), n - max(0, o))
+            t, c = np.zeros(n), np.zeros(n)
+            t[rows] = c_eps[o][rows] * deps_dH[shifted] + c_rh[o][rows] * drh_dH[shifted]
+            c[rows] = c_eps[o][rows] * deps_dP[shifted] + c_rh[o][rows] * drh_dP[shifted]
+            t_H[o], local[o] = t, c
+        local[1][1:-1] -= e_half[1:] / dx2           # direct Poiseuille terms on P
+        local[-1][1:-1] -= e_half[:-1] / dx2
+        local[0][1:-1] += (e_half[1:] + e_half[:-1]) / dx2
+        return local, t_H
