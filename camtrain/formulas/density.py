@@ -26,8 +26,8 @@ def dowson_higginson_density(p):
     Returns:
         rho/rho0 [-].
 
-    Reference: Dowson & Higginson (1966) *Elasto-hydrodynamic Lubrication*, Pergamon, ch. 6
-    (the density law of their numerical solutions); Venner & Lubrecht (2000) eq. 2.7.
+    Reference: Dowson & Higginson (1966) *Elasto-hydrodynamic Lubrication*, Pergamon
+    (the density law of their numerical solutions); Venner & Lubrecht (2000) ch. 2.
     """
     p = arr(p)
     return out(1.0 + DH_A * p / (1.0 + DH_B * p))

@@ -6,7 +6,7 @@ deflection of both surfaces (plane strain, E' = 2/[(1-nu1^2)/E1 + (1-nu2^2)/E2])
 .. math:: V(X) = -\frac{1}{\pi}\int P(S)\,\ln|X - S|\,dS
 
 up to a constant, which the rigid approach H0 absorbs (Johnson 1985, *Contact Mechanics*,
-eq. 2.25b; Venner & Lubrecht 2000, eq. 2.10 in these units).
+ch. 2, line loading of an elastic half-space; Venner & Lubrecht 2000, ch. 2, in these units).
 
 Discretisation (the documented choice): P is piecewise constant on cells of width dX centred on
 the nodes, and the influence coefficient of cell j on node i is the exact integral
@@ -54,7 +54,7 @@ class ElasticKernel:
     length: int              # padded FFT length (>= 2n - 1)
 
     @classmethod
-    def of_grid(cls, n: int, dx: float) -> "ElasticKernel":
+    def of_grid(cls, n: int, dx: float) -> ElasticKernel:
         row = influence_row(n, dx)
         length = sfft.next_fast_len(2 * n - 1, real=True)
         wrapped = np.zeros(length)

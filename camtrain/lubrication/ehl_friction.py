@@ -1,7 +1,8 @@
 """Friction of a solved steady EHL line contact (:class:`.ehl_line.EHLSolution`).
 
-Shear stress on the surfaces (isothermal; Dowson & Higginson 1977 ch. 11; Hamrock, Schmid &
-Jacobson 2004, *Fundamentals of Fluid Film Lubrication*, eq. 7.61)::
+Shear stress on the surfaces (isothermal; the Couette and Poiseuille parts of the film flow;
+Hamrock, Schmid & Jacobson 2004, *Fundamentals of Fluid Film Lubrication*, shear stress of a
+1-D film)::
 
     tau = tau_couette(eta (u2 - u1)/h) -/+ (h/2) dp/dx
 
@@ -22,8 +23,8 @@ SHEAR_LAWS = ("newtonian", "eyring")
 
 @dataclass(frozen=True)
 class EHLFriction:
-    """Friction per unit length [N/m]: sliding (Couette) part, rolling (Poiseuille) part on the
-    slower surface, the coefficient mu = |sliding| / w, and the law used."""
+    """Friction per unit length [N/m]: the sliding (Couette) part, the rolling (Poiseuille)
+    part (its sign differs on the two surfaces), the coefficient mu = |sliding| / w, the law."""
 
     sliding: float
     rolling: float

@@ -3,7 +3,7 @@
 The problem, in Hertzian units (X = x/b, P = p/p_h, H = h R/b^2, rho/rho0, eta/eta0; b and p_h
 of the dry Hertz contact at the same load):
 
-* Reynolds (Venner & Lubrecht 2000, eq. 2.14), with the **mean** entrainment speed
+* Reynolds (Venner & Lubrecht 2000, ch. 2, the line-contact equations), with the **mean** entrainment speed
   u_m = (u1 + u2)/2 and lambda = 12 eta0 u_m R^2 / (b^3 p_h)::
 
       d/dX( eps dP/dX ) - d(rho H)/dX = 0,   eps = rho H^3 / (eta lambda)

@@ -58,7 +58,8 @@ def test_fft_deflection_is_the_linear_convolution():
 
 
 def test_hertz_pressure_gives_a_flat_gap():
-    """Johnson (1985) §5.3: under p_h sqrt(1 - X^2) the deformed gap X^2/2 + V is constant."""
+    """Hertz line contact (Johnson 1985, Contact Mechanics, ch. 5): under p_h sqrt(1 - X^2)
+    the deformed gap X^2/2 + V is constant over the contact."""
     X = np.linspace(-3, 3, 2001)
     V = ElasticKernel.of_grid(X.size, X[1] - X[0]).deflection(np.sqrt(np.maximum(1 - X**2, 0)))
     gap = (X**2 / 2 + V)[np.abs(X) < 1]
