@@ -54,6 +54,7 @@ FILES = {
 
 TESTS = {
     "test_ehl_line.py::test_fft_deflection": "derived",
+    "test_ehl_line.py::test_dowson_higginson_density_hand_values": "derived",
     "test_ehl_line.py::test_hertz_pressure_gives": "derived",
     "test_ehl_line.py::test_light_load_tends_to_martin": "derived",
     "test_ehl_line.py::test_high_load_tends_to_hertz": "derived",

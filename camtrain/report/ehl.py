@@ -63,5 +63,10 @@ def write_ehl(solution, friction, out_dir: Path) -> list[Path]:
     csv = out_dir / "ehl.csv"
     atomic_write(csv, profile_csv(solution))
     png = out_dir / "ehl.png"
-    profile_figure(solution).savefig(png, dpi=120)
+    staged = out_dir / ".ehl.png.partial"
+    try:                           # staged and renamed: never a half-written plot
+        profile_figure(solution).savefig(staged, dpi=120, format="png")
+        staged.replace(png)
+    finally:
+        staged.unlink(missing_ok=True)
     return [csv, png]

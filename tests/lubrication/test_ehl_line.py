@@ -49,6 +49,17 @@ def solved(M, L, density="incompressible", nodes=1024):
     return _CACHE[key]
 
 
+def test_dowson_higginson_density_hand_values():
+    """rho/rho0 = 1 + 0.6e-9 p / (1 + 1.7e-9 p): 1.2222 at 1 GPa, 1.3529 at infinity."""
+    from camtrain.formulas.density import dowson_higginson_density, dowson_higginson_density_slope
+
+    assert dowson_higginson_density(1e9) == pytest.approx(1 + 0.6 / 2.7, rel=1e-12)
+    assert dowson_higginson_density(1e15) == pytest.approx(1 + 0.6 / 1.7, rel=1e-5)
+    p, dp = 5e8, 1e2
+    slope = (dowson_higginson_density(p + dp) - dowson_higginson_density(p - dp)) / (2 * dp)
+    assert dowson_higginson_density_slope(p) == pytest.approx(slope, rel=1e-6)
+
+
 def test_fft_deflection_is_the_linear_convolution():
     """Zero-padded FFT equals the dense Toeplitz product (no wrap-around)."""
     X = np.linspace(-4.5, 1.5, 301)
