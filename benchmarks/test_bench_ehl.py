@@ -45,8 +45,8 @@ def test_bench_ehl_line_1024(benchmark):
 
 
 def test_bench_ehl_line_cost_against_points(benchmark):
-    """CPU time of the solve at 256..4096 points and the fitted exponent of n."""
-    sizes = [256, 512, 1024, 2048, 4096]
+    """CPU time of the solve at 256..8192 points and the fitted exponent of n."""
+    sizes = [256, 512, 1024, 2048, 4096, 8192]
     times = []
     for n in sizes:
         resolution = EHLResolution(nodes=n)

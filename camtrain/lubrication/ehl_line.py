@@ -21,9 +21,12 @@ observed order is measured in the tests) or second-order upwind (``"upwind2"``).
 
 Solver (the choice, measured in docs/ehl.md): semismooth Newton on the coupled system
 [min(P_i, s_i G_i) = 0 ; load balance] in (P, H0) with the exact Jacobian, whose elastic part is
-the dense influence matrix (the residual itself uses the FFT deflection). Steps are damped by
-backtracking on the residual norm. A case that does not converge from the Hertz guess is
-reached by continuation in load from a lighter (more rigid) contact.
+the dense influence matrix (the residual itself uses the FFT deflection), on grids up to
+``dense_nodes``; a factorised Jacobian is reused while it keeps halving the residual. Finer grids
+take matrix-free GMRES steps (:mod:`.ehl_krylov`, O(n log n) products) preconditioned by the
+dense system on a grid four times coarser. Steps are damped by backtracking on the residual
+norm. Nested grids (128, 256, ... nodes) give each level the previous solution as its guess; the
+first starts from the Hertz pressure with Moes' film; a level too coarse to converge is skipped.
 """
 from __future__ import annotations
 
@@ -36,6 +39,7 @@ from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
 
 from .ehl_elastic import ElasticKernel
+from .ehl_krylov import krylov_step
 from .ehl_newton import DiscreteEHL
 from .ehl_oil import Oil, ScaledOil
 
@@ -87,7 +91,9 @@ class EHLResolution:
     """Accuracy knobs. nodes: grid points; inlet/outlet: domain ends in Hertz half-widths
     (None: automatic, -4.5 / 1.5 b or wider where the rigid film sqrt(2 R h) exceeds b);
     tolerance: on max |residual| of the scaled system and the relative change of H0;
-    scheme: wedge-term differences; cavitation: exit condition."""
+    scheme: wedge-term differences; cavitation: exit condition; dense_nodes: largest grid
+    solved with the dense Jacobian (finer grids: matrix-free GMRES steps preconditioned on a
+    grid four times coarser, with the dense Jacobian as fallback)."""
 
     nodes: int = 1024
     inlet: float | None = None
@@ -96,6 +102,7 @@ class EHLResolution:
     max_iterations: int = 60
     scheme: str = "upwind2"
     cavitation: str = "reynolds"
+    dense_nodes: int = 1024
 
     def __post_init__(self):
         if self.nodes < 16:
@@ -192,6 +199,21 @@ def _newton(problem: DiscreteEHL, P: np.ndarray, H0: float, tolerance: float,
     return P, H0, max_iterations, norm, False
 
 
+def _newton_krylov(problem: DiscreteEHL, coarse: DiscreteEHL, P: np.ndarray, H0: float,
+                   resolution: EHLResolution):
+    """Damped semismooth Newton with matrix-free GMRES steps (:mod:`.ehl_krylov`)."""
+    F, _ = problem.system(P, H0, jacobian=False)
+    norm = np.abs(F).max()
+    for it in range(1, resolution.max_iterations + 1):
+        F, step, _ = krylov_step(problem, coarse, P, H0)
+        P_new, H0_new, F_new, norm_new, t = _damped(problem, P, H0, step, norm, True)
+        moved = abs(t * step[-1]) / max(abs(H0_new), 1e-300)
+        P, H0, norm = P_new, H0_new, norm_new
+        if norm < resolution.tolerance and moved < max(resolution.tolerance, 1e-12) ** 0.5:
+            return P, H0, it, norm, True
+    return P, H0, resolution.max_iterations, norm, False
+
+
 def _damped(problem, P, H0, step, norm, backtrack):
     """The step scaled by t = 1, 1/2, ... (only t = 1 without ``backtrack``) until the film
     stays positive and the residual falls; P is projected on P >= 0."""
@@ -224,8 +246,16 @@ def solve_ehl_line(contact: LineContact,
             P = np.interp(fresh.X, problem.X, P)
             P[[0, -1]] = 0.0
         problem = fresh
-        P, H0, its, res, ok = _newton(problem, P, H0, resolution.tolerance,
-                                      resolution.max_iterations)
+        if nodes > resolution.dense_nodes:
+            coarse, _ = _discrete(contact, replace(resolution, nodes=(nodes + 3) // 4))
+            P, H0, its, res, ok = _newton_krylov(problem, coarse, P, H0, resolution)
+            if not ok:      # the dense Jacobian is the robust fallback
+                P, H0, more, res, ok = _newton(problem, P, H0, resolution.tolerance,
+                                               resolution.max_iterations)
+                its += more
+        else:
+            P, H0, its, res, ok = _newton(problem, P, H0, resolution.tolerance,
+                                          resolution.max_iterations)
         its_total += its
         if not ok and nodes < resolution.nodes:
             problem = None       # too coarse for this contact: restart on the next grid

@@ -96,6 +96,18 @@ class DiscreteEHL:
         local, t_H = self._reynolds_bands(P, f)
         return F, f, self._assemble(s, active, local, t_H)
 
+    def linearisation(self, P: np.ndarray, H0: float):
+        """F, the fields and the Jacobian's pieces without the dense matrix: (F, f, s, active,
+        local, t_H) for matrix-free products (:mod:`.ehl_krylov`)."""
+        f = self.fields(P, H0)
+        s = self.row_scale(f)
+        sG = s * self.reynolds(P, f)
+        active = P[1:-1] <= sG[1:-1]
+        F = np.concatenate((np.where(active, P[1:-1], sG[1:-1]),
+                            [self.dx * P.sum() - 0.5 * np.pi]))
+        local, t_H = self._reynolds_bands(P, f)
+        return F, f, s, active, local, t_H
+
     def _assemble(self, s, active, local, t_H) -> np.ndarray:
         """J in (P_1..P_{n-2}, H0): the scaled Reynolds rows s_i dG_i (band of local terms plus
         the dense elastic part sum_o t_o[i] dH_{i+o}/dP), unit rows where the min is on P, and
