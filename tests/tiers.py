@@ -61,6 +61,7 @@ TESTS = {
     "test_ehl_line.py::test_compressibility_lowers": "behaviour",
     "test_ehl_line.py::test_friction_": "behaviour",
     "test_ehl_line.py::test_cli_": "behaviour",
+    "test_ehl_line.py::test_matrix_free_steps": "behaviour",
     "test_ring_march.py::test_observed_order_of_the_film_march": "convergence",
     "test_ring_march.py::test_symmetric_barrel_gives_mirror_symmetric_films": "derived",
     "test_ring_march.py::test_liner_speed_is_the_exact_slider_crank": "derived",

@@ -161,3 +161,13 @@ def test_cli_ehl_rejects_a_negative_load(tmp_path):
                                        str(tmp_path / "o")])
     assert result.exit_code == 2 and "--load" in result.output
     assert not (tmp_path / "o").exists()
+
+
+def test_matrix_free_steps_give_the_dense_solution():
+    """GMRES steps above dense_nodes converge to the dense Newton's solution."""
+    c = ml_contact(20, 10, "dowson_higginson")
+    dense = solve_ehl_line(c, EHLResolution(nodes=1500, dense_nodes=4000))
+    free = solve_ehl_line(c, EHLResolution(nodes=1500, dense_nodes=400))
+    assert free.h_central == pytest.approx(dense.h_central, rel=1e-7)
+    assert free.h_min == pytest.approx(dense.h_min, rel=1e-7)
+    assert np.abs(free.p - dense.p).max() < 1e-6 * dense.p_h
