@@ -417,6 +417,7 @@ def _register_study_commands() -> None:
     from camtrain.cli_accuracy import accuracy
     from camtrain.cli_design import design, optimize
     from camtrain.cli_dynamics import dynamics_speed
+    from camtrain.cli_ehl import ehl
     from camtrain.cli_fit import fit
     from camtrain.cli_friction_map import friction_map
     from camtrain.cli_sensitivity import sensitivity
@@ -432,6 +433,7 @@ def _register_study_commands() -> None:
     main.add_command(fit)
     main.add_command(design)
     main.add_command(optimize)
+    main.add_command(ehl)
 
 
 _register_study_commands()

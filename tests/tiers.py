@@ -49,9 +49,19 @@ FILES = {
     "tests/piston/test_pack.py": "literature",
     "tests/piston/test_flame.py": "literature",
     "tests/piston/test_ring_film.py": "derived",
+    "tests/lubrication/test_ehl_line.py": "literature",
 }
 
 TESTS = {
+    "test_ehl_line.py::test_fft_deflection": "derived",
+    "test_ehl_line.py::test_dowson_higginson_density_hand_values": "derived",
+    "test_ehl_line.py::test_hertz_pressure_gives": "derived",
+    "test_ehl_line.py::test_light_load_tends_to_martin": "derived",
+    "test_ehl_line.py::test_high_load_tends_to_hertz": "derived",
+    "test_ehl_line.py::test_compressibility_lowers": "behaviour",
+    "test_ehl_line.py::test_friction_": "behaviour",
+    "test_ehl_line.py::test_cli_": "behaviour",
+    "test_ehl_line.py::test_matrix_free_steps": "behaviour",
     "test_ring_march.py::test_observed_order_of_the_film_march": "convergence",
     "test_ring_march.py::test_symmetric_barrel_gives_mirror_symmetric_films": "derived",
     "test_ring_march.py::test_liner_speed_is_the_exact_slider_crank": "derived",

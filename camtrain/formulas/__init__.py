@@ -6,6 +6,7 @@ Modules:
     film_line  line-contact film formulas; film_point: point-contact film formulas
     film       film-thickness registry, dispatcher and applicability listing
     viscosity  Barus, Roelands, Reynolds, Walther, Vogel
+    density    Dowson-Higginson pressure-density law (imported as a module)
     friction   Barus shear over the Hertz zone (closed form, overflow-safe), boundary cap
     mixed      Greenwood-Tripp asperity load/area, Teodorescu boundary + viscous friction
     guides     follower/guide and valve/guide friction (Yang 1992)

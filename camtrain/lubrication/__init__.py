@@ -5,7 +5,10 @@
 * :mod:`.averaged_reynolds` level 2, Göçmen (2013) averaged Reynolds contact with
   Greenwood-Tripp asperities, marched by :mod:`.march`;
 * :mod:`.reynolds` the semi-analytic 1-D averaged Reynolds solver; :mod:`.flow_factors`,
-  :mod:`.asperity` its ingredients.
+  :mod:`.asperity` its ingredients;
+* :mod:`.ehl_line` the steady isothermal elastohydrodynamic line contact (full numerical
+  solution: :mod:`.ehl_newton` its discrete system, :mod:`.ehl_elastic` the half-space
+  deflection by FFT, :mod:`.ehl_oil` the piezoviscous compressible oil, :mod:`.ehl_friction`).
 """
 from .averaged_reynolds import (
     REGIMES,

@@ -8,7 +8,7 @@ import sys
 from tests.conftest import ROOT
 from tests.tiers import FILES, TESTS, TIERS, tier_of
 
-SOURCES = r"(Ball|Yang|Williams|Teodorescu|G[öo]çmen|Gocmen|Raimondi|Ocvirk|Pinto)"
+SOURCES = r"(Ball|Yang|Williams|Teodorescu|G[öo]çmen|Gocmen|Raimondi|Ocvirk|Pinto|Moes|Dowson)"
 
 
 def test_every_listed_file_and_test_exists():

@@ -1,0 +1,62 @@
+"""Steady EHL line contact (docs/ehl.md "Cost"): the solve on 1,024 points against a floor of
+the same run, and the cost against the number of points. Nothing here asserts a time.
+
+Floor: one Newton step's irreducible work at the same size, a dense LU factorisation of an
+(n-1) x (n-1) matrix plus one zero-padded FFT deflection, in bare numpy/scipy. The ratio reads
+as "how many bare Newton steps the whole solve costs".
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+from conftest import note, paired, record
+
+from camtrain.lubrication.ehl_elastic import ElasticKernel
+from camtrain.lubrication.ehl_line import EHLResolution, LineContact, solve_ehl_line
+from camtrain.lubrication.ehl_oil import Oil
+
+#: formulas_and_anchors case A: w = 200 N/mm, R = 20 mm, u_m = 1 m/s, eta0 = 0.04 Pa s,
+#: alpha = 20 /GPa, E' = 226 GPa; Roelands, Dowson-Higginson density (M = 10.5, L = 9.3).
+CASE_A = LineContact(2e5, 0.02, 2.26e11, 1.0, 1.0, Oil(0.04, 2e-8))
+
+
+def bare_newton_step(n: int):
+    rng = np.random.default_rng(0)
+    A = rng.standard_normal((n - 1, n - 1)) + n * np.eye(n - 1)
+    kernel = ElasticKernel.of_grid(n, 6.0 / n)
+    P = rng.random(n)
+
+    def step():
+        sla.lu_factor(A, check_finite=False)
+        kernel.deflection(P)
+    return step
+
+
+def test_bench_ehl_line_1024(benchmark):
+    """Target: under 0.1 s of CPU for 1,024 points."""
+    resolution = EHLResolution(nodes=1024)
+    timing = paired(lambda: solve_ehl_line(CASE_A, resolution), bare_newton_step(1024),
+                    rounds=7, warmup=1)
+    record(benchmark, "steady EHL line contact, 1024 points / one bare Newton step", timing,
+           "< 0.1 s CPU", cpu=True)
+    note("steady EHL line contact, 1024 points, CPU", f"{timing['cpu_subject_min']:.3g} s",
+         "< 0.1 s")
+    benchmark.pedantic(solve_ehl_line, args=(CASE_A, resolution), rounds=1, iterations=1)
+
+
+def test_bench_ehl_line_cost_against_points(benchmark):
+    """CPU time of the solve at 256..8192 points and the fitted exponent of n."""
+    sizes = [256, 512, 1024, 2048, 4096, 8192]
+    times = []
+    for n in sizes:
+        resolution = EHLResolution(nodes=n)
+        timing = paired(lambda r=resolution: solve_ehl_line(CASE_A, r), bare_newton_step(n),
+                        rounds=3, warmup=1)
+        times.append(timing["cpu_subject_min"])
+        note(f"steady EHL line contact, {n} points, CPU",
+             f"{timing['cpu_subject_min']:.3g} s ({timing['cpu_ratio_min']:.2f} bare steps)")
+    exponent = np.polyfit(np.log(sizes), np.log(times), 1)[0]
+    note("steady EHL line contact, cost ~ n^k", f"k = {exponent:.2f}", "n log n (k ~ 1.1)")
+    benchmark.extra_info["exponent"] = exponent
+    benchmark.pedantic(solve_ehl_line, args=(CASE_A, EHLResolution(nodes=256)), rounds=1,
+                       iterations=1)
