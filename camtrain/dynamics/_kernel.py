@@ -13,7 +13,9 @@ cam contact and valve seat of :mod:`camtrain.dynamics.train`:
   backward difference (l' = (l_n - l_(n-1)) / dt, as the source); conditionally stable (the
   caller guards the step).
 
-Inputs b, b' of each contact at the step times (seat: zeros); between steps a cubic Hermite in
+The data come as the typed records of :mod:`camtrain.dynamics.records` (the train's linear
+part, its unilateral contacts, the cam law, the inputs, the state, the samples). Inputs b, b' of
+each contact at the step times (seat: zeros); between steps a cubic Hermite in
 time. The cam contact's spring is linear (``law`` 0) or a Hertz line contact (``law`` 1, the
 relation of :mod:`camtrain.dynamics.contact_law`, constants ``hz``, the cam's radius of
 curvature ``rad`` and load ratio ``rat`` at the step times, linear between them): its force
@@ -24,12 +26,17 @@ speed delta'. Only this module imports numba.
 """
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numpy as np
 from numba import njit
 
 from camtrain.numerics.roots import false_position, illinois_update
 
 MAX_SWITCHES = 8
+
+#: work arrays of a Newmark trial step: predictor (pu, pv), right-hand side, A^-1 e_cam
+_Work = namedtuple("_Work", "pu pv rhs z")
 
 
 @njit(cache=True)
@@ -106,12 +113,13 @@ def _spring(j, delta, k, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
+def _psi(u, v, j, tr, uni, cl, bj, bdj, r1, ratio):
     """Contact indicator min(F_spring, F_spring + c delta') and the force it would carry."""
+    node, k, c, off = tr.node, uni.k, uni.c, uni.off
     delta = bj - u[node[j]] + off[j]
     rate = bdj - v[node[j]]
-    if j == 0 and law == 1 and delta > 0.0:
-        g = _hz_solve(delta, 0.0, r1, ratio, hz, k[0] * delta)
+    if j == 0 and cl.law == 1 and delta > 0.0:
+        g = _hz_solve(delta, 0.0, r1, ratio, cl.hz, k[0] * delta)
     else:
         g = k[j] * delta
     f = g + c[j] * rate
@@ -119,28 +127,31 @@ def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad, rat):
+def _accel(tr, uni, cl, inp, act, u, v, n, tau, a):
     """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state."""
+    m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
+    b, bd, dt = inp.b, inp.bd, inp.dt
     size = m.size
     for i in range(size):
         s = f0[i]
         for q in range(size):
             s -= K[i, q] * u[q] + C[i, q] * v[q]
         a[i] = s
-    r1, ratio = _geom(rad, rat, n, tau, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau, dt)
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(b, bd, j, n, tau, dt)
-            a[node[j]] += _spring(j, bj - u[node[j]] + off[j], k, law, hz, r1, ratio) \
-                + c[j] * (bdj - v[node[j]])
+            a[node[j]] += _spring(j, bj - u[node[j]] + uni.off[j], uni.k, cl.law, cl.hz, r1,
+                                  ratio) + uni.c[j] * (bdj - v[node[j]])
     for i in range(size):
         a[i] /= m[i]
 
 
 @njit(cache=True)
-def _matrix(m, K, C, node, k, c, act, h, law):
+def _matrix(tr, uni, act, h, law):
     """M + h^2/4 K + h/2 C with the active contacts (a Hertz cam contact's spring is not in
     it: its force is solved for separately)."""
+    m, K, C, node, k, c = tr.m, tr.K, tr.C, tr.node, uni.k, uni.c
     size = m.size
     A = np.empty((size, size))
     for i in range(size):
@@ -156,11 +167,11 @@ def _matrix(m, K, C, node, k, c, act, h, law):
 
 
 @njit(cache=True)
-def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv, u1, v1, a1,
-           pu, pv, rhs, law, hz, rad, rat, z):
-    """One Newmark step of length h from time tau of step n, contact state fixed (pu, pv, rhs,
-    z: work arrays). A Hertz cam contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving
-    F = F_hertz(delta(a1)), delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
+def _predicted_rhs(tr, uni, inp, act, u, v, a, n, tau, h, work, hertz):
+    """The Newmark predictor (pu, pv in ``work``) and the step's right-hand side (``work.rhs``)
+    with the active contacts' forces (a Hertz cam contact's damper only)."""
+    m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
+    pu, pv, rhs = work.pu, work.pv, work.rhs
     size = m.size
     for i in range(size):
         pu[i] = u[i] + h * v[i] + 0.25 * h * h * a[i]
@@ -170,15 +181,28 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
         for q in range(size):
             s -= K[i, q] * pu[q] + C[i, q] * pv[q]
         rhs[i] = s
-    hertz = law == 1 and act[0]
     for j in range(node.size):
         if act[j]:
-            bj, bdj = _input(b, bd, j, n, tau + h, dt)
+            bj, bdj = _input(inp.b, inp.bd, j, n, tau + h, inp.dt)
             i = node[j]
             if j == 0 and hertz:
-                rhs[i] += c[j] * (bdj - pv[i])
+                rhs[i] += uni.c[j] * (bdj - pv[i])
             else:
-                rhs[i] += k[j] * (bj - pu[i] + off[j]) + c[j] * (bdj - pv[i])
+                rhs[i] += uni.k[j] * (bj - pu[i] + uni.off[j]) + uni.c[j] * (bdj - pv[i])
+
+
+@njit(cache=True)
+def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
+    """One Newmark step of length h from time tau of step n, contact state fixed: the end
+    state into ``out`` (u1, v1, a1), ``work`` (pu, pv, rhs, z) its work arrays. A Hertz cam
+    contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving F = F_hertz(delta(a1)),
+    delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
+    u1, v1, a1 = out
+    pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
+    node, k = tr.node, uni.k
+    size = tr.m.size
+    hertz = cl.law == 1 and act[0]
+    _predicted_rhs(tr, uni, inp, act, u, v, a, n, tau, h, work, hertz)
     if Ainv.shape[0] > 0:
         for i in range(size):
             s = 0.0
@@ -189,7 +213,7 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             for i in range(size):
                 z[i] = Ainv[i, node[0]]
     else:
-        A = _matrix(m, K, C, node, k, c, act, h, law)
+        A = _matrix(tr, uni, act, h, cl.law)
         a1[:] = np.linalg.solve(A, rhs)
         if hertz:
             z[:] = 0.0
@@ -197,10 +221,10 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             z[:] = np.linalg.solve(A, z.copy())
     if hertz:
         i = node[0]
-        r1, ratio = _geom(rad, rat, n, tau + h, dt)
-        bj, bdj = _input(b, bd, 0, n, tau + h, dt)
-        target = bj - pu[i] - 0.25 * h * h * a1[i] + off[0]
-        f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, hz, k[0] * max(target, 0.0))
+        r1, ratio = _geom(cl.rad, cl.rat, n, tau + h, inp.dt)
+        bj, bdj = _input(inp.b, inp.bd, 0, n, tau + h, inp.dt)
+        target = bj - pu[i] - 0.25 * h * h * a1[i] + uni.off[0]
+        f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, cl.hz, k[0] * max(target, 0.0))
         if target <= 0.0:
             # compressed by less than nothing: the linear stand-in (the indicator opens it)
             f = k[0] * target / (1.0 + 0.25 * h * h * z[i] * k[0])
@@ -221,9 +245,113 @@ def _state_index(act):
 
 
 @njit(cache=True)
-def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a, act,
-                  out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0, law, hz, rad, rat):
-    """March len(b[0]) - 1 steps; state (u, v, a, act) updated in place.
+def _inverses(tr, uni, dt, law):
+    """The full step's matrix inverted once for every contact state (2^contacts)."""
+    size, nu = tr.m.size, tr.node.size
+    inverses = np.empty((1 << nu, size, size))
+    state = np.zeros(nu, dtype=np.bool_)
+    for s_idx in range(1 << nu):
+        for j in range(nu):
+            state[j] = (s_idx >> j) & 1
+        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
+    return inverses
+
+
+@njit(cache=True)
+def _first_change(tr, uni, cl, inp, st, end, n, tau, h):
+    """The contact whose state changes first inside the (sub)step from the state ``st`` to
+    ``end`` (u1, v1), and the fraction of the step where its indicator crosses (linear), or
+    (-1, 2)."""
+    u1, v1 = end[0], end[1]
+    dt = inp.dt
+    first = -1
+    alpha = 2.0
+    r0, q0 = 1.0, 1.0
+    r1, q1 = 1.0, 1.0
+    if cl.law == 1:
+        r0, q0 = _geom(cl.rad, cl.rat, n, tau, dt)
+        r1, q1 = _geom(cl.rad, cl.rat, n, tau + h, dt)
+    for j in range(tr.node.size):
+        level = 0.0 if st.act[j] else tr.thr[j]
+        bj, bdj = _input(inp.b, inp.bd, j, n, tau, dt)
+        p0 = _psi(st.u, st.v, j, tr, uni, cl, bj, bdj, r0, q0)[0] - level
+        bj, bdj = _input(inp.b, inp.bd, j, n, tau + h, dt)
+        p1 = _psi(u1, v1, j, tr, uni, cl, bj, bdj, r1, q1)[0] - level
+        if (p1 > 0.0) != st.act[j]:
+            frac = p0 / (p0 - p1) if p0 != p1 else 1.0
+            frac = min(max(frac, 0.0), 1.0)
+            if frac < alpha:
+                alpha, first = frac, j
+    return first, alpha
+
+
+@njit(cache=True)
+def _indicator_at(tr, uni, cl, inp, u, v, j, n, t, level):
+    """Contact j's indicator at time t into step n, less ``level``."""
+    bj, bdj = _input(inp.b, inp.bd, j, n, t, inp.dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, t, inp.dt)
+    return _psi(u, v, j, tr, uni, cl, bj, bdj, r1, ratio)[0] - level
+
+
+@njit(cache=True)
+def _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h):
+    """The crossing of contact ``first``'s indicator in (0, h) by Illinois regula falsi, the
+    state at it in ``sub`` (us, vs, as); returns the fraction of the step."""
+    u, v, a, act = st.u, st.v, st.a, st.act
+    empty = np.empty((0, 0))
+    lo, hi = 0.0, 1.0
+    level = 0.0 if act[first] else tr.thr[first]
+    plo = _indicator_at(tr, uni, cl, inp, u, v, first, n, tau, level)
+    phi = _indicator_at(tr, uni, cl, inp, end[0], end[1], first, n, tau + h, level)
+    x = alpha
+    side = 0
+    for _ in range(30):
+        _trial(tr, uni, cl, inp, act, u, v, a, n, tau, x * h, empty, sub, work)
+        px = _indicator_at(tr, uni, cl, inp, sub[0], sub[1], first, n, tau + x * h, level)
+        if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
+            break
+        lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
+        x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
+    return x
+
+
+@njit(cache=True)
+def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
+    """Contact ``first`` switched at time tau into step n: its event recorded, the
+    acceleration restarted from the equilibrium. Returns the events so far."""
+    closing = not st.act[first]
+    st.act[first] = closing
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau, inp.dt)
+    rate = bdj - st.v[tr.node[first]]
+    if nev < out.ev_t.size:
+        out.ev_t[nev] = inp.t0 + n * inp.dt + tau
+        out.ev_kind[nev] = 2 * first + (1 if closing else 0)
+        out.ev_rate[nev] = rate
+    _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a)
+    return nev + 1
+
+
+@njit(cache=True)
+def _sample(tr, uni, cl, inp, st, out, n):
+    """The state and contact forces at the end of step n into the samples."""
+    r = (n + 1) // inp.stride - 1
+    out.u[:, r] = st.u
+    out.v[:, r] = st.v
+    out.a[:, r] = st.a
+    r1, ratio = _geom(cl.rad, cl.rat, n + 1, 0.0, inp.dt)
+    b, bd, node = inp.b, inp.bd, tr.node
+    for j in range(node.size):
+        if st.act[j]:
+            out.f[j, r] = _spring(j, b[j, n + 1] - st.u[node[j]] + uni.off[j], uni.k, cl.law,
+                                  cl.hz, r1, ratio) + uni.c[j] * (bd[j, n + 1] - st.v[node[j]])
+        else:
+            out.f[j, r] = 0.0
+
+
+@njit(cache=True)
+def newmark_march(tr, uni, cl, inp, st, out):
+    """March len(b[0]) - 1 steps; state ``st`` (u, v, a, act) updated in place, samples and
+    events into ``out``.
 
     An open contact closes when psi exceeds ``thr`` (a force far below any load of interest):
     without it a zero-lash contact at rest on the base circle would switch on every round-off
@@ -231,167 +359,114 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
 
     Returns (events recorded, cam work [J] = integral of F_cam b' dt, switches cut short).
     """
-    size = m.size
-    nu = node.size
-    nsteps = b.shape[1] - 1
-    inverses = np.empty((1 << nu, size, size))
-    state = np.zeros(nu, dtype=np.bool_)
-    for s_idx in range(1 << nu):
-        for j in range(nu):
-            state[j] = (s_idx >> j) & 1
-        inverses[s_idx] = np.linalg.inv(_matrix(m, K, C, node, k, c, state, dt, law))
+    size = tr.m.size
+    dt = inp.dt
+    inverses = _inverses(tr, uni, dt, cl.law)
     empty = np.empty((0, 0))
-    u1 = np.empty(size)
-    v1 = np.empty(size)
-    a1 = np.empty(size)
-    us = np.empty(size)
-    vs = np.empty(size)
-    as_ = np.empty(size)
-    pu = np.empty(size)
-    pv = np.empty(size)
-    rhs = np.empty(size)
-    z = np.empty(size)
+    end = (np.empty(size), np.empty(size), np.empty(size))
+    sub = (np.empty(size), np.empty(size), np.empty(size))
+    work = _Work(np.empty(size), np.empty(size), np.empty(size), np.empty(size))
     nev = 0
-    work = 0.0
+    energy = 0.0
     cut = 0
-    for n in range(nsteps):
+    for n in range(inp.b.shape[1] - 1):
         tau = 0.0
         switches = 0
         while True:
             h = dt - tau
             if h <= 0.0:
                 break
-            Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
-            _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv,
-                   u1, v1, a1, pu, pv, rhs, law, hz, rad, rat, z)
-            # which contact changes state first inside the (sub)step?
-            first = -1
-            alpha = 2.0
-            r0, q0 = 1.0, 1.0
-            r1, q1 = 1.0, 1.0
-            if law == 1:
-                r0, q0 = _geom(rad, rat, n, tau, dt)
-                r1, q1 = _geom(rad, rat, n, tau + h, dt)
-            for j in range(nu):
-                level = 0.0 if act[j] else thr[j]
-                bj, bdj = _input(b, bd, j, n, tau, dt)
-                p0 = _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r0, q0)[0] - level
-                bj, bdj = _input(b, bd, j, n, tau + h, dt)
-                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj, law, hz, r1, q1)[0] - level
-                if (p1 > 0.0) != act[j]:
-                    frac = p0 / (p0 - p1) if p0 != p1 else 1.0
-                    frac = min(max(frac, 0.0), 1.0)
-                    if frac < alpha:
-                        alpha, first = frac, j
+            Ainv = inverses[_state_index(st.act)] if tau == 0.0 else empty
+            _trial(tr, uni, cl, inp, st.act, st.u, st.v, st.a, n, tau, h, Ainv, end, work)
+            first, alpha = _first_change(tr, uni, cl, inp, st, end, n, tau, h)
             if first < 0 or switches >= MAX_SWITCHES:
                 if first >= 0:
                     cut += 1
                 # accept the (sub)step
-                work = _cam_work(work, u, v, u1, v1, act, node, k, c, off, b, bd, n, tau, h,
-                                 dt, law, hz, rad, rat)
-                u[:] = u1
-                v[:] = v1
-                a[:] = a1
+                energy = _cam_work(energy, st, end, tr, uni, cl, inp, n, tau, h)
+                st.u[:] = end[0]
+                st.v[:] = end[1]
+                st.a[:] = end[2]
                 break
-            # locate the crossing of psi_first in (0, h) by Illinois regula falsi
-            lo, hi = 0.0, 1.0
-            level = 0.0 if act[first] else thr[first]
-            bj, bdj = _input(b, bd, first, n, tau, dt)
-            r1, ratio = _geom(rad, rat, n, tau, dt)
-            plo = _psi(u, v, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
-            bj, bdj = _input(b, bd, first, n, tau + h, dt)
-            r1, ratio = _geom(rad, rat, n, tau + h, dt)
-            phi = _psi(u1, v1, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
-            x = alpha
-            side = 0
-            for _ in range(30):
-                _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, x * h, dt,
-                       empty, us, vs, as_, pu, pv, rhs, law, hz, rad, rat, z)
-                bj, bdj = _input(b, bd, first, n, tau + x * h, dt)
-                r1, ratio = _geom(rad, rat, n, tau + x * h, dt)
-                px = _psi(us, vs, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
-                    - level
-                if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
-                    break
-                lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
-                x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
+            x = _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h)
             hx = x * h
-            work = _cam_work(work, u, v, us, vs, act, node, k, c, off, b, bd, n, tau, hx, dt,
-                             law, hz, rad, rat)
-            u[:] = us
-            v[:] = vs
+            energy = _cam_work(energy, st, sub, tr, uni, cl, inp, n, tau, hx)
+            st.u[:] = sub[0]
+            st.v[:] = sub[1]
             tau += hx
-            closing = not act[first]
-            act[first] = closing
-            bj, bdj = _input(b, bd, first, n, tau, dt)
-            rate = bdj - v[node[first]]
-            if nev < ev_t.size:
-                ev_t[nev] = t0 + n * dt + tau
-                ev_kind[nev] = 2 * first + (1 if closing else 0)
-                ev_rate[nev] = rate
-            nev += 1
-            _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad,
-                   rat)
+            nev = _switch(tr, uni, cl, inp, st, out, nev, first, n, tau)
             switches += 1
-        if (n + 1) % stride == 0:
-            r = (n + 1) // stride - 1
-            out_u[:, r] = u
-            out_v[:, r] = v
-            out_a[:, r] = a
-            r1, ratio = _geom(rad, rat, n + 1, 0.0, dt)
-            for j in range(nu):
-                if act[j]:
-                    out_f[j, r] = _spring(j, b[j, n + 1] - u[node[j]] + off[j], k, law, hz, r1,
-                                          ratio) + c[j] * (bd[j, n + 1] - v[node[j]])
-                else:
-                    out_f[j, r] = 0.0
-    return nev, work, cut
+        if (n + 1) % inp.stride == 0:
+            _sample(tr, uni, cl, inp, st, out, n)
+    return nev, energy, cut
 
 
 @njit(cache=True)
-def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
+def _cam_power(u, v, act, tr, uni, cl, inp, n, tau):
     """F_cam b' [W] (contact 0 is the cam)."""
     if not act[0]:
         return 0.0
-    bj, bdj = _input(b, bd, 0, n, tau, dt)
-    delta = bj - u[node[0]] + off[0]
-    if law == 1:
-        r1, ratio = _geom(rad, rat, n, tau, dt)
-        g = _spring(0, delta, k, law, hz, r1, ratio)
+    node = tr.node
+    bj, bdj = _input(inp.b, inp.bd, 0, n, tau, inp.dt)
+    delta = bj - u[node[0]] + uni.off[0]
+    if cl.law == 1:
+        r1, ratio = _geom(cl.rad, cl.rat, n, tau, inp.dt)
+        g = _spring(0, delta, uni.k, cl.law, cl.hz, r1, ratio)
     else:
-        g = k[0] * delta
-    return (g + c[0] * (bdj - v[node[0]])) * bdj
+        g = uni.k[0] * delta
+    return (g + uni.c[0] * (bdj - v[node[0]])) * bdj
 
 
 @njit(cache=True)
-def _cam_work(work, u0, v0, u1, v1, act, node, k, c, off, b, bd, n, tau, h, dt, law, hz, rad,
-              rat):
-    """``work`` plus the cam's work over a (sub)step of length h by the trapezoid rule (the
-    two halves added in turn, as the march always has)."""
-    work += _cam_power(u0, v0, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat) \
-        * 0.5 * h
-    work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt, law, hz, rad, rat) \
-        * 0.5 * h
+def _cam_work(work, st, end, tr, uni, cl, inp, n, tau, h):
+    """``work`` plus the cam's work over a (sub)step of length h from the state ``st`` to
+    ``end`` (u1, v1) by the trapezoid rule (the two halves added in turn, as the march always
+    has)."""
+    work += _cam_power(st.u, st.v, st.act, tr, uni, cl, inp, n, tau) * 0.5 * h
+    work += _cam_power(end[0], end[1], st.act, tr, uni, cl, inp, n, tau + h) * 0.5 * h
     return work
 
 
 @njit(cache=True)
-def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, u_prev, act,
-                             psi_prev, out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0,
-                             law, hz, rad, rat):
+def _explicit_forces(tr, uni, cl, inp, st, out, f, nev, n):
+    """Contact forces of the explicit step n into ``f`` and onto the accelerations, the
+    contact states switched where their indicators cross (dated linearly in psi between the
+    steps). Returns the events so far."""
+    node, thr, psi_prev, act = tr.node, tr.thr, st.psi_prev, st.act
+    r1, ratio = _geom(cl.rad, cl.rat, n, 0.0, inp.dt)
+    for j in range(node.size):
+        p, fj, rate = _psi(st.u, st.v, j, tr, uni, cl, inp.b[j, n], inp.bd[j, n], r1, ratio)
+        on = p > (0.0 if act[j] else thr[j])
+        if on != act[j]:
+            # date the crossing between the previous step and this one (linear in psi)
+            frac = psi_prev[j] / (psi_prev[j] - p) if psi_prev[j] != p else 1.0
+            if nev < out.ev_t.size:
+                out.ev_t[nev] = inp.t0 + (n - 1 + min(max(frac, 0.0), 1.0)) * inp.dt
+                out.ev_kind[nev] = 2 * j + (1 if on else 0)
+                out.ev_rate[nev] = rate
+            nev += 1
+            act[j] = on
+        psi_prev[j] = p
+        f[j] = fj if on else 0.0
+        st.a[node[j]] += f[j]
+    return nev
+
+
+@njit(cache=True)
+def central_difference_march(tr, uni, cl, inp, st, out):
     """Teodorescu eq. 17: u_(n+1) = 2 u_n - u_(n-1) + dt^2 a_n, v_n = (u_n - u_(n-1))/dt.
 
     Contacts are evaluated explicitly at u_n; a change of state is dated by linear interpolation
-    of psi between the steps. State (u, u_prev, act, psi_prev) updated in place; the batch
-    evaluates steps 0..nsteps (step nsteps is step 0 of the next batch, evaluated again there).
-    Returns (events, cam work [J], 0).
+    of psi between the steps. State ``st`` (u, u_prev, act, psi_prev; v and a are its work
+    arrays) updated in place; the batch evaluates steps 0..nsteps (step nsteps is step 0 of the
+    next batch, evaluated again there). Returns (events, cam work [J], 0).
     """
+    K, C, f0, m = tr.K, tr.C, tr.f0, tr.m
+    u, u_prev, v, a = st.u, st.u_prev, st.v, st.a
+    dt, bd, stride = inp.dt, inp.bd, inp.stride
     size = m.size
-    nu = node.size
-    nsteps = b.shape[1] - 1
-    v = np.empty(size)
-    a = np.empty(size)
-    f = np.empty(nu)
+    nsteps = inp.b.shape[1] - 1
+    f = np.empty(tr.node.size)
     nev = 0
     work = 0.0
     for n in range(nsteps + 1):
@@ -402,32 +477,17 @@ def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, strid
             for q in range(size):
                 s -= K[i, q] * u[q] + C[i, q] * v[q]
             a[i] = s
-        r1, ratio = _geom(rad, rat, n, 0.0, dt)
-        for j in range(nu):
-            p, fj, rate = _psi(u, v, j, node, k, c, off, b[j, n], bd[j, n], law, hz, r1, ratio)
-            on = p > (0.0 if act[j] else thr[j])
-            if on != act[j]:
-                # date the crossing between the previous step and this one (linear in psi)
-                frac = psi_prev[j] / (psi_prev[j] - p) if psi_prev[j] != p else 1.0
-                if nev < ev_t.size:
-                    ev_t[nev] = t0 + (n - 1 + min(max(frac, 0.0), 1.0)) * dt
-                    ev_kind[nev] = 2 * j + (1 if on else 0)
-                    ev_rate[nev] = rate
-                nev += 1
-                act[j] = on
-            psi_prev[j] = p
-            f[j] = fj if on else 0.0
-            a[node[j]] += f[j]
+        nev = _explicit_forces(tr, uni, cl, inp, st, out, f, nev, n)
         for i in range(size):
             a[i] /= m[i]
         if n > 0:
             work += 0.5 * dt * f[0] * bd[0, n]
             if n % stride == 0:
                 r = n // stride - 1
-                out_u[:, r] = u
-                out_v[:, r] = v
-                out_a[:, r] = a
-                out_f[:, r] = f
+                out.u[:, r] = u
+                out.v[:, r] = v
+                out.a[:, r] = a
+                out.f[:, r] = f
         if n < nsteps:
             work += 0.5 * dt * f[0] * bd[0, n]
             for i in range(size):
