@@ -22,16 +22,27 @@ def basis_rows(basis, lay):
 
 
 @njit(cache=True)
-def _closed_contacts(z, lay, uni, st, at, a1, coef, lobe_of, kk):
-    """The closed contacts' gradients (``coef`` rows), lobes and stiffnesses k + a1 c, their
-    constant forces moved into ``z``; returns how many."""
+def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x):
+    """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
+    ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y, phi,
+    follower, valve), ``G`` its rows there (:func:`basis_rows`), ``z`` forces on those
+    coordinates (friction; overwritten), the contact states and (q, v) of the state ``st``,
+    every lobe's inputs at the step's end ``at``, a1 = 2 / step. Every contact gradient h lies
+    in its lobe's five coordinates, so the update works on 5 L numbers and touches the full
+    state once."""
+    n = x0.size
+    lobes = lay.ix.size
+    coef = np.zeros((2 * lobes, 5))
+    lobe_of = np.zeros(2 * lobes, dtype=np.int64)
+    kk = np.zeros(2 * lobes)
+    # the closed contacts' gradients, lobes and stiffnesses k + a1 c; their constant forces
     ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
     kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
     ks, cs, offs = uni.k[1], uni.c[1], uni.off[1]
     q, v = st.q, st.v
     bj, bdj, gxj, gyj, gphij = at.b, at.bd, at.gx, at.gy, at.gphi
     m = 0
-    for j in range(ix.size):
+    for j in range(lobes):
         if st.act_c[j]:
             coef[m, 0] = gxj[j]
             coef[m, 1] = gyj[j]
@@ -52,31 +63,13 @@ def _closed_contacts(z, lay, uni, st, at, a1, coef, lobe_of, kk):
             kk[m] = ks + a1 * cs
             lobe_of[m] = j
             m += 1
-    return m
-
-
-@njit(cache=True)
-def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x):
-    """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
-    ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y, phi,
-    follower, valve), ``G`` its rows there (:func:`basis_rows`), ``z`` forces on those
-    coordinates (friction; overwritten), the contact states and (q, v) of the state ``st``,
-    every lobe's inputs at the step's end ``at``, a1 = 2 / step. Every contact gradient h lies
-    in its lobe's five coordinates, so the update works on 5 L numbers and touches the full
-    state once."""
-    n = x0.size
-    lobes = lay.ix.size
-    coef = np.zeros((2 * lobes, 5))
-    lobe_of = np.zeros(2 * lobes, dtype=np.int64)
-    kk = np.zeros(2 * lobes)
-    m = _closed_contacts(z, lay, uni, st, at, a1, coef, lobe_of, kk)
     if m > 0:
         small = np.zeros((m, m))
         rhs_small = np.empty(m)
         for r in range(m):
             jr = lobe_of[r]
             small[r, r] = 1.0 / kk[r]
-            dofs = (lay.ix[jr], lay.iy[jr], lay.iphi[jr], lay.ifol[jr], lay.ival[jr])
+            dofs = (ix[jr], iy[jr], iphi[jr], ifol[jr], ival[jr])
             total = 0.0
             for e in range(5):
                 ce = coef[r, e]

@@ -36,16 +36,15 @@ def _coefficient(table, j, s, ln_first, ln_step, w):
 
 
 @njit(cache=True)
-def _film_coefficient(fric, j, s, w, h):
-    """Friction coefficient of lobe j at step s under the cam-level load ``w`` [N] with the
-    film ``h`` [m]: from the table over film ratios h/F and loads (F = unit w^exponent the
-    steady film), read at the step's fractional grid column."""
+def _film_coefficient(table, col, unit_film, exponent, w, h, ln_first, ln_step, ln_r0, d_ln_r):
+    """Friction coefficient under the cam-level load ``w`` [N] with the film ``h`` [m]: from
+    the table over film ratios h/F and loads (F = ``unit_film`` w^``exponent`` the steady
+    film), ``col`` the fractional grid column of the angle."""
     if w <= 0.0:
         return 0.0
-    F = fric.unit[j, s] * w ** fric.exponent
+    F = unit_film * w ** exponent
     ln_r = math.log(h / F) if 0.0 < F < math.inf else 0.0
-    return table_coefficient(fric.film_table, fric.col[j, s], math.log(w), ln_r, fric.ln_first,
-                             fric.ln_step, fric.ln_r0, fric.d_ln_r)
+    return table_coefficient(table, col, math.log(w), ln_r, ln_first, ln_step, ln_r0, d_ln_r)
 
 
 @njit(cache=True)
@@ -57,7 +56,9 @@ def _step_friction(s, lob, fric, st, work, at):
     torque = 0.0
     for j in range(w_prev.size):
         if fric.film:
-            mu = _film_coefficient(fric, j, s, ratio[j, s] * w_prev[j], st.film[j]) \
+            mu = _film_coefficient(fric.film_table, fric.col[j, s], fric.unit[j, s],
+                                   fric.exponent, ratio[j, s] * w_prev[j], st.film[j],
+                                   fric.ln_first, fric.ln_step, fric.ln_r0, fric.d_ln_r) \
                 + fric.corr[j, s]
         else:
             mu = _coefficient(fric.table, j, s, fric.ln_first, fric.ln_step, w_prev[j]) \
@@ -73,64 +74,44 @@ def _step_friction(s, lob, fric, st, work, at):
 
 
 @njit(cache=True)
-def _contact_load(sys, st, at, j):
-    """Lobe j's cam contact load k delta + c delta' at the state (0 when open; may pull)."""
-    if not st.act_c[j]:
-        return 0.0
-    d, dd = cam_gap(st.q, st.v, j, sys.lay, sys.uni.off[0], at.b[j], at.bd[j], at.gx[j],
-                    at.gy[j], at.gphi[j])
-    return sys.uni.k[0] * d + sys.uni.c[0] * dd
-
-
-@njit(cache=True)
-def _save(st, work):
-    """The step's start, for its further staggered passes."""
-    for i in range(st.q.size):
-        work.q_s[i], work.v_s[i], work.acc_s[i] = st.q[i], st.v[i], st.acc[i]
-    for j in range(st.act_c.size):
-        work.c_s[j], work.s_s[j] = st.act_c[j], st.act_s[j]
-
-
-@njit(cache=True)
-def _restore(st, work):
-    """Back to the step's start, predicting the load the last pass produced."""
-    for i in range(st.q.size):
-        st.q[i], st.v[i], st.acc[i] = work.q_s[i], work.v_s[i], work.acc_s[i]
-    for j in range(st.act_c.size):
-        st.act_c[j], st.act_s[j] = work.c_s[j], work.s_s[j]
-        work.w_pred[j] = work.w_end[j]
-
-
-@njit(cache=True)
-def _agrees(sys, st, work, at, tol):
-    """Whether the load a staggered pass produced agrees with its prediction within ``tol``
-    of the largest load (at least 1 N); the loads into ``work.w_end``."""
-    gap, top = 0.0, 1.0
-    for j in range(st.act_c.size):
-        w = max(_contact_load(sys, st, at, j), 0.0)
-        work.w_end[j] = w
-        gap = max(gap, abs(w - work.w_pred[j]))
-        top = max(top, w)
-    return gap <= tol * top
-
-
-@njit(cache=True)
 def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
-    """Step s: once (monolithic), or staggered passes until the load agrees with the
-    prediction. Returns the contact changes located, the steps cut short, the missed steps."""
+    """Step s: once (monolithic), or staggered passes until the load a pass produces agrees
+    with its prediction within ``scheme.step_tol`` of the largest load (at least 1 N), each
+    pass again from the step's start with the load the last one produced. Returns the contact
+    changes located, the steps cut short, the missed steps."""
     stagger, iterations = scheme.stagger, scheme.iterations
-    if stagger:
-        _save(st, work)
+    q, v, acc, act_c, act_s = st.q, st.v, st.acc, st.act_c, st.act_s
+    lay, uni = sys.lay, sys.uni
+    kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
+    if stagger:     # the step's start, for its further passes
+        for i in range(q.size):
+            work.q_s[i], work.v_s[i], work.acc_s[i] = q[i], v[i], acc[i]
+        for j in range(act_c.size):
+            work.c_s[j], work.s_s[j] = act_c[j], act_s[j]
         predict_loads(st.w_prev, st.w_older, scheme.predictor, work.w_pred)
     missed = 0
     located, over = 0, 0
     for it in range(iterations if stagger else 1):
         if it > 0:      # again from the step's start, with the load it produced
-            _restore(st, work)
+            for i in range(q.size):
+                q[i], v[i], acc[i] = work.q_s[i], work.v_s[i], work.acc_s[i]
+            for j in range(act_c.size):
+                act_c[j], act_s[j] = work.c_s[j], work.s_s[j]
+                work.w_pred[j] = work.w_end[j]
         located, over = advance(s, sys, st, work, at, pre, lob, torque, stagger, it == 0)
         if not stagger or iterations == 1:
             break
-        if _agrees(sys, st, work, at, scheme.step_tol):
+        gap, top = 0.0, 1.0
+        for j in range(act_c.size):
+            w = 0.0
+            if act_c[j]:
+                d, dd = cam_gap(q, v, j, lay.ix, lay.iy, lay.iphi, lay.ifol, offc, at.b[j],
+                                at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
+                w = max(kc * d + cc * dd, 0.0)
+            work.w_end[j] = w
+            gap = max(gap, abs(w - work.w_pred[j]))
+            top = max(top, w)
+        if gap <= scheme.step_tol * top:
             break
         if it == iterations - 1:
             missed += 1
@@ -141,11 +122,16 @@ def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
 def _end_of_step(s, sys, lob, fric, st, at):
     """The loads at the accepted step's end (never a pull) and every contact's film, marched
     at its end load and speed."""
-    dt = sys.step.dt
+    dt, lay, uni = sys.step.dt, sys.lay, sys.uni
+    kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
     for j in range(st.w_prev.size):
         st.w_older[j] = st.w_prev[j]
     for j in range(st.w_prev.size):
-        w = _contact_load(sys, st, at, j)
+        w = 0.0
+        if st.act_c[j]:
+            d, dd = cam_gap(st.q, st.v, j, lay.ix, lay.iy, lay.iphi, lay.ifol, offc, at.b[j],
+                            at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
+            w = kc * d + cc * dd
         st.w_prev[j] = w if w > 0.0 else 0.0
         if fric.film:     # the film of the accepted step, at its end load and speed
             wc = lob.ratio[j, s] * st.w_prev[j]

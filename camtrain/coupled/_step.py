@@ -63,9 +63,8 @@ def set_inputs(at, lob, s, frac, dt):
 
 
 @njit(cache=True)
-def cam_gap(z, zd, j, lay, offc, bj, bdj, gxj, gyj, gphij):
+def cam_gap(z, zd, j, ix, iy, iphi, ifol, offc, bj, bdj, gxj, gyj, gphij):
     """Cam contact j's compression delta and its rate for displacements z, velocities zd."""
-    ix, iy, iphi, ifol = lay.ix, lay.iy, lay.iphi, lay.ifol
     d = bj + offc - z[ifol[j]] + gxj * z[ix[j]] + gyj * z[iy[j]] + gphij * z[iphi[j]]
     dd = bdj - zd[ifol[j]] + gxj * zd[ix[j]] + gyj * zd[iy[j]] + gphij * zd[iphi[j]]
     return d, dd
@@ -89,14 +88,20 @@ def _friction_force(fric, work, lay, lob):
 
 
 @njit(cache=True)
-def _block_solve(tau, st, mats, lay, fric, x0, basis):
-    """The Newmark step of length ``tau`` of the linear part, block by block: A^-1 r into
-    ``x0`` and A^-1 at every lobe's contact coordinates into ``basis``."""
-    K, C, M, f0, blocks = mats.K, mats.C, mats.M, mats.f0, lay.blocks
-    q, v, acc = st.q, st.v, st.acc
+def _substep(tau, sys, st, fric, at, x, stagger):
+    """A Newmark step of length ``tau`` from the state with the contact states fixed, the
+    linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
+    shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
+    the sub-step's end as prescribed input (:mod:`._partition`)."""
+    lay = sys.lay
+    n = st.q.size
     lobes = lay.ix.size
-    a0 = 4.0 / (tau * tau)
     a1 = 2.0 / tau
+    x0 = np.empty(n)
+    basis = np.zeros((n, 5 * lobes))
+    K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
+    q, v, acc = st.q, st.v, st.acc
+    a0 = 4.0 / (tau * tau)
     for k in range(blocks.size - 1):
         lo, hi = blocks[k], blocks[k + 1]
         size = hi - lo
@@ -126,21 +131,6 @@ def _block_solve(tau, st, mats, lay, fric, x0, basis):
             col = cols[c][0]
             for i in range(size):
                 basis[lo + i, col] = S[i, 1 + c]
-
-
-@njit(cache=True)
-def _substep(tau, sys, st, fric, at, x, stagger):
-    """A Newmark step of length ``tau`` from the state with the contact states fixed, the
-    linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
-    shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
-    the sub-step's end as prescribed input (:mod:`._partition`)."""
-    lay = sys.lay
-    n = st.q.size
-    lobes = lay.ix.size
-    a1 = 2.0 / tau
-    x0 = np.empty(n)
-    basis = np.zeros((n, 5 * lobes))
-    _block_solve(tau, st, sys.mats, lay, fric, x0, basis)
     z = np.zeros(5 * lobes)     # friction is in the right-hand side already
     if stagger:     # the shaft's part of x0 is final: no contact column reaches it
         v0 = np.empty(n)
@@ -169,8 +159,8 @@ def _equilibrium(sys, st, fric, at, stagger):
         r[i] = mats.f0[i] + fric[i]
     for j in range(lay.ix.size):
         if st.act_c[j]:
-            d, dd = cam_gap(q, v, j, lay, uni.off[0], at.b[j], at.bd[j], at.gx[j], at.gy[j],
-                            at.gphi[j])
+            d, dd = cam_gap(q, v, j, lay.ix, lay.iy, lay.iphi, lay.ifol, uni.off[0], at.b[j],
+                            at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
             w = kc * d + cc * dd
             r[lay.ifol[j]] += w
             if not stagger:     # staggered: the shaft carries the predicted load (in fric)
@@ -194,10 +184,10 @@ def _equilibrium(sys, st, fric, at, stagger):
 
 
 @njit(cache=True)
-def _indicators(z, zd, j, lay, uni, bj, bdj, gxj, gyj, gphij):
+def _indicators(z, zd, j, ix, iy, iphi, ifol, ival, uni, bj, bdj, gxj, gyj, gphij):
     """(psi, delta, delta') of lobe j's cam contact and of its seat."""
-    d, dd = cam_gap(z, zd, j, lay, uni.off[0], bj, bdj, gxj, gyj, gphij)
-    ds, dds = uni.off[1] - z[lay.ival[j]], -zd[lay.ival[j]]
+    d, dd = cam_gap(z, zd, j, ix, iy, iphi, ifol, uni.off[0], bj, bdj, gxj, gyj, gphij)
+    ds, dds = uni.off[1] - z[ival[j]], -zd[ival[j]]
     return _psi(uni.k[0], uni.c[0], d, dd), d, dd, _psi(uni.k[1], uni.c[1], ds, dds), ds, dds
 
 
@@ -223,46 +213,123 @@ def _crossing(k, c, d0, dd0, d1, dd1, h):
 
 
 @njit(cache=True)
-def _full_step(sys, st, work, lob, s, torque):
-    """The step's solution without contact and friction forces (``work.base``) with the states
-    of its start (P = A^-1 M, Q = A^-1 C), the belt's pull and the drive's inertia load."""
-    step, drive, blocks = sys.step, sys.drive, sys.lay.blocks
-    q, v, acc = st.q, st.v, st.acc
-    rhs_w, rhs_c, base, hub = work.rhs_w, work.rhs_c, work.base, work.hub
-    a0, a1, dt = step.a0, step.a1, step.dt
-    n = q.size
-    for i in range(n):
-        rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
-        rhs_c[i] = a1 * q[i] + v[i]
-    for k in range(blocks.size - 1):
-        lo, hi = blocks[k], blocks[k + 1]
-        for i in range(lo, hi):
-            total = step.x_f0[i]
-            for e in range(lo, hi):
-                total += step.P[i, e] * rhs_w[e] + step.Q[i, e] * rhs_c[e]
-            base[i] = total
-    if drive.x >= 0:      # the belt's torque-dependent pull at the drive station
-        pull = abs(torque) / drive.radius
-        hub[0], hub[1] = pull * drive.cos, pull * drive.sin
-        for i in range(n):
-            base[i] += drive.basis[i, 0] * hub[0] + drive.basis[i, 1] * hub[1]
-    drive_acc = lob.drive_acc[s]
-    if drive_acc != 0.0:    # the drive's speed oscillation: -J theta'' on the twist
-        for i in range(n):
-            base[i] -= drive.u[i] * drive_acc
+def _first_crossing(sys, st, work, at, lob, s, tau, h):
+    """The contact that changes state first inside the (sub)step from tau, length h: (lobe,
+    whether the seat, fraction of the sub-step), or (-1, False, 2)."""
+    lay, uni, dt = sys.lay, sys.uni, sys.step.dt
+    x, v1 = work.x, work.v1
+    first, seat, alpha = -1, False, 2.0
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
+    for j in range(ix.size):
+        work.b0[j], work.bd0[j], g0x, g0y, g0p = _inputs(lob, j, s, tau / dt, dt)
+        pc0, d0, dd0, ps0, ds0, dds0 = _indicators(st.q, st.v, j, ix, iy, iphi, ifol, ival, uni,
+                                                   work.b0[j], work.bd0[j], g0x, g0y, g0p)
+        pc1, d1, dd1, ps1, ds1, dds1 = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
+                                                   at.b[j], at.bd[j], at.gx[j], at.gy[j],
+                                                   at.gphi[j])
+        if (pc1 > 0.0) != st.act_c[j]:
+            frac = _crossing(uni.k[0], uni.c[0], d0, dd0, d1, dd1, h)
+            if frac < alpha:
+                first, seat, alpha = j, False, frac
+        if (ps1 > 0.0) != st.act_s[j]:
+            frac = _crossing(uni.k[1], uni.c[1], ds0, dds0, ds1, dds1, h)
+            if frac < alpha:
+                first, seat, alpha = j, True, frac
+    return first, seat, alpha
 
 
 @njit(cache=True)
-def _trial(sys, st, work, at, pre, lob, stagger):
-    """The full step with the states of its start into ``work.x`` (and ``work.v1``): the
-    friction on the lobes' coordinates, the closed contacts as a low-rank update; staggered,
-    the shaft first under the predicted loads and the trains on its motion."""
-    step, lay = sys.step, sys.lay
-    zf, x, v1, base = work.zf, work.x, work.v1, work.base
-    q, v = st.q, st.v
-    a1 = step.a1
+def _split(sys, st, work, at, lob, s, stagger):
+    """The step split at every contact change inside it (at most MAX_SWITCHES): returns the
+    changes located and whether there were more. The sub-steps carry friction, the belt's
+    pull, the staggered step's predicted loads and the drive's inertia load in their
+    right-hand side (``work.fric``)."""
+    fric, drive, dt = work.fric, sys.drive, sys.step.dt
+    _friction_force(fric, work, sys.lay, lob)
+    if drive.x >= 0:
+        fric[drive.x] += work.hub[0]
+        fric[drive.y] += work.hub[1]
+    if stagger:
+        add_shaft_forces(fric, work.w_pred, at, sys.lay)
+    drive_acc = lob.drive_acc[s]
+    if drive_acc != 0.0:
+        for i in range(fric.size):
+            fric[i] -= drive.j[i] * drive_acc
+    q, v, acc, x = st.q, st.v, st.acc, work.x
     n = q.size
-    lobes = lay.ix.size
+    tau = 0.0
+    switches = 0
+    while True:
+        h = dt - tau
+        if h <= 1e-12 * dt:
+            break
+        if switches > 0:   # the full step with the start's states is x, v1 already
+            _substep(h, sys, st, fric, at, x, stagger)
+            for i in range(n):
+                work.v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
+        first, seat, alpha = _first_crossing(sys, st, work, at, lob, s, tau, h)
+        if first < 0 or switches >= MAX_SWITCHES:
+            for i in range(n):      # the (sub)step taken
+                work.a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
+                q[i] = x[i]
+                v[i] = work.v1[i]
+                acc[i] = work.a1v[i]
+            return switches, 1 if first >= 0 else 0
+        # take the step up to the change, switch the contact, restart the acceleration
+        hs = alpha * h
+        set_inputs(at, lob, s, (tau + hs) / dt, dt)
+        if hs > 1e-12 * dt:
+            _substep(hs, sys, st, fric, at, x, stagger)
+            for i in range(n):
+                v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
+                q[i] = x[i]
+        tau += hs
+        if seat:
+            st.act_s[first] = not st.act_s[first]
+        else:
+            st.act_c[first] = not st.act_c[first]
+        _equilibrium(sys, st, fric, at, stagger)
+        switches += 1
+        set_inputs(at, lob, s, 1.0, dt)
+    return switches, 0
+
+
+@njit(cache=True)
+def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
+    """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
+    ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the
+    summed lobe torque of the last step (the belt's pull). ``stagger``: the shaft under the
+    predicted loads ``work.w_pred`` first, then the trains with its motion prescribed in
+    ``pre`` (:mod:`._partition`). ``fresh`` False: ``work.base`` (the step's solution without
+    contact and friction forces, P = A^-1 M, Q = A^-1 C) is still that of the same start, from
+    the step's previous pass. The drive's angular acceleration at the step's end
+    (``lob.drive_acc``) loads the twist, measured from the drive, with -J theta''. Returns the
+    contact changes located and whether the step had more than MAX_SWITCHES."""
+    step, drive, lay = sys.step, sys.drive, sys.lay
+    q, v, acc = st.q, st.v, st.acc
+    base, hub, zf, x, v1 = work.base, work.hub, work.zf, work.x, work.v1
+    a0, a1, dt = step.a0, step.a1, step.dt
+    n, lobes = q.size, lay.ix.size
+    if fresh:   # the full step with the states of its start
+        rhs_w, rhs_c, blocks = work.rhs_w, work.rhs_c, lay.blocks
+        for i in range(n):
+            rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
+            rhs_c[i] = a1 * q[i] + v[i]
+        for k in range(blocks.size - 1):
+            lo, hi = blocks[k], blocks[k + 1]
+            for i in range(lo, hi):
+                total = step.x_f0[i]
+                for e in range(lo, hi):
+                    total += step.P[i, e] * rhs_w[e] + step.Q[i, e] * rhs_c[e]
+                base[i] = total
+        if drive.x >= 0:      # the belt's torque-dependent pull at the drive station
+            pull = abs(torque) / drive.radius
+            hub[0], hub[1] = pull * drive.cos, pull * drive.sin
+            for i in range(n):
+                base[i] += drive.basis[i, 0] * hub[0] + drive.basis[i, 1] * hub[1]
+        if lob.drive_acc[s] != 0.0:    # the drive's speed oscillation: -J theta'' on the twist
+            for i in range(n):
+                base[i] -= drive.u[i] * lob.drive_acc[s]
     for j in range(lobes):      # friction on the lobe's coordinates
         zf[5 * j] = -work.tang[j] * lob.sina[j]
         zf[5 * j + 1] = work.tang[j] * lob.cosa[j]
@@ -283,132 +350,23 @@ def _trial(sys, st, work, at, pre, lob, stagger):
         woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
+    if _changes(lay, sys.uni, st, x, v1, at):
+        return _split(sys, st, work, at, lob, s, stagger)
+    for i in range(n):
+        acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
+        q[i] = x[i]
+        v[i] = v1[i]
+    return 0, 0
 
 
 @njit(cache=True)
-def _changes(sys, st, work, at):
-    """Whether any contact's state differs at the trial step's end from its start."""
-    for j in range(sys.lay.ix.size):
-        pc, _d, _dd, ps, _ds, _dds = _indicators(work.x, work.v1, j, sys.lay, sys.uni, at.b[j],
-                                                 at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
+def _changes(lay, uni, st, x, v1, at):
+    """Whether any contact's state differs at the trial step's end (x, v1) from its start."""
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
+    for j in range(ix.size):
+        pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
+                                                 at.b[j], at.bd[j], at.gx[j], at.gy[j],
+                                                 at.gphi[j])
         if (pc > 0.0) != st.act_c[j] or (ps > 0.0) != st.act_s[j]:
             return True
     return False
-
-
-@njit(cache=True)
-def _split_forces(sys, work, at, lob, s, stagger):
-    """The forces the sub-steps carry in their right-hand side (``work.fric``): friction, the
-    belt's pull, the staggered step's predicted loads, the drive's inertia load."""
-    fric, drive = work.fric, sys.drive
-    _friction_force(fric, work, sys.lay, lob)
-    if drive.x >= 0:
-        fric[drive.x] += work.hub[0]
-        fric[drive.y] += work.hub[1]
-    if stagger:
-        add_shaft_forces(fric, work.w_pred, at, sys.lay)
-    drive_acc = lob.drive_acc[s]
-    if drive_acc != 0.0:
-        for i in range(fric.size):
-            fric[i] -= drive.j[i] * drive_acc
-
-
-@njit(cache=True)
-def _first_crossing(sys, st, work, at, lob, s, tau, h):
-    """The contact that changes state first inside the (sub)step from tau, length h: (lobe,
-    whether the seat, fraction of the sub-step), or (-1, False, 2)."""
-    lay, uni, dt = sys.lay, sys.uni, sys.step.dt
-    x, v1 = work.x, work.v1
-    first, seat, alpha = -1, False, 2.0
-    for j in range(lay.ix.size):
-        work.b0[j], work.bd0[j], g0x, g0y, g0p = _inputs(lob, j, s, tau / dt, dt)
-        pc0, d0, dd0, ps0, ds0, dds0 = _indicators(st.q, st.v, j, lay, uni, work.b0[j],
-                                                   work.bd0[j], g0x, g0y, g0p)
-        pc1, d1, dd1, ps1, ds1, dds1 = _indicators(x, v1, j, lay, uni, at.b[j], at.bd[j],
-                                                   at.gx[j], at.gy[j], at.gphi[j])
-        if (pc1 > 0.0) != st.act_c[j]:
-            frac = _crossing(uni.k[0], uni.c[0], d0, dd0, d1, dd1, h)
-            if frac < alpha:
-                first, seat, alpha = j, False, frac
-        if (ps1 > 0.0) != st.act_s[j]:
-            frac = _crossing(uni.k[1], uni.c[1], ds0, dds0, ds1, dds1, h)
-            if frac < alpha:
-                first, seat, alpha = j, True, frac
-    return first, seat, alpha
-
-
-@njit(cache=True)
-def _accept(st, work, h):
-    """The (sub)step of length h ending in ``work.x``, ``work.v1`` taken."""
-    q, v, acc, x = st.q, st.v, st.acc, work.x
-    for i in range(q.size):
-        work.a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
-        q[i] = x[i]
-        v[i] = work.v1[i]
-        acc[i] = work.a1v[i]
-
-
-@njit(cache=True)
-def _split(sys, st, work, at, lob, s, stagger):
-    """The step split at every contact change inside it (at most MAX_SWITCHES): returns the
-    changes located and whether there were more."""
-    dt = sys.step.dt
-    q, v, x = st.q, st.v, work.x
-    n = q.size
-    tau = 0.0
-    switches = 0
-    while True:
-        h = dt - tau
-        if h <= 1e-12 * dt:
-            break
-        if switches > 0:   # the full step with the start's states is x, v1 already
-            _substep(h, sys, st, work.fric, at, x, stagger)
-            for i in range(n):
-                work.v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
-        first, seat, alpha = _first_crossing(sys, st, work, at, lob, s, tau, h)
-        if first < 0 or switches >= MAX_SWITCHES:
-            _accept(st, work, h)
-            return switches, 1 if first >= 0 else 0
-        # take the step up to the change, switch the contact, restart the acceleration
-        hs = alpha * h
-        set_inputs(at, lob, s, (tau + hs) / dt, dt)
-        if hs > 1e-12 * dt:
-            _substep(hs, sys, st, work.fric, at, x, stagger)
-            for i in range(n):
-                v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
-                q[i] = x[i]
-        tau += hs
-        if seat:
-            st.act_s[first] = not st.act_s[first]
-        else:
-            st.act_c[first] = not st.act_c[first]
-        _equilibrium(sys, st, work.fric, at, stagger)
-        switches += 1
-        set_inputs(at, lob, s, 1.0, dt)
-    return switches, 0
-
-
-@njit(cache=True)
-def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
-    """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
-    ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the
-    summed lobe torque of the last step (the belt's pull). ``stagger``: the shaft under the
-    predicted loads ``work.w_pred`` first, then the trains with its motion prescribed in
-    ``pre`` (:mod:`._partition`). ``fresh`` False: ``work.base`` (the step's solution without
-    contact and friction forces) is still that of the same start, from the step's previous
-    pass. The drive's angular acceleration at the step's end (``lob.drive_acc``) loads the
-    twist, measured from the drive, with -J theta''. Returns the contact changes located and
-    whether the step had more than MAX_SWITCHES."""
-    if fresh:
-        _full_step(sys, st, work, lob, s, torque)
-    _trial(sys, st, work, at, pre, lob, stagger)
-    if not _changes(sys, st, work, at):
-        q, v, acc, x = st.q, st.v, st.acc, work.x
-        dt = sys.step.dt
-        for i in range(q.size):
-            acc[i] = sys.step.a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
-            q[i] = x[i]
-            v[i] = work.v1[i]
-        return 0, 0
-    _split_forces(sys, work, at, lob, s, stagger)
-    return _split(sys, st, work, at, lob, s, stagger)

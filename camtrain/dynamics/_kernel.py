@@ -113,13 +113,12 @@ def _spring(j, delta, k, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _psi(u, v, j, tr, uni, cl, bj, bdj, r1, ratio):
+def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
     """Contact indicator min(F_spring, F_spring + c delta') and the force it would carry."""
-    node, k, c, off = tr.node, uni.k, uni.c, uni.off
     delta = bj - u[node[j]] + off[j]
     rate = bdj - v[node[j]]
-    if j == 0 and cl.law == 1 and delta > 0.0:
-        g = _hz_solve(delta, 0.0, r1, ratio, cl.hz, k[0] * delta)
+    if j == 0 and law == 1 and delta > 0.0:
+        g = _hz_solve(delta, 0.0, r1, ratio, hz, k[0] * delta)
     else:
         g = k[j] * delta
     f = g + c[j] * rate
@@ -167,11 +166,15 @@ def _matrix(tr, uni, act, h, law):
 
 
 @njit(cache=True)
-def _predicted_rhs(tr, uni, inp, act, u, v, a, n, tau, h, work, hertz):
-    """The Newmark predictor (pu, pv in ``work``) and the step's right-hand side (``work.rhs``)
-    with the active contacts' forces (a Hertz cam contact's damper only)."""
+def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
+    """One Newmark step of length h from time tau of step n, contact state fixed: the end
+    state into ``out`` (u1, v1, a1), ``work`` (pu, pv, rhs, z) its work arrays. A Hertz cam
+    contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving F = F_hertz(delta(a1)),
+    delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
+    u1, v1, a1 = out
+    pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
     m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
-    pu, pv, rhs = work.pu, work.pv, work.rhs
+    k, c, off = uni.k, uni.c, uni.off
     size = m.size
     for i in range(size):
         pu[i] = u[i] + h * v[i] + 0.25 * h * h * a[i]
@@ -181,28 +184,15 @@ def _predicted_rhs(tr, uni, inp, act, u, v, a, n, tau, h, work, hertz):
         for q in range(size):
             s -= K[i, q] * pu[q] + C[i, q] * pv[q]
         rhs[i] = s
+    hertz = cl.law == 1 and act[0]
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(inp.b, inp.bd, j, n, tau + h, inp.dt)
             i = node[j]
             if j == 0 and hertz:
-                rhs[i] += uni.c[j] * (bdj - pv[i])
+                rhs[i] += c[j] * (bdj - pv[i])
             else:
-                rhs[i] += uni.k[j] * (bj - pu[i] + uni.off[j]) + uni.c[j] * (bdj - pv[i])
-
-
-@njit(cache=True)
-def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
-    """One Newmark step of length h from time tau of step n, contact state fixed: the end
-    state into ``out`` (u1, v1, a1), ``work`` (pu, pv, rhs, z) its work arrays. A Hertz cam
-    contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving F = F_hertz(delta(a1)),
-    delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
-    u1, v1, a1 = out
-    pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
-    node, k = tr.node, uni.k
-    size = tr.m.size
-    hertz = cl.law == 1 and act[0]
-    _predicted_rhs(tr, uni, inp, act, u, v, a, n, tau, h, work, hertz)
+                rhs[i] += k[j] * (bj - pu[i] + off[j]) + c[j] * (bdj - pv[i])
     if Ainv.shape[0] > 0:
         for i in range(size):
             s = 0.0
@@ -223,7 +213,7 @@ def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
         i = node[0]
         r1, ratio = _geom(cl.rad, cl.rat, n, tau + h, inp.dt)
         bj, bdj = _input(inp.b, inp.bd, 0, n, tau + h, inp.dt)
-        target = bj - pu[i] - 0.25 * h * h * a1[i] + uni.off[0]
+        target = bj - pu[i] - 0.25 * h * h * a1[i] + off[0]
         f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, cl.hz, k[0] * max(target, 0.0))
         if target <= 0.0:
             # compressed by less than nothing: the linear stand-in (the indicator opens it)
@@ -245,69 +235,28 @@ def _state_index(act):
 
 
 @njit(cache=True)
-def _inverses(tr, uni, dt, law):
-    """The full step's matrix inverted once for every contact state (2^contacts)."""
-    size, nu = tr.m.size, tr.node.size
-    inverses = np.empty((1 << nu, size, size))
-    state = np.zeros(nu, dtype=np.bool_)
-    for s_idx in range(1 << nu):
-        for j in range(nu):
-            state[j] = (s_idx >> j) & 1
-        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
-    return inverses
-
-
-@njit(cache=True)
-def _first_change(tr, uni, cl, inp, st, end, n, tau, h):
-    """The contact whose state changes first inside the (sub)step from the state ``st`` to
-    ``end`` (u1, v1), and the fraction of the step where its indicator crosses (linear), or
-    (-1, 2)."""
-    u1, v1 = end[0], end[1]
-    dt = inp.dt
-    first = -1
-    alpha = 2.0
-    r0, q0 = 1.0, 1.0
-    r1, q1 = 1.0, 1.0
-    if cl.law == 1:
-        r0, q0 = _geom(cl.rad, cl.rat, n, tau, dt)
-        r1, q1 = _geom(cl.rad, cl.rat, n, tau + h, dt)
-    for j in range(tr.node.size):
-        level = 0.0 if st.act[j] else tr.thr[j]
-        bj, bdj = _input(inp.b, inp.bd, j, n, tau, dt)
-        p0 = _psi(st.u, st.v, j, tr, uni, cl, bj, bdj, r0, q0)[0] - level
-        bj, bdj = _input(inp.b, inp.bd, j, n, tau + h, dt)
-        p1 = _psi(u1, v1, j, tr, uni, cl, bj, bdj, r1, q1)[0] - level
-        if (p1 > 0.0) != st.act[j]:
-            frac = p0 / (p0 - p1) if p0 != p1 else 1.0
-            frac = min(max(frac, 0.0), 1.0)
-            if frac < alpha:
-                alpha, first = frac, j
-    return first, alpha
-
-
-@njit(cache=True)
-def _indicator_at(tr, uni, cl, inp, u, v, j, n, t, level):
-    """Contact j's indicator at time t into step n, less ``level``."""
-    bj, bdj = _input(inp.b, inp.bd, j, n, t, inp.dt)
-    r1, ratio = _geom(cl.rad, cl.rat, n, t, inp.dt)
-    return _psi(u, v, j, tr, uni, cl, bj, bdj, r1, ratio)[0] - level
-
-
-@njit(cache=True)
 def _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h):
     """The crossing of contact ``first``'s indicator in (0, h) by Illinois regula falsi, the
     state at it in ``sub`` (us, vs, as); returns the fraction of the step."""
     u, v, a, act = st.u, st.v, st.a, st.act
+    node, k, c, off, law, hz, dt = tr.node, uni.k, uni.c, uni.off, cl.law, cl.hz, inp.dt
     empty = np.empty((0, 0))
     lo, hi = 0.0, 1.0
     level = 0.0 if act[first] else tr.thr[first]
-    plo = _indicator_at(tr, uni, cl, inp, u, v, first, n, tau, level)
-    phi = _indicator_at(tr, uni, cl, inp, end[0], end[1], first, n, tau + h, level)
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau, dt)
+    plo = _psi(u, v, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau + h, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau + h, dt)
+    phi = _psi(end[0], end[1], first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
     x = alpha
     side = 0
     for _ in range(30):
         _trial(tr, uni, cl, inp, act, u, v, a, n, tau, x * h, empty, sub, work)
-        px = _indicator_at(tr, uni, cl, inp, sub[0], sub[1], first, n, tau + x * h, level)
+        bj, bdj = _input(inp.b, inp.bd, first, n, tau + x * h, dt)
+        r1, ratio = _geom(cl.rad, cl.rat, n, tau + x * h, dt)
+        px = _psi(sub[0], sub[1], first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
+            - level
         if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
             break
         lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
@@ -355,44 +304,76 @@ def newmark_march(tr, uni, cl, inp, st, out):
 
     An open contact closes when psi exceeds ``thr`` (a force far below any load of interest):
     without it a zero-lash contact at rest on the base circle would switch on every round-off
-    ripple of the ringing train.
+    ripple of the ringing train. (The step's hot path calls the compiled helpers with plain
+    arrays: a record passed to a small function called several times a step costs more than
+    its arithmetic.)
 
     Returns (events recorded, cam work [J] = integral of F_cam b' dt, switches cut short).
     """
-    size = tr.m.size
-    dt = inp.dt
-    inverses = _inverses(tr, uni, dt, cl.law)
+    node, thr, k, c, off = tr.node, tr.thr, uni.k, uni.c, uni.off
+    law, hz, rad, rat = cl.law, cl.hz, cl.rad, cl.rat
+    b, bd, dt = inp.b, inp.bd, inp.dt
+    u, v, a, act = st.u, st.v, st.a, st.act
+    size, nu = tr.m.size, node.size
+    inverses = np.empty((1 << nu, size, size))   # the full step, once per contact state
+    state = np.zeros(nu, dtype=np.bool_)
+    for s_idx in range(1 << nu):
+        for j in range(nu):
+            state[j] = (s_idx >> j) & 1
+        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
     empty = np.empty((0, 0))
-    end = (np.empty(size), np.empty(size), np.empty(size))
+    u1, v1, a1 = np.empty(size), np.empty(size), np.empty(size)
+    end = (u1, v1, a1)
     sub = (np.empty(size), np.empty(size), np.empty(size))
     work = _Work(np.empty(size), np.empty(size), np.empty(size), np.empty(size))
     nev = 0
     energy = 0.0
     cut = 0
-    for n in range(inp.b.shape[1] - 1):
+    for n in range(b.shape[1] - 1):
         tau = 0.0
         switches = 0
         while True:
             h = dt - tau
             if h <= 0.0:
                 break
-            Ainv = inverses[_state_index(st.act)] if tau == 0.0 else empty
-            _trial(tr, uni, cl, inp, st.act, st.u, st.v, st.a, n, tau, h, Ainv, end, work)
-            first, alpha = _first_change(tr, uni, cl, inp, st, end, n, tau, h)
-            if first < 0 or switches >= MAX_SWITCHES:
-                if first >= 0:
-                    cut += 1
-                # accept the (sub)step
-                energy = _cam_work(energy, st, end, tr, uni, cl, inp, n, tau, h)
-                st.u[:] = end[0]
-                st.v[:] = end[1]
-                st.a[:] = end[2]
+            Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
+            _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, end, work)
+            # which contact changes state first inside the (sub)step?
+            first = -1
+            alpha = 2.0
+            r0, q0 = 1.0, 1.0
+            r1, q1 = 1.0, 1.0
+            if law == 1:
+                r0, q0 = _geom(rad, rat, n, tau, dt)
+                r1, q1 = _geom(rad, rat, n, tau + h, dt)
+            for j in range(nu):
+                level = 0.0 if act[j] else thr[j]
+                bj, bdj = _input(b, bd, j, n, tau, dt)
+                p0 = _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r0, q0)[0] - level
+                bj, bdj = _input(b, bd, j, n, tau + h, dt)
+                p1 = _psi(u1, v1, j, node, k, c, off, bj, bdj, law, hz, r1, q1)[0] - level
+                if (p1 > 0.0) != act[j]:
+                    frac = p0 / (p0 - p1) if p0 != p1 else 1.0
+                    frac = min(max(frac, 0.0), 1.0)
+                    if frac < alpha:
+                        alpha, first = frac, j
+            stop = first < 0 or switches >= MAX_SWITCHES
+            if stop:
+                cut += 1 if first >= 0 else 0
+                hx, to = h, end       # accept the (sub)step
+            else:
+                hx, to = _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau,
+                                 h) * h, sub
+            # the cam's work over the (sub)step, trapezoid (the two halves added in turn)
+            energy += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
+                                 rat) * 0.5 * hx
+            energy += _cam_power(to[0], to[1], act, node, k, c, off, b, bd, n, tau + hx, dt,
+                                 law, hz, rad, rat) * 0.5 * hx
+            u[:] = to[0]
+            v[:] = to[1]
+            if stop:
+                a[:] = a1
                 break
-            x = _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h)
-            hx = x * h
-            energy = _cam_work(energy, st, sub, tr, uni, cl, inp, n, tau, hx)
-            st.u[:] = sub[0]
-            st.v[:] = sub[1]
             tau += hx
             nev = _switch(tr, uni, cl, inp, st, out, nev, first, n, tau)
             switches += 1
@@ -402,54 +383,18 @@ def newmark_march(tr, uni, cl, inp, st, out):
 
 
 @njit(cache=True)
-def _cam_power(u, v, act, tr, uni, cl, inp, n, tau):
+def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
     """F_cam b' [W] (contact 0 is the cam)."""
     if not act[0]:
         return 0.0
-    node = tr.node
-    bj, bdj = _input(inp.b, inp.bd, 0, n, tau, inp.dt)
-    delta = bj - u[node[0]] + uni.off[0]
-    if cl.law == 1:
-        r1, ratio = _geom(cl.rad, cl.rat, n, tau, inp.dt)
-        g = _spring(0, delta, uni.k, cl.law, cl.hz, r1, ratio)
+    bj, bdj = _input(b, bd, 0, n, tau, dt)
+    delta = bj - u[node[0]] + off[0]
+    if law == 1:
+        r1, ratio = _geom(rad, rat, n, tau, dt)
+        g = _spring(0, delta, k, law, hz, r1, ratio)
     else:
-        g = uni.k[0] * delta
-    return (g + uni.c[0] * (bdj - v[node[0]])) * bdj
-
-
-@njit(cache=True)
-def _cam_work(work, st, end, tr, uni, cl, inp, n, tau, h):
-    """``work`` plus the cam's work over a (sub)step of length h from the state ``st`` to
-    ``end`` (u1, v1) by the trapezoid rule (the two halves added in turn, as the march always
-    has)."""
-    work += _cam_power(st.u, st.v, st.act, tr, uni, cl, inp, n, tau) * 0.5 * h
-    work += _cam_power(end[0], end[1], st.act, tr, uni, cl, inp, n, tau + h) * 0.5 * h
-    return work
-
-
-@njit(cache=True)
-def _explicit_forces(tr, uni, cl, inp, st, out, f, nev, n):
-    """Contact forces of the explicit step n into ``f`` and onto the accelerations, the
-    contact states switched where their indicators cross (dated linearly in psi between the
-    steps). Returns the events so far."""
-    node, thr, psi_prev, act = tr.node, tr.thr, st.psi_prev, st.act
-    r1, ratio = _geom(cl.rad, cl.rat, n, 0.0, inp.dt)
-    for j in range(node.size):
-        p, fj, rate = _psi(st.u, st.v, j, tr, uni, cl, inp.b[j, n], inp.bd[j, n], r1, ratio)
-        on = p > (0.0 if act[j] else thr[j])
-        if on != act[j]:
-            # date the crossing between the previous step and this one (linear in psi)
-            frac = psi_prev[j] / (psi_prev[j] - p) if psi_prev[j] != p else 1.0
-            if nev < out.ev_t.size:
-                out.ev_t[nev] = inp.t0 + (n - 1 + min(max(frac, 0.0), 1.0)) * inp.dt
-                out.ev_kind[nev] = 2 * j + (1 if on else 0)
-                out.ev_rate[nev] = rate
-            nev += 1
-            act[j] = on
-        psi_prev[j] = p
-        f[j] = fj if on else 0.0
-        st.a[node[j]] += f[j]
-    return nev
+        g = k[0] * delta
+    return (g + c[0] * (bdj - v[node[0]])) * bdj
 
 
 @njit(cache=True)
@@ -466,7 +411,8 @@ def central_difference_march(tr, uni, cl, inp, st, out):
     dt, bd, stride = inp.dt, inp.bd, inp.stride
     size = m.size
     nsteps = inp.b.shape[1] - 1
-    f = np.empty(tr.node.size)
+    node, thr, psi_prev, act = tr.node, tr.thr, st.psi_prev, st.act
+    f = np.empty(node.size)
     nev = 0
     work = 0.0
     for n in range(nsteps + 1):
@@ -477,7 +423,23 @@ def central_difference_march(tr, uni, cl, inp, st, out):
             for q in range(size):
                 s -= K[i, q] * u[q] + C[i, q] * v[q]
             a[i] = s
-        nev = _explicit_forces(tr, uni, cl, inp, st, out, f, nev, n)
+        r1, ratio = _geom(cl.rad, cl.rat, n, 0.0, inp.dt)
+        for j in range(node.size):
+            p, fj, rate = _psi(st.u, st.v, j, node, uni.k, uni.c, uni.off, inp.b[j, n],
+                               inp.bd[j, n], cl.law, cl.hz, r1, ratio)
+            on = p > (0.0 if act[j] else thr[j])
+            if on != act[j]:
+                # date the crossing between the previous step and this one (linear in psi)
+                frac = psi_prev[j] / (psi_prev[j] - p) if psi_prev[j] != p else 1.0
+                if nev < out.ev_t.size:
+                    out.ev_t[nev] = inp.t0 + (n - 1 + min(max(frac, 0.0), 1.0)) * inp.dt
+                    out.ev_kind[nev] = 2 * j + (1 if on else 0)
+                    out.ev_rate[nev] = rate
+                nev += 1
+                act[j] = on
+            psi_prev[j] = p
+            f[j] = fj if on else 0.0
+            st.a[node[j]] += f[j]
         for i in range(size):
             a[i] /= m[i]
         if n > 0:
