@@ -306,7 +306,7 @@ class _FixedStep:
         if self.explicit:   # v and a: the explicit scheme's work arrays
             state = TrainState(self.u, np.empty(n), np.empty(n), self.act, self.u_prev,
                                self.psi_prev)
-            march = self.kernel.central_difference_march
+            from camtrain.dynamics._explicit import central_difference_march as march
         else:
             state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev)
             march = self.kernel.newmark_march
@@ -353,8 +353,9 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
         state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2))
-        _kernel.central_difference_march(train, unilateral(model), linear_law(), drive, state,
-                                         out)
+        from camtrain.dynamics._explicit import central_difference_march
+
+        central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
         state = TrainState(u, v, a, act, u, np.zeros(2))
         _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
