@@ -25,8 +25,8 @@ def _announced() -> dict[str, str]:
 def test_every_kernel_module_announces_a_known_family():
     announced = _announced()
     assert set(announced) == set(COMPILE_SECONDS), announced
-    assert {"_orbit_march.py", "_kernel.py", "_coupled_kernel.py", "_ring_kernel.py"} == set(
-        announced.values())
+    assert set(announced.values()) <= {"_orbit_march.py", "_kernel.py", "_explicit.py",
+                                       "_revolution.py", "_ring_kernel.py"}
 
 
 def test_every_family_has_a_warm_up_case_whose_deck_loads():

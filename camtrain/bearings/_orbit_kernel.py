@@ -10,6 +10,7 @@ side turns them into ConvergenceError.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -19,6 +20,10 @@ OK, BUDGET, NOT_PERIODIC, OFF_MAP = 0, 1, 2, 3
 #: cycles without a new smallest cycle-to-cycle change after which the march gives up: a change
 #: that converges falls every cycle; one that sits at the step error never reaches period_tol
 STALL_CYCLES = 10
+#: the mobility of the compiled march as one typed record: ``kind`` (EXACT, BOOKER, TABLE), its
+#: ``gain`` (the scale of the mobility: see orbit.py), the map's tables eps, m_xi, m_mu (empty
+#: without a map)
+Mobility = namedtuple("Mobility", "kind gain t_eps t_mxi t_mmu")
 
 _TWO_PI = 2.0 * math.pi
 _HALF_PI = 0.5 * math.pi

@@ -148,9 +148,12 @@ def _load(coef, seg, s):
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(seg, s, x, y, coef, kind, gain, state, t_eps, t_mxi, t_mmu):
+def _rhs(seg, s, x, y, coef, mob, state):
+    """The orbit's rate at time s into load interval ``seg`` (``mob``: the mobility record,
+    :data:`._orbit_kernel.Mobility`)."""
     wx, wy, wb = _load(coef, seg, s)
-    vx, vy, _ = _squeeze(x, y, wx, wy, wb, kind, gain, state, t_eps, t_mxi, t_mmu)
+    vx, vy, _ = _squeeze(x, y, wx, wy, wb, mob.kind, mob.gain, state, mob.t_eps, mob.t_mxi,
+                         mob.t_mmu)
     return vx - wb * y, vy + wb * x
 
 
@@ -177,8 +180,7 @@ def _dense(ex, ey, h, theta, ks):
 
 
 @njit(cache=True, error_model="numpy")
-def _step(ex, ey, h, tl, seg, free, t, coef, ks, kind, gain, state, eps_limit, tol,
-          t_eps, t_mxi, t_mmu):
+def _step(ex, ey, h, tl, seg, free, t, coef, ks, mob, state, eps_limit, tol):
     """One Dormand-Prince step of length h from (ex, ey) at time tl (ks[0] holds the
     right-hand side there): stages into ks. Returns (end x, end y, error / tol, inside), inside
     False when a stage or the end would reach eps_limit (the mobility is not evaluated there).
@@ -198,8 +200,7 @@ def _step(ex, ey, h, tl, seg, free, t, coef, ks, kind, gain, state, eps_limit, t
         if free:
             ss = _segment(t, seg, tt)
             tt -= t[ss]
-        ks[st, 0], ks[st, 1] = _rhs(ss, tt, xs, ys, coef, kind, gain, state, t_eps, t_mxi,
-                                    t_mmu)
+        ks[st, 0], ks[st, 1] = _rhs(ss, tt, xs, ys, coef, mob, state)
     errx, erry = 0.0, 0.0
     for q in range(7):
         errx += _E[q] * ks[q, 0]
@@ -228,8 +229,7 @@ def _step_end(t, period, seg, tl, h):
 
 
 @njit(cache=True, error_model="numpy")
-def _grid_cycle(cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, tol, budget,
-                t_eps, t_mxi, t_mmu):
+def _grid_cycle(cur, ex, ey, h, t, dts, coef, ks, mob, state, eps_limit, tol, budget):
     """One cycle marched interval by interval (a piecewise-linear load: every step ends on a
     grid angle). Returns (ex, ey, h, status, time of a failure, accepted steps)."""
     n = t.size
@@ -238,7 +238,7 @@ def _grid_cycle(cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, 
         cur[i, 0], cur[i, 1] = ex, ey
         dt = dts[i]
         tl, used = 0.0, 0
-        k1x, k1y = _rhs(i, 0.0, ex, ey, coef, kind, gain, state, t_eps, t_mxi, t_mmu)
+        k1x, k1y = _rhs(i, 0.0, ex, ey, coef, mob, state)
         while tl < dt:
             if used >= budget:
                 return ex, ey, h, BUDGET, t[i] + tl, steps
@@ -247,8 +247,8 @@ def _grid_cycle(cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, 
             if dt - tl - h < 1e-12 * dt:
                 h = dt - tl
             ks[0, 0], ks[0, 1] = k1x, k1y
-            xs, ys, err, inside = _step(ex, ey, h, tl, i, False, t, coef, ks, kind, gain,
-                                        state, eps_limit, tol, t_eps, t_mxi, t_mmu)
+            xs, ys, err, inside = _step(ex, ey, h, tl, i, False, t, coef, ks, mob, state,
+                                        eps_limit, tol)
             if state[2] > 0.0:
                 if h > _MAP_STEP * dts[i]:  # a trial stage off the map: retry shorter
                     state[2] = 0.0
@@ -270,8 +270,8 @@ def _grid_cycle(cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, 
 
 
 @njit(cache=True, error_model="numpy")
-def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state, eps_limit,
-                tol, budget, t_eps, t_mxi, t_mmu):
+def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, mob, state, eps_limit,
+                tol, budget):
     """One cycle with steps free of the load grid (a smooth load), the grid samples from the
     continuous extension. ``ends[:m]``: the step ends of the previous cycle, replayed while
     their steps pass the error test (m = 0: none); the first failing step hands over to the
@@ -284,7 +284,7 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
     cur[0, 0], cur[0, 1] = ex, ey
     nxt, seg, tl, used, steps = 1, 0, 0.0, 0, 0
     replay = m > 0
-    k1x, k1y = _rhs(0, 0.0, ex, ey, coef, kind, gain, state, t_eps, t_mxi, t_mmu)
+    k1x, k1y = _rhs(0, 0.0, ex, ey, coef, mob, state)
     while tl < period:
         if used >= budget:
             return ex, ey, h, BUDGET, tl, steps, ends
@@ -292,8 +292,8 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
         end = ends[steps] if replay else _step_end(t, period, seg, tl, h)
         h = end - tl
         ks[0, 0], ks[0, 1] = k1x, k1y
-        xs, ys, err, inside = _step(ex, ey, h, tl, seg, True, t, coef, ks, kind, gain, state,
-                                    eps_limit, tol, t_eps, t_mxi, t_mmu)
+        xs, ys, err, inside = _step(ex, ey, h, tl, seg, True, t, coef, ks, mob, state,
+                                    eps_limit, tol)
         if state[2] > 0.0:
             if h > _MAP_STEP * period:  # a trial stage off the map: retry shorter
                 state[2] = 0.0
@@ -330,8 +330,8 @@ def _free_cycle(cur, ex, ey, h, t, period, coef, ks, ends, m, kind, gain, state,
 
 
 @njit(cache=True, error_model="numpy")
-def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, period_tol,
-                max_cycles, max_steps, eps_limit, t_eps, t_mxi, t_mmu):
+def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, mob, tol, period_tol,
+                max_cycles, max_steps, eps_limit):
     """Periodic orbit sampled on the load grid ``t`` (time from the first angle; cycle length
     ``period``; dts the interval lengths).
 
@@ -357,12 +357,11 @@ def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, per
         cycles = cyc
         if grid_steps:
             ex, ey, h, status, t_fail, steps = _grid_cycle(
-                cur, ex, ey, h, t, dts, coef, ks, kind, gain, state, eps_limit, tol, max_steps,
-                t_eps, t_mxi, t_mmu)
+                cur, ex, ey, h, t, dts, coef, ks, mob, state, eps_limit, tol, max_steps)
         else:
             ex, ey, h, status, t_fail, steps, ends = _free_cycle(
                 cur, ex, ey, h, t, period, coef, ks, ends, steps if cyc >= REPLAY_FROM else 0,
-                kind, gain, state, eps_limit, tol, max_steps, t_eps, t_mxi, t_mmu)
+                mob, state, eps_limit, tol, max_steps)
         if status != OK:
             return cur, np.empty((0, 3)), cycles, change, status, t_fail, math.hypot(ex, ey), \
                 steps
@@ -380,8 +379,9 @@ def march_orbit(coef, t, dts, period, y0x, y0y, grid_steps, kind, gain, tol, per
     vel = np.empty((n, 3))
     for i in range(n):
         wx, wy, wb = _load(coef, i, 0.0)
-        vel[i, 0], vel[i, 1], vel[i, 2] = _squeeze(cur[i, 0], cur[i, 1], wx, wy, wb, kind, gain,
-                                                   state, t_eps, t_mxi, t_mmu)
+        vel[i, 0], vel[i, 1], vel[i, 2] = _squeeze(cur[i, 0], cur[i, 1], wx, wy, wb, mob.kind,
+                                                   mob.gain, state, mob.t_eps, mob.t_mxi,
+                                                   mob.t_mmu)
     status = OK if change <= period_tol else NOT_PERIODIC
     return cur, vel, cycles, change, status, 0.0, 0.0, steps
 

@@ -190,9 +190,9 @@ def bearing_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_jou
     from ._orbit_march import march_orbit
 
     cur, vel, cycles, change, status, t_fail, e_fail, _ = march_orbit(
-        coef, t, dts, T, float(y[0]), float(y[1]), steps == "grid", kind,
-        float(gain), float(tol), float(period_tol), int(max_cycles), int(max_steps_per_cycle),
-        EPS_LIMIT, *table)
+        coef, t, dts, T, float(y[0]), float(y[1]), steps == "grid",
+        K.Mobility(kind, float(gain), *table), float(tol), float(period_tol), int(max_cycles),
+        int(max_steps_per_cycle), EPS_LIMIT)
     if status == K.BUDGET:
         raise ConvergenceError(
             f"journal orbit: step budget ({max_steps_per_cycle} per cycle) exhausted at "

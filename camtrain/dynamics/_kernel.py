@@ -9,11 +9,13 @@ cam contact and valve seat of :mod:`camtrain.dynamics.train`:
   crossing of its indicator psi is located by regula falsi (Illinois) on sub-steps, the step is
   split there, the acceleration restarted from the equilibrium with the new contact state, and the
   rest of the step marched with it.
-* ``central_difference_march``: Teodorescu et al. (2005) eq. 17, explicit, velocity by the
-  backward difference (l' = (l_n - l_(n-1)) / dt, as the source); conditionally stable (the
-  caller guards the step).
+* ``central_difference_march`` (:mod:`._explicit`): Teodorescu et al. (2005) eq. 17, explicit,
+  velocity by the backward difference (l' = (l_n - l_(n-1)) / dt, as the source); conditionally
+  stable (the caller guards the step).
 
-Inputs b, b' of each contact at the step times (seat: zeros); between steps a cubic Hermite in
+The data come as the typed records of :mod:`camtrain.dynamics.records` (the train's linear
+part, its unilateral contacts, the cam law, the inputs, the state, the samples). Inputs b, b' of
+each contact at the step times (seat: zeros); between steps a cubic Hermite in
 time. The cam contact's spring is linear (``law`` 0) or a Hertz line contact (``law`` 1, the
 relation of :mod:`camtrain.dynamics.contact_law`, constants ``hz``, the cam's radius of
 curvature ``rad`` and load ratio ``rat`` at the step times, linear between them): its force
@@ -24,6 +26,8 @@ speed delta'. Only this module imports numba.
 """
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numpy as np
 from numba import njit
 
@@ -31,6 +35,9 @@ from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
 MAX_SWITCHES = 8
+
+#: work arrays of a Newmark trial step: predictor (pu, pv), right-hand side, A^-1 e_cam
+_Work = namedtuple("_Work", "pu pv rhs z")
 
 
 @njit(cache=True)
@@ -120,28 +127,31 @@ def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad, rat):
+def _accel(tr, uni, cl, inp, act, u, v, n, tau, a):
     """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state."""
+    m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
+    b, bd, dt = inp.b, inp.bd, inp.dt
     size = m.size
     for i in range(size):
         s = f0[i]
         for q in range(size):
             s -= K[i, q] * u[q] + C[i, q] * v[q]
         a[i] = s
-    r1, ratio = _geom(rad, rat, n, tau, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau, dt)
     for j in range(node.size):
         if act[j]:
             bj, bdj = _input(b, bd, j, n, tau, dt)
-            a[node[j]] += _spring(j, bj - u[node[j]] + off[j], k, law, hz, r1, ratio) \
-                + c[j] * (bdj - v[node[j]])
+            a[node[j]] += _spring(j, bj - u[node[j]] + uni.off[j], uni.k, cl.law, cl.hz, r1,
+                                  ratio) + uni.c[j] * (bdj - v[node[j]])
     for i in range(size):
         a[i] /= m[i]
 
 
 @njit(cache=True)
-def _matrix(m, K, C, node, k, c, act, h, law):
+def _matrix(tr, uni, act, h, law):
     """M + h^2/4 K + h/2 C with the active contacts (a Hertz cam contact's spring is not in
     it: its force is solved for separately)."""
+    m, K, C, node, k, c = tr.m, tr.K, tr.C, tr.node, uni.k, uni.c
     size = m.size
     A = np.empty((size, size))
     for i in range(size):
@@ -157,11 +167,15 @@ def _matrix(m, K, C, node, k, c, act, h, law):
 
 
 @njit(cache=True)
-def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv, u1, v1, a1,
-           pu, pv, rhs, law, hz, rad, rat, z):
-    """One Newmark step of length h from time tau of step n, contact state fixed (pu, pv, rhs,
-    z: work arrays). A Hertz cam contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving
-    F = F_hertz(delta(a1)), delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
+def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
+    """One Newmark step of length h from time tau of step n, contact state fixed: the end
+    state into ``out`` (u1, v1, a1), ``work`` (pu, pv, rhs, z) its work arrays. A Hertz cam
+    contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving F = F_hertz(delta(a1)),
+    delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
+    u1, v1, a1 = out
+    pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
+    m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
+    k, c, off = uni.k, uni.c, uni.off
     size = m.size
     for i in range(size):
         pu[i] = u[i] + h * v[i] + 0.25 * h * h * a[i]
@@ -171,10 +185,10 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
         for q in range(size):
             s -= K[i, q] * pu[q] + C[i, q] * pv[q]
         rhs[i] = s
-    hertz = law == 1 and act[0]
+    hertz = cl.law == 1 and act[0]
     for j in range(node.size):
         if act[j]:
-            bj, bdj = _input(b, bd, j, n, tau + h, dt)
+            bj, bdj = _input(inp.b, inp.bd, j, n, tau + h, inp.dt)
             i = node[j]
             if j == 0 and hertz:
                 rhs[i] += c[j] * (bdj - pv[i])
@@ -190,7 +204,7 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             for i in range(size):
                 z[i] = Ainv[i, node[0]]
     else:
-        A = _matrix(m, K, C, node, k, c, act, h, law)
+        A = _matrix(tr, uni, act, h, cl.law)
         a1[:] = np.linalg.solve(A, rhs)
         if hertz:
             z[:] = 0.0
@@ -198,10 +212,10 @@ def _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ain
             z[:] = np.linalg.solve(A, z.copy())
     if hertz:
         i = node[0]
-        r1, ratio = _geom(rad, rat, n, tau + h, dt)
-        bj, bdj = _input(b, bd, 0, n, tau + h, dt)
+        r1, ratio = _geom(cl.rad, cl.rat, n, tau + h, inp.dt)
+        bj, bdj = _input(inp.b, inp.bd, 0, n, tau + h, inp.dt)
         target = bj - pu[i] - 0.25 * h * h * a1[i] + off[0]
-        f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, hz, k[0] * max(target, 0.0))
+        f = _hz_solve(target, 0.25 * h * h * z[i], r1, ratio, cl.hz, k[0] * max(target, 0.0))
         if target <= 0.0:
             # compressed by less than nothing: the linear stand-in (the indicator opens it)
             f = k[0] * target / (1.0 + 0.25 * h * h * z[i] * k[0])
@@ -222,40 +236,101 @@ def _state_index(act):
 
 
 @njit(cache=True)
-def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a, act,
-                  out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0, law, hz, rad, rat):
-    """March len(b[0]) - 1 steps; state (u, v, a, act) updated in place.
+def _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h):
+    """The crossing of contact ``first``'s indicator in (0, h) by Illinois regula falsi, the
+    state at it in ``sub`` (us, vs, as); returns the fraction of the step."""
+    u, v, a, act = st.u, st.v, st.a, st.act
+    node, k, c, off, law, hz, dt = tr.node, uni.k, uni.c, uni.off, cl.law, cl.hz, inp.dt
+    empty = np.empty((0, 0))
+    lo, hi = 0.0, 1.0
+    level = 0.0 if act[first] else tr.thr[first]
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau, dt)
+    plo = _psi(u, v, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau + h, dt)
+    r1, ratio = _geom(cl.rad, cl.rat, n, tau + h, dt)
+    phi = _psi(end[0], end[1], first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
+    x = alpha
+    side = 0
+    for _ in range(30):
+        _trial(tr, uni, cl, inp, act, u, v, a, n, tau, x * h, empty, sub, work)
+        bj, bdj = _input(inp.b, inp.bd, first, n, tau + x * h, dt)
+        r1, ratio = _geom(cl.rad, cl.rat, n, tau + x * h, dt)
+        px = _psi(sub[0], sub[1], first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
+            - level
+        if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
+            break
+        lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
+        x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
+    return x
+
+
+@njit(cache=True)
+def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
+    """Contact ``first`` switched at time tau into step n: its event recorded, the
+    acceleration restarted from the equilibrium. Returns the events so far."""
+    closing = not st.act[first]
+    st.act[first] = closing
+    bj, bdj = _input(inp.b, inp.bd, first, n, tau, inp.dt)
+    rate = bdj - st.v[tr.node[first]]
+    if nev < out.ev_t.size:
+        out.ev_t[nev] = inp.t0 + n * inp.dt + tau
+        out.ev_kind[nev] = 2 * first + (1 if closing else 0)
+        out.ev_rate[nev] = rate
+    _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a)
+    return nev + 1
+
+
+@njit(cache=True)
+def _sample(tr, uni, cl, inp, st, out, n):
+    """The state and contact forces at the end of step n into the samples."""
+    r = (n + 1) // inp.stride - 1
+    out.u[:, r] = st.u
+    out.v[:, r] = st.v
+    out.a[:, r] = st.a
+    r1, ratio = _geom(cl.rad, cl.rat, n + 1, 0.0, inp.dt)
+    b, bd, node = inp.b, inp.bd, tr.node
+    for j in range(node.size):
+        if st.act[j]:
+            out.f[j, r] = _spring(j, b[j, n + 1] - st.u[node[j]] + uni.off[j], uni.k, cl.law,
+                                  cl.hz, r1, ratio) + uni.c[j] * (bd[j, n + 1] - st.v[node[j]])
+        else:
+            out.f[j, r] = 0.0
+
+
+@njit(cache=True)
+def newmark_march(tr, uni, cl, inp, st, out):
+    """March len(b[0]) - 1 steps; state ``st`` (u, v, a, act) updated in place, samples and
+    events into ``out``.
 
     An open contact closes when psi exceeds ``thr`` (a force far below any load of interest):
     without it a zero-lash contact at rest on the base circle would switch on every round-off
-    ripple of the ringing train.
+    ripple of the ringing train. (The step's hot path calls the compiled helpers with plain
+    arrays: a record passed to a small function called several times a step costs more than
+    its arithmetic.)
 
     Returns (events recorded, cam work [J] = integral of F_cam b' dt, switches cut short).
     """
-    size = m.size
-    nu = node.size
-    nsteps = b.shape[1] - 1
-    inverses = np.empty((1 << nu, size, size))
+    node, thr, k, c, off = tr.node, tr.thr, uni.k, uni.c, uni.off
+    law, hz, rad, rat = cl.law, cl.hz, cl.rad, cl.rat
+    b, bd, dt = inp.b, inp.bd, inp.dt
+    u, v, a, act = st.u, st.v, st.a, st.act
+    size, nu = tr.m.size, node.size
+    inverses = np.empty((1 << nu, size, size))   # the full step, once per contact state
     state = np.zeros(nu, dtype=np.bool_)
     for s_idx in range(1 << nu):
         for j in range(nu):
             state[j] = (s_idx >> j) & 1
-        inverses[s_idx] = np.linalg.inv(_matrix(m, K, C, node, k, c, state, dt, law))
+        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
     empty = np.empty((0, 0))
-    u1 = np.empty(size)
-    v1 = np.empty(size)
-    a1 = np.empty(size)
-    us = np.empty(size)
-    vs = np.empty(size)
-    as_ = np.empty(size)
-    pu = np.empty(size)
-    pv = np.empty(size)
-    rhs = np.empty(size)
-    z = np.empty(size)
+    u1, v1, a1 = np.empty(size), np.empty(size), np.empty(size)
+    end = (u1, v1, a1)
+    sub = (np.empty(size), np.empty(size), np.empty(size))
+    work = _Work(np.empty(size), np.empty(size), np.empty(size), np.empty(size))
     nev = 0
-    work = 0.0
+    energy = 0.0
     cut = 0
-    for n in range(nsteps):
+    for n in range(b.shape[1] - 1):
         tau = 0.0
         switches = 0
         while True:
@@ -263,8 +338,7 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
             if h <= 0.0:
                 break
             Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
-            _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, h, dt, Ainv,
-                   u1, v1, a1, pu, pv, rhs, law, hz, rad, rat, z)
+            _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, end, work)
             # which contact changes state first inside the (sub)step?
             first = -1
             alpha = 2.0
@@ -284,69 +358,29 @@ def newmark_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, v, a,
                     frac = min(max(frac, 0.0), 1.0)
                     if frac < alpha:
                         alpha, first = frac, j
-            if first < 0 or switches >= MAX_SWITCHES:
-                if first >= 0:
-                    cut += 1
-                # accept the (sub)step
-                work = _cam_work(work, u, v, u1, v1, act, node, k, c, off, b, bd, n, tau, h,
-                                 dt, law, hz, rad, rat)
-                u[:] = u1
-                v[:] = v1
+            stop = first < 0 or switches >= MAX_SWITCHES
+            if stop:
+                cut += 1 if first >= 0 else 0
+                hx, to = h, end       # accept the (sub)step
+            else:
+                hx, to = _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau,
+                                 h) * h, sub
+            # the cam's work over the (sub)step, trapezoid (the two halves added in turn)
+            energy += _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad,
+                                 rat) * 0.5 * hx
+            energy += _cam_power(to[0], to[1], act, node, k, c, off, b, bd, n, tau + hx, dt,
+                                 law, hz, rad, rat) * 0.5 * hx
+            u[:] = to[0]
+            v[:] = to[1]
+            if stop:
                 a[:] = a1
                 break
-            # locate the crossing of psi_first in (0, h) by Illinois regula falsi
-            lo, hi = 0.0, 1.0
-            level = 0.0 if act[first] else thr[first]
-            bj, bdj = _input(b, bd, first, n, tau, dt)
-            r1, ratio = _geom(rad, rat, n, tau, dt)
-            plo = _psi(u, v, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
-            bj, bdj = _input(b, bd, first, n, tau + h, dt)
-            r1, ratio = _geom(rad, rat, n, tau + h, dt)
-            phi = _psi(u1, v1, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] - level
-            x = alpha
-            side = 0
-            for _ in range(30):
-                _trial(m, K, C, f0, node, k, c, off, act, u, v, a, b, bd, n, tau, x * h, dt,
-                       empty, us, vs, as_, pu, pv, rhs, law, hz, rad, rat, z)
-                bj, bdj = _input(b, bd, first, n, tau + x * h, dt)
-                r1, ratio = _geom(rad, rat, n, tau + x * h, dt)
-                px = _psi(us, vs, first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
-                    - level
-                if abs(px) <= 1e-12 * (abs(plo) + abs(phi)) or hi - lo < 1e-10:
-                    break
-                lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
-                x = false_position(lo, plo, hi, phi) if plo != phi else 0.5 * (lo + hi)
-            hx = x * h
-            work = _cam_work(work, u, v, us, vs, act, node, k, c, off, b, bd, n, tau, hx, dt,
-                             law, hz, rad, rat)
-            u[:] = us
-            v[:] = vs
             tau += hx
-            closing = not act[first]
-            act[first] = closing
-            bj, bdj = _input(b, bd, first, n, tau, dt)
-            rate = bdj - v[node[first]]
-            if nev < ev_t.size:
-                ev_t[nev] = t0 + n * dt + tau
-                ev_kind[nev] = 2 * first + (1 if closing else 0)
-                ev_rate[nev] = rate
-            nev += 1
-            _accel(m, K, C, f0, node, k, c, off, act, u, v, b, bd, n, tau, dt, a, law, hz, rad,
-                   rat)
+            nev = _switch(tr, uni, cl, inp, st, out, nev, first, n, tau)
             switches += 1
-        if (n + 1) % stride == 0:
-            r = (n + 1) // stride - 1
-            out_u[:, r] = u
-            out_v[:, r] = v
-            out_a[:, r] = a
-            r1, ratio = _geom(rad, rat, n + 1, 0.0, dt)
-            for j in range(nu):
-                if act[j]:
-                    out_f[j, r] = _spring(j, b[j, n + 1] - u[node[j]] + off[j], k, law, hz, r1,
-                                          ratio) + c[j] * (bd[j, n + 1] - v[node[j]])
-                else:
-                    out_f[j, r] = 0.0
-    return nev, work, cut
+        if (n + 1) % inp.stride == 0:
+            _sample(tr, uni, cl, inp, st, out, n)
+    return nev, energy, cut
 
 
 @njit(cache=True)
@@ -364,78 +398,4 @@ def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat)
     return (g + c[0] * (bdj - v[node[0]])) * bdj
 
 
-@njit(cache=True)
-def _cam_work(work, u0, v0, u1, v1, act, node, k, c, off, b, bd, n, tau, h, dt, law, hz, rad,
-              rat):
-    """``work`` plus the cam's work over a (sub)step of length h by the trapezoid rule (the
-    two halves added in turn, as the march always has)."""
-    work += _cam_power(u0, v0, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat) \
-        * 0.5 * h
-    work += _cam_power(u1, v1, act, node, k, c, off, b, bd, n, tau + h, dt, law, hz, rad, rat) \
-        * 0.5 * h
-    return work
-
-
-@njit(cache=True)
-def central_difference_march(m, K, C, f0, node, k, c, off, thr, b, bd, dt, stride, u, u_prev, act,
-                             psi_prev, out_u, out_v, out_a, out_f, ev_t, ev_kind, ev_rate, t0,
-                             law, hz, rad, rat):
-    """Teodorescu eq. 17: u_(n+1) = 2 u_n - u_(n-1) + dt^2 a_n, v_n = (u_n - u_(n-1))/dt.
-
-    Contacts are evaluated explicitly at u_n; a change of state is dated by linear interpolation
-    of psi between the steps. State (u, u_prev, act, psi_prev) updated in place; the batch
-    evaluates steps 0..nsteps (step nsteps is step 0 of the next batch, evaluated again there).
-    Returns (events, cam work [J], 0).
-    """
-    size = m.size
-    nu = node.size
-    nsteps = b.shape[1] - 1
-    v = np.empty(size)
-    a = np.empty(size)
-    f = np.empty(nu)
-    nev = 0
-    work = 0.0
-    for n in range(nsteps + 1):
-        for i in range(size):
-            v[i] = (u[i] - u_prev[i]) / dt
-        for i in range(size):
-            s = f0[i]
-            for q in range(size):
-                s -= K[i, q] * u[q] + C[i, q] * v[q]
-            a[i] = s
-        r1, ratio = _geom(rad, rat, n, 0.0, dt)
-        for j in range(nu):
-            p, fj, rate = _psi(u, v, j, node, k, c, off, b[j, n], bd[j, n], law, hz, r1, ratio)
-            on = p > (0.0 if act[j] else thr[j])
-            if on != act[j]:
-                # date the crossing between the previous step and this one (linear in psi)
-                frac = psi_prev[j] / (psi_prev[j] - p) if psi_prev[j] != p else 1.0
-                if nev < ev_t.size:
-                    ev_t[nev] = t0 + (n - 1 + min(max(frac, 0.0), 1.0)) * dt
-                    ev_kind[nev] = 2 * j + (1 if on else 0)
-                    ev_rate[nev] = rate
-                nev += 1
-                act[j] = on
-            psi_prev[j] = p
-            f[j] = fj if on else 0.0
-            a[node[j]] += f[j]
-        for i in range(size):
-            a[i] /= m[i]
-        if n > 0:
-            work += 0.5 * dt * f[0] * bd[0, n]
-            if n % stride == 0:
-                r = n // stride - 1
-                out_u[:, r] = u
-                out_v[:, r] = v
-                out_a[:, r] = a
-                out_f[:, r] = f
-        if n < nsteps:
-            work += 0.5 * dt * f[0] * bd[0, n]
-            for i in range(size):
-                nxt = 2.0 * u[i] - u_prev[i] + dt * dt * a[i]
-                u_prev[i] = u[i]
-                u[i] = nxt
-    return nev, work, 0
-
-
-announce("valve-train dynamics", (newmark_march, central_difference_march))
+announce("valve-train dynamics", (newmark_march,))

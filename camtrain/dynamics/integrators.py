@@ -292,27 +292,29 @@ class _FixedStep:
         self.thr = np.full(2, CLOSE_THRESHOLD * max(model.spring_preload, 1.0))
 
     def revolution(self):
+        from camtrain.dynamics.records import CamLaw, Inputs, Marched, Train, TrainState, unilateral
+
         m = self.model
         grid = (self.inputs.shape[1] - 1) // self.stride
         n = m.size
-        out_u, out_v, out_a = np.empty((n, grid)), np.empty((n, grid)), np.empty((n, grid))
-        out_f = np.empty((2, grid))
         cap = 10_000
-        ev_t, ev_k, ev_r = np.empty(cap), np.empty(cap, dtype=np.int64), np.empty(cap)
-        args = (m.mass, m.stiffness, m.damping, m.preload, m.uni_node, m.uni_k, m.uni_c,
-                m.uni_offset, self.thr, self.inputs, self.rates, self.dt, self.stride)
-        if self.explicit:
-            nev, work, cut = self.kernel.central_difference_march(
-                *args, self.u, self.u_prev, self.act, self.psi_prev, out_u, out_v, out_a, out_f,
-                ev_t, ev_k, ev_r, 0.0, *self.geometry)
+        out = Marched(np.empty((n, grid)), np.empty((n, grid)), np.empty((n, grid)),
+                      np.empty((2, grid)), np.empty(cap), np.empty(cap, dtype=np.int64),
+                      np.empty(cap))
+        train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr)
+        inputs = Inputs(self.inputs, self.rates, self.dt, self.stride, 0.0)
+        if self.explicit:   # v and a: the explicit scheme's work arrays
+            state = TrainState(self.u, np.empty(n), np.empty(n), self.act, self.u_prev,
+                               self.psi_prev)
+            from camtrain.dynamics._explicit import central_difference_march as march
         else:
-            nev, work, cut = self.kernel.newmark_march(
-                *args, self.u, self.v, self.a, self.act, out_u, out_v, out_a, out_f, ev_t, ev_k,
-                ev_r, 0.0, *self.geometry)
+            state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev)
+            march = self.kernel.newmark_march
+        nev, work, cut = march(train, unilateral(m), CamLaw(*self.geometry), inputs, state, out)
         nev = min(nev, cap)
-        events = list(zip(ev_t[:nev].tolist(), ev_k[:nev].tolist(), ev_r[:nev].tolist(),
-                          strict=True))
-        return out_u, out_v, out_a, out_f, events, work, cut
+        events = list(zip(out.ev_t[:nev].tolist(), out.ev_kind[:nev].tolist(),
+                          out.ev_rate[:nev].tolist(), strict=True))
+        return out.u, out.v, out.a, out.f, events, work, cut
 
 
 def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:
@@ -341,17 +343,20 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     v = np.zeros(n)
     a = -(model.stiffness @ u) / model.mass
     act = np.zeros(2, dtype=np.bool_)
-    out_u, out_v, out_a = np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps))
-    out_f = np.empty((2, steps))
-    ev_t, ev_k, ev_r = np.empty(1), np.empty(1, dtype=np.int64), np.empty(1)
-    args = (model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node, model.uni_k,
-            model.uni_c, model.uni_offset, np.zeros(2), inputs, inputs, dt, 1)
-    linear = (0, np.zeros(5), np.zeros(0), np.zeros(0))
+    from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
+
+    out = Marched(np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps)),
+                  np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1))
+    train = Train(model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node,
+                  np.zeros(2))
+    drive = Inputs(inputs, inputs, dt, 1, 0.0)
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
-        _kernel.central_difference_march(*args, u, u_prev, act, np.zeros(2), out_u, out_v,
-                                         out_a, out_f, ev_t, ev_k, ev_r, 0.0, *linear)
+        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2))
+        from camtrain.dynamics._explicit import central_difference_march
+
+        central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
-        _kernel.newmark_march(*args, u, v, a, act, out_u, out_v, out_a, out_f, ev_t, ev_k, ev_r,
-                              0.0, *linear)
-    return out_u
+        state = TrainState(u, v, a, act, u, np.zeros(2))
+        _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
+    return out.u

@@ -193,6 +193,47 @@ def _add_link(k, c, i, j, kk, cc):
             mat[j, i] -= v
 
 
+def _given_damping(damping) -> dict[str, float]:
+    """The viscous coefficients given as values, by element (contact, link, seat, spring)."""
+    given = dict(damping or {})
+    unknown = set(given) - {"contact", "link", "seat", "spring"}
+    if unknown:
+        raise ValueError(f"unknown damping element(s) {sorted(unknown)}")
+    return given
+
+
+def _spring_chain(k, c, elements, valve, chain, element):
+    """The valve spring as a chain of ``element`` = (stiffness, damping, spring mass, count)
+    links from the valve node through the ``chain`` nodes to ground."""
+    k_el, c_el, spring_mass, count = element
+    order = (valve,) + chain
+    for a, b in zip(order, order[1:] + (-1,), strict=True):
+        _add_link(k, c, a, b, k_el, c_el)
+    elements.append(Element(f"valve spring element (1/{count} of the spring)", k_el,
+                            spring_mass / count / 2.0))
+
+
+def _adjuster_squeeze(adjuster_load: float, cam_law, cam_k: float) -> float:
+    """The cam contact's compression at rest under a lash adjuster's load (0 without): the
+    adjuster takes up the slack, no link is strained, every node sits at u = 0."""
+    if not adjuster_load:
+        return 0.0
+    return cam_law.at_rest(adjuster_load) if cam_law is not None else adjuster_load / cam_k
+
+
+def _preload(n: int, follower, valve: int, spring_preload: float, adjuster_load: float):
+    """The constant forces: the spring's preload on the valve node; a lash adjuster's load
+    pushes the follower node (None: there is none) onto the cam and the valve off its seat."""
+    preload = np.zeros(n)
+    preload[valve] = -spring_preload
+    if adjuster_load:
+        if follower is None:
+            raise ValueError("a lash adjuster load needs a follower mass (a follower node)")
+        preload[follower] -= adjuster_load
+        preload[valve] += adjuster_load
+    return preload
+
+
 def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffness: float,
                    spring_rate: float, spring_preload: float, follower_mass: float = 0.0,
                    follower_stiffness: float = math.inf,
@@ -224,10 +265,7 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     node) as its ``k_series``.
     """
     links = dict(links or {})
-    given = dict(damping or {})
-    unknown = set(given) - {"contact", "link", "seat", "spring"}
-    if unknown:
-        raise ValueError(f"unknown damping element(s) {sorted(unknown)}")
+    given = _given_damping(damping)
     has_follower = follower_mass > 0.0
     nodes = 2 if has_follower else 1
     interior = np.zeros(0)
@@ -272,23 +310,14 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     chain: tuple[int, ...] = ()
     if spring_elements > 0:
         chain = tuple(range(nodes, n))
-        order = (valve,) + chain
-        for a, b in zip(order, order[1:] + (-1,), strict=True):
-            _add_link(k, c, a, b, k_el, c_el)
-        elements.append(Element(f"valve spring element (1/{spring_elements} of the spring)",
-                                k_el, spring_mass / spring_elements / 2.0))
+        _spring_chain(k, c, elements, valve, chain, (k_el, c_el, spring_mass, spring_elements))
     else:
         _add_link(k, c, valve, -1, spring_rate, given.get(
             "spring", damping_from_ratio(spring_damping_ratio, spring_rate, mass[valve])))
         elements.append(Element("valve spring", spring_rate, mass[valve]))
     elements.append(Element("valve seat", seat_stiffness, mass[valve]))
-    preload = np.zeros(n)
-    preload[valve] = -spring_preload
-    if adjuster_load:
-        if not has_follower:
-            raise ValueError("a lash adjuster load needs a follower mass (a follower node)")
-        preload[follower] -= adjuster_load
-        preload[valve] += adjuster_load
+    preload = _preload(n, follower if has_follower else None, valve, spring_preload,
+                       adjuster_load)
     seat_load = spring_preload - (adjuster_load if has_follower else 0.0)
     zs = damping_ratio if seat_damping_ratio is None else seat_damping_ratio
     uni_node = np.array([follower, valve], dtype=np.int64)
@@ -296,12 +325,7 @@ def assemble_train(*, valve_mass: float, contact_stiffness: float, seat_stiffnes
     uni_c = np.array([given.get("contact", damping_from_ratio(damping_ratio, cam_k,
                                                               mass[follower])),
                       given.get("seat", damping_from_ratio(zs, seat_stiffness, mass[valve]))])
-    # an adjuster takes up the slack: at rest the contact is compressed by its load, no link is
-    # strained, every node sits at u = 0
-    squeeze = 0.0
-    if has_follower and adjuster_load:
-        squeeze = (cam_law.at_rest(adjuster_load) if cam_law is not None
-                   else adjuster_load / cam_k)
+    squeeze = _adjuster_squeeze(adjuster_load if has_follower else 0.0, cam_law, cam_k)
     uni_offset = np.array([-lash + squeeze, seat_load / seat_stiffness])
     return TrainModel(mass=mass, stiffness=k, damping=c, preload=preload, uni_node=uni_node,
                       uni_k=uni_k, uni_c=uni_c, uni_offset=uni_offset, follower=follower,

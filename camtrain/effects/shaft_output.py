@@ -92,3 +92,55 @@ def add_shaft(res, shaft, answer, theta, orders: int, omega: float) -> None:
         if near:
             res.warn(f"camshaft: load order(s) {near} within {NEAR_RESONANCE:.0%} of the first "
                      f"{name} natural frequency ({w / (2 * math.pi):.0f} Hz): resonant shaft")
+
+
+def add_coupled(res, problem, r, orders: int) -> None:
+    """The coupled camshaft's outputs (:mod:`camtrain.coupled`: ``problem`` and its result
+    ``r``): the shaft's; every lobe's coupled load and valve acceleration with their orders;
+    the summed load; the solver's convergence; what only some solvers give (missed staggered
+    steps, the marched film, the gap to a monolithic start, every lobe's separations)."""
+    import numpy as np
+
+    add_shaft(res, problem.shaft, r.shaft, problem.theta, orders, problem.omega)
+    lobes = [f"lobe_{j + 1}" for j in range(len(r.loads))]
+    for j, (comp, load) in enumerate(zip(lobes, r.loads, strict=True)):
+        i, k = int(np.argmax(load)), f"lobe {j + 1}"
+        res.add_columns([("load", load, "N", f"{k}: contact load of its elastic train on the "
+                          f"elastic shaft ({r.solver})"), ("valve_acceleration",
+                         r.valve_acceleration[j], "m/s^2", f"{k}: valve acceleration")], comp)
+        res.add_metric("load_max", load[i], "N", f"{k}: largest contact load", problem.theta[i],
+                       component=comp)
+    res.add_column("camshaft_load_sum", np.sum(r.loads, axis=0), "N",
+                   "sum of the lobes' contact loads")
+    add_orders(res, "load", dict(zip(lobes, r.loads, strict=True)), "N", "contact load", orders)
+    add_orders(res, "valve_acceleration", dict(zip(lobes, r.valve_acceleration, strict=True)),
+               "m/s^2", "valve acceleration", orders)
+    res.add_metrics([("coupling_passes", r.passes, "-", f"passes of the {r.solver}"),
+                     ("coupling_change", r.change, "-", "relative change between the last two "
+                      f"passes of the {r.solver}")])
+    if not r.converged:
+        res.warn(f"camshaft coupling: no periodic state after {r.passes} passes of the "
+                 f"{r.solver} (last change {r.change:.3g} > {problem.coupling.tolerance:g}); "
+                 "the results are the last pass's")
+    if r.missed is not None:
+        res.add_metric("coupling_step_misses", r.missed, "-", "steps of the last revolution "
+                       "whose staggered passes did not agree with their predicted loads")
+    if r.missed:
+        res.warn(f"camshaft coupling: {r.missed} steps of the staggered march kept a load that "
+                 f"differs from the shaft's after {problem.coupling.iterations} passes (give "
+                 "more coupling_iterations, or a smaller step)")
+    for j, load in enumerate(r.loads if r.film is not None else ()):
+        res.add_column("film", np.where(load > 0.0, r.film[j], np.nan), "m", f"lobe {j + 1}: "
+                       "level-1 squeeze film of its cam contact, marched with the coupled trains "
+                       "at every step (NaN: out of contact)", component=f"lobe_{j + 1}")
+    if r.start_gap is not None:
+        res.add_metric("coupling_start_gap", r.start_gap, "-", "largest difference of any "
+                       "lobe's load between the waveform iteration and the monolithic march it "
+                       "started from, over the largest marched load")
+    for j, angles in enumerate(r.separations or ()):
+        res.add_metric("separations", len(angles), "-", f"lobe {j + 1}: losses of the cam "
+                       "contact while the valve is in flight (not its landing on the seat)",
+                       component=lobes[j])
+        for at in angles:
+            res.add_event("contact_loss", at, f"lobe {j + 1}: the cam loses the follower",
+                          component=lobes[j])

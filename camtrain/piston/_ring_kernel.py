@@ -8,6 +8,7 @@ plain Python that took ~8 s per ring-cycle, compiled it takes milliseconds.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -23,6 +24,14 @@ FILM_SCALE = 1e-9
 #: Bounds of the film march [ln m]: 0.1 nm (a dry ring, all boundary) to 1 mm.
 LOG_H_MIN = math.log(FILM_FLOOR)
 LOG_H_MAX = math.log(1e-3)
+
+
+#: the ring's geometry as the compiled march takes it: axial height [m], crown radius [m],
+#: crown offset x_min [m], tension [N/m], whether the outlet film is striated (Yang's rule)
+RingGeometry = namedtuple("RingGeometry", "height radius x_min tension striated")
+#: the self-fed ring's supply: per angle the angles (own_from, own_to; -1: not self-fed) and
+#: weight of the layer it left itself, and that layer before the march has been there [m]
+OwnFeed = namedtuple("OwnFeed", "own_from own_to own_weight own_start")
 
 
 @njit(cache=True)
@@ -346,16 +355,19 @@ def _own_layer(f, U, u_dead):
 
 
 @njit(cache=True)
-def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, own_from, own_to, own_weight,
-          own_start, height, radius, x_min, tension, striated, tolerance, max_cycles):
+def march(h_start, dth, w, trapezoid, U, eta, pa, pb, layer, feed, geometry, tolerance,
+          max_cycles):
     """Cycles of the film march until the start film repeats; returns (h, g, supply, cycles,
-    change), ``supply`` the layer each angle's inlet was given on the last cycle.
+    change), ``supply`` the layer each angle's inlet was given on the last cycle. ``geometry``:
+    the ring's :data:`RingGeometry`; ``feed``: its :data:`OwnFeed`.
 
     Where ``own_from[i] >= 0`` the ring is fed by the layer it left itself on its previous
     stroke at the same liner position (Yang eq. 5.36 and his dead-centre assumption): the layer
     interpolated between angles ``own_from`` and ``own_to`` of this march (``own_start`` before
     the march has been there). Elsewhere ``layer`` (< 0: flooded).
     """
+    own_from, own_to, own_weight, own_start = feed
+    height, radius, x_min, tension, striated = geometry
     n = U.size
     h = np.empty(n)
     g = np.empty(n)

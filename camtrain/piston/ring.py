@@ -141,10 +141,11 @@ def march_ring(ring: Ring, theta, U, eta, p_above, p_below, omega: float, *,
         own_weight = np.ascontiguousarray(own_feed[2], dtype=float)
     start = np.full(n, -1.0) if own_start is None else np.ascontiguousarray(
         np.nan_to_num(np.asarray(own_start, float), nan=-1.0))
-    geometry = (ring.height, ring.radius, ring.x_min, ring.tension, True)
+    geometry = K.RingGeometry(ring.height, ring.radius, ring.x_min, ring.tension, True)
     h, g, supply, cycles, change = K.march(h_start, dth, w, scheme == "trapezoid", U, eta, p_above,
-                                        p_below, lay, own_from, own_to, own_weight, start,
-                                        *geometry, tolerance, max_cycles)
+                                        p_below, lay, K.OwnFeed(own_from, own_to, own_weight,
+                                                                start), geometry, tolerance,
+                                        max_cycles)
     u_dead = K.DEAD_CENTRE * float(np.max(np.abs(U)))
     load, friction, flow, inflow, layer_out = (np.empty(n) for _ in range(5))
     for i in range(n):

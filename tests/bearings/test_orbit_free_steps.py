@@ -103,6 +103,7 @@ def test_a_settled_cycle_repeats_exactly():
 def _steps(n, steps, tol=1e-7, interpolation="linear"):
     """Accepted steps in the last cycle of the compiled march (exact mobility)."""
     from camtrain.bearings import _orbit_march as M
+    from camtrain.bearings._orbit_kernel import EXACT, Mobility
 
     fx, fy, th = _diagram(n)
     t = th / W
@@ -110,8 +111,9 @@ def _steps(n, steps, tol=1e-7, interpolation="linear"):
     coef = load_coefficients(t, T, fx, fy, np.full(n, 0.5 * W), interpolation)
     dts = np.append(np.diff(t), T - t[-1])
     table = (np.zeros(2), np.zeros((2, 1)), np.zeros((2, 1)))
-    out = M.march_orbit(coef, t, dts, T, 0.3, -0.3, steps == "grid", 0,
-                        1.0 / BRG.stiffness, tol, 1e-5, 20, 200_000, 1 - 1e-12, *table)
+    out = M.march_orbit(coef, t, dts, T, 0.3, -0.3, steps == "grid",
+                        Mobility(EXACT, 1.0 / BRG.stiffness, *table), tol, 1e-5, 20, 200_000,
+                        1 - 1e-12)
     return out[7]
 
 

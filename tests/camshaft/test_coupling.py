@@ -1,11 +1,11 @@
-"""The waveform shaft/train iteration (camtrain.dynamics.coupling) on problems with a known
+"""The waveform shaft/train iteration (camtrain.coupled.relaxation) on problems with a known
 answer: a linear interface whose plain iteration diverges, and the periodic derivatives."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from camtrain.dynamics.coupling import periodic_derivatives, waveform_relaxation
+from camtrain.coupled.relaxation import periodic_derivatives, waveform_relaxation
 
 RNG = np.random.default_rng(7)
 N = 24

@@ -1,4 +1,4 @@
-"""The waveform coupling's interface Jacobian (camtrain.dynamics.interface): the shaft's lobe
+"""The waveform coupling's interface Jacobian (camtrain.coupled.interface): the shaft's lobe
 receptance against its periodic harmonic solve, the train's dynamic contact stiffness against
 its static limit, and the preconditioned iteration on linear passes with a known answer."""
 from __future__ import annotations
@@ -11,8 +11,8 @@ import pytest
 from camtrain.camshaft.elastic import elastic_shaft
 from camtrain.camshaft.flexible import ShaftSection
 from camtrain.camshaft.flexible_response import bending_response, lobe_receptance
-from camtrain.dynamics.coupling import waveform_relaxation
-from camtrain.dynamics.interface import contact_stiffness, interface_newton
+from camtrain.coupled.interface import contact_stiffness, interface_newton
+from camtrain.coupled.relaxation import waveform_relaxation
 from camtrain.dynamics.train import CAM, SEAT, TrainModel, series
 
 OMEGA = 2 * math.pi * 25.0  # 1500 rpm camshaft

@@ -1,4 +1,4 @@
-"""Friction inside the monolithic march (camtrain.dynamics.monolithic): the coefficient of each
+"""Friction inside the monolithic march (camtrain.coupled.march): the coefficient of each
 contact from its current load at every step (a table over load levels, corrected after every
 revolution by its error at that revolution's loads) and the coefficient on the previous
 revolution's loads (the path of films with a history) reach the same periodic state, the one
@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import camtrain.dynamics.monolithic as monolithic
+import camtrain.coupled.march as monolithic
 from camtrain import api
 from camtrain.deck.load import validate
 from tests.integration_camshaft.test_camshaft_coupled import DECKS, coupled_raw

@@ -1,4 +1,4 @@
-"""The level-1 squeeze film inside the monolithic march (camtrain.dynamics.coupled_film): every
+"""The level-1 squeeze film inside the monolithic march (camtrain.coupled.film): every
 cam contact carries its film as state, marched once per accepted step, and its friction comes
 from its current load and film (docs/camshaft_dynamics.md)."""
 from __future__ import annotations
@@ -10,8 +10,8 @@ import pytest
 
 from camtrain import api
 from camtrain.camshaft import shift_curve
+from camtrain.coupled._film_kernel import film_step
 from camtrain.deck.load import validate
-from camtrain.dynamics._coupled_film_kernel import film_step
 from camtrain.lubrication.squeeze import relaxation_step
 from tests.integration_camshaft.test_camshaft_coupled import DECKS, coupled_raw
 
@@ -51,7 +51,7 @@ def test_without_squeeze_the_per_step_film_is_the_steady_film(monkeypatch):
     march carries equals F of the march's own loads at every loaded grid angle, to round-off
     (1e-12; both evaluate the same power law W^-0.059 of the same load, the march at the step's
     radius and speed, which fall on the grid angles here)."""
-    from camtrain.dynamics import coupled_film
+    from camtrain.coupled import film as coupled_film
 
     build = coupled_film.squeeze_film_model
     models = []
@@ -141,7 +141,7 @@ def test_per_step_film_and_the_lagged_film_law_reach_one_periodic_state(monkeypa
     (its film marched on the grid; the path every film with a history took before). Measured:
     loads within 0.07 / 0.08 % of the peak, twist within 0.02 / 0.03 %, both in 3
     revolutions; held at 0.3 %, as the two friction paths of the steady film."""
-    import camtrain.dynamics.monolithic as monolithic
+    import camtrain.coupled.march as monolithic
 
     def run():
         raw = squeeze_raw(10.0, lobes=slice(None, None, 2))

@@ -180,7 +180,7 @@ def test_hub_load_in_the_march_meets_the_waveform_shaft(monkeypatch):
     left out of the march they differ by 1.8 / 1.9 %. (On four lobes over the whole curve, the
     two lobes next to the pulley differ by 3.2 / 4.2 % of the peak with the hub load and 9.5 /
     10.3 % without; the rest is the waveform exchange on the grid: docs/camshaft_dynamics.md.)"""
-    import camtrain.dynamics.monolithic as monolithic
+    import camtrain.coupled.march as monolithic
 
     def run(solver: str):
         raw = coupled_raw(10.0, solver=solver)

@@ -1,5 +1,5 @@
 """The staggered march of the shaft and the trains (camshaft.flexibility.coupling_solver =
-"staggered"; camtrain.dynamics._coupled_partition): within every time step the shaft under each
+"staggered"; camtrain.coupled._partition): within every time step the shaft under each
 contact's predicted load, then every train with the shaft's lobe motion prescribed. Its only
 difference from the monolithic march is the splitting of the step, so the two must agree as the
 step falls, at the predictor's order (issue: monolithic and staggered within 1 % at a quarter of

@@ -1,7 +1,7 @@
 """Compiled pieces of the level-1 squeeze film inside the monolithic march (numba, cached): one
 implicit-Euler step of the film of every cam contact and the friction coefficient read from a
-table over load, film ratio and cam angle (:mod:`camtrain.dynamics.coupled_film` builds the
-tables; :mod:`._coupled_kernel` calls these once per contact and time step).
+table over load, film ratio and cam angle (:mod:`.film` builds the
+tables; :mod:`._revolution` calls these once per contact and time step).
 
 Teodorescu et al. (2005) eqs. 5-6 written as a relaxation law (docs/transient_film.md,
 :mod:`camtrain.lubrication.squeeze`): dh/dt = -(|u| / 96.775) ln(h / F). The step solves

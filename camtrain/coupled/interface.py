@@ -1,6 +1,6 @@
 """The interface Jacobian of the waveform shaft/train coupling, from the linear parts of both.
 
-One pass of the waveform iteration (:mod:`camtrain.dynamics.coupling`) maps the lobes' motion
+One pass of the waveform iteration (:mod:`camtrain.coupled.relaxation`) maps the lobes' motion
 x to the shaft's motion under the trains' loads, H(x). Where a lobe sits on a lightly damped
 shaft mode, H amplifies the motion there by the contact stiffness times the shaft's dynamic
 compliance, far above 1 (the Zeta shaft at ten times the assumed stiffness: the lobes' local

@@ -1,4 +1,4 @@
-"""The staggered (partitioned) step of the shaft-and-trains march (:mod:`._coupled_step`).
+"""The staggered (partitioned) step of the shaft-and-trains march (:mod:`._step`).
 
 Felippa and Park's serial staggered procedure for coupled systems (Felippa, Park and Farhat,
 "Partitioned analysis of coupled mechanical systems", Comput. Methods Appl. Mech. Engrg. 190,
@@ -34,30 +34,33 @@ def predict_loads(w_prev, w_older, predictor, out):
 
 
 @njit(cache=True)
-def add_shaft_loads(z, w_pred, gxj, gyj, gphij):
+def add_shaft_loads(z, w_pred, at):
     """The predicted contact loads on every lobe's shaft coordinates (x, y, phi) of the
-    five-per-lobe force vector ``z``: -W times the contact's gradient, as the closed contact
-    of the monolithic step pushes the shaft."""
+    five-per-lobe force vector ``z``: -W times the contact's gradient (``at``: every lobe's
+    inputs at the step's end), as the closed contact of the monolithic step pushes the
+    shaft."""
     for j in range(w_pred.size):
-        z[5 * j] -= w_pred[j] * gxj[j]
-        z[5 * j + 1] -= w_pred[j] * gyj[j]
-        z[5 * j + 2] -= w_pred[j] * gphij[j]
+        z[5 * j] -= w_pred[j] * at.gx[j]
+        z[5 * j + 1] -= w_pred[j] * at.gy[j]
+        z[5 * j + 2] -= w_pred[j] * at.gphi[j]
 
 
 @njit(cache=True)
-def add_shaft_forces(f, w_pred, gxj, gyj, gphij, ix, iy, iphi):
+def add_shaft_forces(f, w_pred, at, lay):
     """The same loads added to a full force vector ``f``."""
     for j in range(w_pred.size):
-        f[ix[j]] -= w_pred[j] * gxj[j]
-        f[iy[j]] -= w_pred[j] * gyj[j]
-        f[iphi[j]] -= w_pred[j] * gphij[j]
+        f[lay.ix[j]] -= w_pred[j] * at.gx[j]
+        f[lay.iy[j]] -= w_pred[j] * at.gy[j]
+        f[lay.iphi[j]] -= w_pred[j] * at.gphi[j]
 
 
 @njit(cache=True)
-def prescribed_inputs(z, zd, bj, bdj, gxj, gyj, gphij, ix, iy, iphi, be, bde):
+def prescribed_inputs(z, zd, at, lay, pre):
     """Every train's cam input with its lobe's shaft motion (displacements ``z``, velocities
-    ``zd``) prescribed: b + R (cos a x + sin a y) + l' phi and its rate, so that the train's
-    own step sees the shaft only through its input."""
-    for j in range(bj.size):
-        be[j] = bj[j] + gxj[j] * z[ix[j]] + gyj[j] * z[iy[j]] + gphij[j] * z[iphi[j]]
-        bde[j] = bdj[j] + gxj[j] * zd[ix[j]] + gyj[j] * zd[iy[j]] + gphij[j] * zd[iphi[j]]
+    ``zd``) prescribed, into ``pre.b``, ``pre.bd``: b + R (cos a x + sin a y) + l' phi and its
+    rate, so that the train's own step sees the shaft only through its input."""
+    ix, iy, iphi = lay.ix, lay.iy, lay.iphi
+    for j in range(at.b.size):
+        pre.b[j] = at.b[j] + at.gx[j] * z[ix[j]] + at.gy[j] * z[iy[j]] + at.gphi[j] * z[iphi[j]]
+        pre.bd[j] = (at.bd[j] + at.gx[j] * zd[ix[j]] + at.gy[j] * zd[iy[j]]
+                     + at.gphi[j] * zd[iphi[j]])

@@ -1,4 +1,4 @@
-"""The monolithic march's start near its periodic state (:mod:`camtrain.dynamics.monolithic`):
+"""The monolithic march's start near its periodic state (:mod:`camtrain.coupled.march`):
 every train from the single train's periodic response at its lobe's angle, the shaft from its
 periodic answer (harmonic balance) to those trains' loads, friction and the drive's hub load."""
 from __future__ import annotations
@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from .monolithic_tables import own_columns, table_at
+from .tables import own_columns, table_at
 
 
 def _periodic_start(K, M, C, forces, omega, orders: int = 100):
@@ -36,7 +36,7 @@ def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, 
     (pitch radius, hub-load direction, the preload's constant x and y parts) is), the
     follower (and an open valve) moved with the lobe, the contact states from
     their indicators and the acceleration from the equilibrium."""
-    from .train import CAM
+    from camtrain.dynamics.train import CAM
 
     idx = dict(ix=sysm.ix, iy=sysm.iy, iphi=sysm.iphi, ifol=sysm.ifol, ival=sysm.ival,
                nb=sysm.nb, t0=sysm.t0, tr0=sysm.tr0)

@@ -1,4 +1,4 @@
-"""Tables of the monolithic march (:mod:`camtrain.dynamics.monolithic`): the friction
+"""Tables of the monolithic march (:mod:`camtrain.coupled.march`): the friction
 coefficient's load levels, how the march reads them, and the grid's angle frames."""
 from __future__ import annotations
 

@@ -1,7 +1,6 @@
-"""The low-rank (Woodbury) contact update of the monolithic shaft-and-trains step
-(:mod:`._coupled_step`): every cam contact's gradient lies in its lobe's five coordinates
-(x, y, phi, follower, valve), so the closed contacts enter the factorised linear part as a
-small dense system on 5 L numbers."""
+"""The low-rank (Woodbury) contact update of the shaft-and-trains step (:mod:`._step`): every
+cam contact's gradient lies in its lobe's five coordinates (x, y, phi, follower, valve), so the
+closed contacts enter the factorised linear part as a small dense system on 5 L numbers."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,8 +8,9 @@ from numba import njit
 
 
 @njit(cache=True)
-def basis_rows(basis, ix, iy, iphi, ifol, ival):
+def basis_rows(basis, lay):
     """G = the rows of ``basis`` at every lobe's five contact coordinates (5 L x 5 L)."""
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
     lobes = ix.size
     G = np.empty((5 * lobes, 5 * lobes))
     for j in range(lobes):
@@ -22,22 +22,28 @@ def basis_rows(basis, ix, iy, iphi, ifol, ival):
 
 
 @njit(cache=True)
-def woodbury(x0, basis, G, z, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, cc, ks, cs,
-              offc, offs, a1, ix, iy, iphi, ifol, ival, x):
+def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x):
     """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
     ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y, phi,
     follower, valve), ``G`` its rows there (:func:`basis_rows`), ``z`` forces on those
-    coordinates (friction; overwritten), the inputs of every lobe at the step's end (bj ...),
-    a1 = 2 / step. Every contact gradient h lies in its lobe's five coordinates, so the update
-    works on 5 L numbers and touches the full state once."""
+    coordinates (friction; overwritten), the contact states and (q, v) of the state ``st``,
+    every lobe's inputs at the step's end ``at``, a1 = 2 / step. Every contact gradient h lies
+    in its lobe's five coordinates, so the update works on 5 L numbers and touches the full
+    state once."""
     n = x0.size
-    lobes = ix.size
+    lobes = lay.ix.size
     coef = np.zeros((2 * lobes, 5))
     lobe_of = np.zeros(2 * lobes, dtype=np.int64)
     kk = np.zeros(2 * lobes)
+    # the closed contacts' gradients, lobes and stiffnesses k + a1 c; their constant forces
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
+    kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
+    ks, cs, offs = uni.k[1], uni.c[1], uni.off[1]
+    q, v = st.q, st.v
+    bj, bdj, gxj, gyj, gphij = at.b, at.bd, at.gx, at.gy, at.gphi
     m = 0
     for j in range(lobes):
-        if act_c[j]:
+        if st.act_c[j]:
             coef[m, 0] = gxj[j]
             coef[m, 1] = gyj[j]
             coef[m, 2] = gphij[j]
@@ -51,7 +57,7 @@ def woodbury(x0, basis, G, z, act_c, act_s, bj, bdj, gxj, gyj, gphij, q, v, kc, 
             kk[m] = kc + a1 * cc
             lobe_of[m] = j
             m += 1
-        if act_s[j]:
+        if st.act_s[j]:
             coef[m, 4] = -1.0
             z[5 * j + 4] += ks * offs + cs * (a1 * q[ival[j]] + v[ival[j]])
             kk[m] = ks + a1 * cs

@@ -5,7 +5,7 @@ bends and twists, so each train's cam input is the rigid lift plus what the shaf
 and the shaft's loads are the trains' dynamic contact loads. The shaft is linear and periodic;
 the trains are nonlinear (unilateral contacts). The periodic state of the whole is found here by
 a block Gauss-Seidel iteration between the two over whole revolutions (waveform relaxation; the
-step-by-step staggered march is :mod:`._coupled_partition`):
+step-by-step staggered march is :mod:`._partition`):
 
 1. the shaft's periodic response to the trains' loads gives every lobe's displacement along its
    follower axis p_j(theta) and its twist phi_j(theta) against the drive;
@@ -27,7 +27,7 @@ contact stiffness over the shaft's, exceeds 1). Two accelerations are offered (`
   loop gain near 1.
 
 Either runs on the raw residual or on a preconditioned one (``precondition``): the interface
-Newton step of the linear shaft and trains (:mod:`camtrain.dynamics.interface`), without which
+Newton step of the linear shaft and trains (:mod:`camtrain.coupled.interface`), without which
 no acceleration holds the iteration where a contact drives a lightly damped shaft mode.
 
 A stiff shaft makes p and phi vanish and returns every train's single-train solution (the limit
@@ -106,7 +106,7 @@ def waveform_relaxation(operator: Callable[[np.ndarray], np.ndarray], start: np.
         method: ``quasi_newton``, ``aitken`` or ``fixed`` (module notes).
         min_relaxation: smallest factor Aitken's rule may take.
         precondition: a map of the residual H(x) - x to an update, e.g. the interface Newton
-            step (I - J)^-1 of :func:`camtrain.dynamics.interface.interface_newton`; the
+            step (I - J)^-1 of :func:`camtrain.coupled.interface.interface_newton`; the
             passes then run on the preconditioned residual (the change is still the raw one).
         columns: most past passes the quasi-Newton method keeps (0: all of them).
     """

@@ -1,17 +1,17 @@
 """The level-1 squeeze film of every cam contact inside the monolithic march
-(:mod:`camtrain.dynamics.monolithic`): what the compiled revolution needs to carry each
+(:mod:`camtrain.coupled.march`): what the compiled revolution needs to carry each
 contact's film from step to step and to take its friction from the current load and film.
 
 Teodorescu et al. (2005) eq. 5 gives the film h = F exp(-96.775 w_s), w_s = (dh/dt)/u (eq. 6),
 with F the Rahnejat steady film; written as the relaxation law dh/dt = -(|u|/96.775) ln(h/F)
 (docs/transient_film.md) it is one scalar state per contact, marched by implicit Euler once per
-accepted time step (:func:`._coupled_film_kernel.film_step`). The steady film depends on the load
+accepted time step (:func:`._film_kernel.film_step`). The steady film depends on the load
 only through W^e (e = -0.059, or +0.059 as printed: ``tribology.squeeze_load_exponent``), so
 F = F_1(theta) W^e with F_1 the film under 1 N, tabulated once per grid angle.
 
 The friction law (Ball's capped shear, Teodorescu's Greenwood-Tripp law, ...) depends on the
 angle's kinematics, the load and the film. It is tabulated once per grid angle over the load
-levels of the steady path (:data:`camtrain.dynamics.monolithic.FRICTION_LEVELS`, cam-level here)
+levels of the steady path (:data:`camtrain.coupled.tables.FRICTION_LEVELS`, cam-level here)
 and over film ratios h/F (:data:`FILM_RATIOS`): h = F (no squeeze) is a level, so the
 quasi-steady limit reads the steady law's own table. Films thicker than 64 F (at a reversal the
 trapped film stays while F falls to 0) read the 64 F column: there the viscous shear is small
@@ -137,7 +137,7 @@ def squeeze_film_model(contact, kin, levels, squeeze: bool = True) -> SqueezeFil
     return SqueezeFilmModel(unit, exponent, u, table, levels, friction, R, unit_of, squeeze)
 
 
-# the march's film state (camtrain.dynamics.monolithic.march_coupled)
+# the march's film state (camtrain.coupled.march.march_coupled)
 def film_state(film, theta_grid, local, n_lobes: int, grid: int) -> dict:
     """The kernel's film arguments: the steady film under 1 N, the entrainment speed and the
     fractional grid column of every step in each lobe's own frame, the table and its film
@@ -170,9 +170,8 @@ def _shift(values, theta_grid, by):
 def start_film(film, start, theta_grid, phases, ratio, omega):
     """Every contact's film at the march's first angle: the periodic level-1 film of the
     single train's load (on the grid), at its lobe's angle."""
+    from camtrain.dynamics.train import CAM
     from camtrain.lubrication import squeeze_film_march
-
-    from .train import CAM
 
     w = np.interp(theta_grid, start.theta, np.maximum(start.contact_force[CAM], 0.0),
                   period=2.0 * math.pi) * np.asarray(ratio, dtype=float)

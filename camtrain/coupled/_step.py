@@ -1,0 +1,372 @@
+"""One time step of the shaft-and-trains march (:mod:`._revolution` marches the revolution).
+
+A step is first taken with the contact states of its start (the linear part's inverse for the
+full step is factorised once; the closed contacts enter as a low-rank update,
+:mod:`._lowrank`). When a contact's indicator psi = min(k delta, k delta + c delta') changes
+sign over the step, the step is split where it does, as the single-train march does
+(:mod:`camtrain.dynamics._kernel`): the crossing is located on the cubic Hermite of delta in time
+through its end values and rates (Illinois regula falsi), the part of the step up to it is
+re-taken, the contact switched, the acceleration restarted from the equilibrium with the new
+states and the rest of the step taken with them. The sub-steps have other lengths than the full
+step, so they are solved block by block (both bending planes, the twist and every train are
+uncoupled but for the contacts), again with the contacts as a low-rank update. Staggered: the
+shaft under the predicted contact loads first, the trains on its motion after
+(:mod:`._partition`). The data come as the records of :mod:`.records`."""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from camtrain.coupled._lowrank import basis_rows, woodbury
+from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
+from camtrain.coupled.records import LobeAt
+from camtrain.numerics.roots import false_position, illinois_update
+
+#: contact changes located inside one step at most (more: the rest of the step is accepted)
+MAX_SWITCHES = 8
+
+
+@njit(cache=True)
+def _hermite(y0, m0, y1, m1, sigma, h):
+    """Cubic Hermite at fraction sigma of an interval of length h (m: rates per unit time):
+    value and rate."""
+    s, s2, s3 = sigma, sigma * sigma, sigma * sigma * sigma
+    val = ((2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 * h + (-2 * s3 + 3 * s2) * y1
+           + (s3 - s2) * m1 * h)
+    der = ((6 * s2 - 6 * s) * y0 + (3 * s2 - 4 * s + 1) * m0 * h + (-6 * s2 + 6 * s) * y1
+           + (3 * s2 - 2 * s) * m1 * h) / h
+    return val, der
+
+
+@njit(cache=True)
+def _inputs(lob, j, s, frac, dt):
+    """Lobe j's cam input, its rate and gradient at fraction ``frac`` of step s (the step runs
+    from the time of column s - 1 to that of column s; the columns wrap over the revolution):
+    the lift by a cubic Hermite, the rest linear."""
+    b, bd, gx, gy, gphi = lob.b, lob.bd, lob.gx, lob.gy, lob.gphi
+    p = s - 1 if s > 0 else b.shape[1] - 1
+    if frac >= 1.0:
+        return b[j, s], bd[j, s], gx[j, s], gy[j, s], gphi[j, s]
+    if frac <= 0.0:
+        return b[j, p], bd[j, p], gx[j, p], gy[j, p], gphi[j, p]
+    val, der = _hermite(b[j, p], bd[j, p], b[j, s], bd[j, s], frac, dt)
+    w0 = 1.0 - frac
+    return (val, der, w0 * gx[j, p] + frac * gx[j, s], w0 * gy[j, p] + frac * gy[j, s],
+            w0 * gphi[j, p] + frac * gphi[j, s])
+
+
+@njit(cache=True)
+def set_inputs(at, lob, s, frac, dt):
+    """Every lobe's inputs at fraction ``frac`` of step s into ``at``."""
+    for j in range(at.b.size):
+        at.b[j], at.bd[j], at.gx[j], at.gy[j], at.gphi[j] = _inputs(lob, j, s, frac, dt)
+
+
+@njit(cache=True)
+def cam_gap(z, zd, j, ix, iy, iphi, ifol, offc, bj, bdj, gxj, gyj, gphij):
+    """Cam contact j's compression delta and its rate for displacements z, velocities zd."""
+    d = bj + offc - z[ifol[j]] + gxj * z[ix[j]] + gyj * z[iy[j]] + gphij * z[iphi[j]]
+    dd = bdj - zd[ifol[j]] + gxj * zd[ix[j]] + gyj * zd[iy[j]] + gphij * zd[iphi[j]]
+    return d, dd
+
+
+@njit(cache=True)
+def _psi(k, c, d, dd):
+    """Contact indicator min(k delta, k delta + c delta') (a separating damper never pulls)."""
+    f = k * d + c * dd
+    return min(k * d, f)
+
+
+@njit(cache=True)
+def _friction_force(fric, work, lay, lob):
+    """Generalised friction force of every lobe (tangential on the shaft, torque mu W r)."""
+    fric[:] = 0.0
+    for j in range(lay.ix.size):
+        fric[lay.ix[j]] += -work.tang[j] * lob.sina[j]
+        fric[lay.iy[j]] += work.tang[j] * lob.cosa[j]
+        fric[lay.iphi[j]] += -work.fr[j] * work.arm[j]
+
+
+@njit(cache=True)
+def _substep(tau, sys, st, fric, at, x, stagger):
+    """A Newmark step of length ``tau`` from the state with the contact states fixed, the
+    linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
+    shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
+    the sub-step's end as prescribed input (:mod:`._partition`)."""
+    lay = sys.lay
+    n = st.q.size
+    lobes = lay.ix.size
+    a1 = 2.0 / tau
+    x0 = np.empty(n)
+    basis = np.zeros((n, 5 * lobes))
+    K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
+    q, v, acc = st.q, st.v, st.acc
+    a0 = 4.0 / (tau * tau)
+    for k in range(blocks.size - 1):
+        lo, hi = blocks[k], blocks[k + 1]
+        size = hi - lo
+        cols = []
+        for j in range(lobes):
+            for e, dof in enumerate((lay.ix[j], lay.iy[j], lay.iphi[j], lay.ifol[j],
+                                     lay.ival[j])):
+                if lo <= dof < hi:
+                    cols.append((5 * j + e, dof))
+        A = np.empty((size, size))
+        R = np.zeros((size, 1 + len(cols)))
+        for i in range(size):
+            gi = lo + i
+            r = f0[gi] + fric[gi]
+            for e in range(size):
+                ge = lo + e
+                A[i, e] = K[gi, ge] + a1 * C[gi, ge] + a0 * M[gi, ge]
+                r += M[gi, ge] * (a0 * q[ge] + (4.0 / tau) * v[ge] + acc[ge]) \
+                    + C[gi, ge] * (a1 * q[ge] + v[ge])
+            R[i, 0] = r
+        for c in range(len(cols)):
+            R[cols[c][1] - lo, 1 + c] = 1.0
+        S = np.linalg.solve(A, R)
+        for i in range(size):
+            x0[lo + i] = S[i, 0]
+        for c in range(len(cols)):
+            col = cols[c][0]
+            for i in range(size):
+                basis[lo + i, col] = S[i, 1 + c]
+    z = np.zeros(5 * lobes)     # friction is in the right-hand side already
+    if stagger:     # the shaft's part of x0 is final: no contact column reaches it
+        v0 = np.empty(n)
+        for i in range(n):
+            v0[i] = a1 * (x0[i] - st.q[i]) - st.v[i]
+        pre = LobeAt(np.empty(lobes), np.empty(lobes), np.zeros(lobes), np.zeros(lobes),
+                     np.zeros(lobes))
+        prescribed_inputs(x0, v0, at, lay, pre)
+        woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, pre, a1, x)
+        return
+    woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x)
+
+
+@njit(cache=True)
+def _equilibrium(sys, st, fric, at, stagger):
+    """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
+    block-diagonal inverse of M)."""
+    lay, mats, uni = sys.lay, sys.mats, sys.uni
+    K, C, Minv, blocks = mats.K, mats.C, mats.Minv, lay.blocks
+    q, v, acc = st.q, st.v, st.acc
+    kc, cc, ks, cs, offs = uni.k[0], uni.c[0], uni.k[1], uni.c[1], uni.off[1]
+    n = q.size
+    r = np.empty(n)
+    rb = np.empty(n)
+    for i in range(n):
+        r[i] = mats.f0[i] + fric[i]
+    for j in range(lay.ix.size):
+        if st.act_c[j]:
+            d, dd = cam_gap(q, v, j, lay.ix, lay.iy, lay.iphi, lay.ifol, uni.off[0], at.b[j],
+                            at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
+            w = kc * d + cc * dd
+            r[lay.ifol[j]] += w
+            if not stagger:     # staggered: the shaft carries the predicted load (in fric)
+                r[lay.ix[j]] -= w * at.gx[j]
+                r[lay.iy[j]] -= w * at.gy[j]
+                r[lay.iphi[j]] -= w * at.gphi[j]
+        if st.act_s[j]:
+            r[lay.ival[j]] += ks * (offs - q[lay.ival[j]]) - cs * v[lay.ival[j]]
+    for k in range(blocks.size - 1):
+        lo, hi = blocks[k], blocks[k + 1]
+        for i in range(lo, hi):
+            s = r[i]
+            for e in range(lo, hi):
+                s -= K[i, e] * q[e] + C[i, e] * v[e]
+            rb[i] = s
+        for i in range(lo, hi):
+            s = 0.0
+            for e in range(lo, hi):
+                s += Minv[i, e] * rb[e]
+            acc[i] = s
+
+
+@njit(cache=True)
+def _indicators(z, zd, j, ix, iy, iphi, ifol, ival, uni, bj, bdj, gxj, gyj, gphij):
+    """(psi, delta, delta') of lobe j's cam contact and of its seat."""
+    d, dd = cam_gap(z, zd, j, ix, iy, iphi, ifol, uni.off[0], bj, bdj, gxj, gyj, gphij)
+    ds, dds = uni.off[1] - z[ival[j]], -zd[ival[j]]
+    return _psi(uni.k[0], uni.c[0], d, dd), d, dd, _psi(uni.k[1], uni.c[1], ds, dds), ds, dds
+
+
+@njit(cache=True)
+def _crossing(k, c, d0, dd0, d1, dd1, h):
+    """Fraction of an interval of length h where psi = min(k delta, k delta + c delta') of the
+    cubic Hermite delta(t) through (d0, dd0) and (d1, dd1) changes sign (Illinois)."""
+    lo, hi = 0.0, 1.0
+    plo = _psi(k, c, d0, dd0)
+    phi = _psi(k, c, d1, dd1)
+    if plo == phi or (plo > 0.0) == (phi > 0.0):
+        return 0.0
+    x = plo / (plo - phi)
+    side = 0
+    for _ in range(40):
+        val, der = _hermite(d0, dd0, d1, dd1, x, h)
+        px = _psi(k, c, val, der)
+        if abs(px) <= 1e-13 * (abs(plo) + abs(phi)) or hi - lo < 1e-12:
+            break
+        lo, plo, hi, phi, side = illinois_update(lo, plo, hi, phi, x, px, side)
+        x = false_position(lo, plo, hi, phi)
+    return x
+
+
+@njit(cache=True)
+def _first_crossing(sys, st, work, at, lob, s, tau, h):
+    """The contact that changes state first inside the (sub)step from tau, length h: (lobe,
+    whether the seat, fraction of the sub-step), or (-1, False, 2)."""
+    lay, uni, dt = sys.lay, sys.uni, sys.step.dt
+    x, v1 = work.x, work.v1
+    first, seat, alpha = -1, False, 2.0
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
+    for j in range(ix.size):
+        work.b0[j], work.bd0[j], g0x, g0y, g0p = _inputs(lob, j, s, tau / dt, dt)
+        pc0, d0, dd0, ps0, ds0, dds0 = _indicators(st.q, st.v, j, ix, iy, iphi, ifol, ival, uni,
+                                                   work.b0[j], work.bd0[j], g0x, g0y, g0p)
+        pc1, d1, dd1, ps1, ds1, dds1 = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
+                                                   at.b[j], at.bd[j], at.gx[j], at.gy[j],
+                                                   at.gphi[j])
+        if (pc1 > 0.0) != st.act_c[j]:
+            frac = _crossing(uni.k[0], uni.c[0], d0, dd0, d1, dd1, h)
+            if frac < alpha:
+                first, seat, alpha = j, False, frac
+        if (ps1 > 0.0) != st.act_s[j]:
+            frac = _crossing(uni.k[1], uni.c[1], ds0, dds0, ds1, dds1, h)
+            if frac < alpha:
+                first, seat, alpha = j, True, frac
+    return first, seat, alpha
+
+
+@njit(cache=True)
+def _split(sys, st, work, at, lob, s, stagger):
+    """The step split at every contact change inside it (at most MAX_SWITCHES): returns the
+    changes located and whether there were more. The sub-steps carry friction, the belt's
+    pull, the staggered step's predicted loads and the drive's inertia load in their
+    right-hand side (``work.fric``)."""
+    fric, drive, dt = work.fric, sys.drive, sys.step.dt
+    _friction_force(fric, work, sys.lay, lob)
+    if drive.x >= 0:
+        fric[drive.x] += work.hub[0]
+        fric[drive.y] += work.hub[1]
+    if stagger:
+        add_shaft_forces(fric, work.w_pred, at, sys.lay)
+    drive_acc = lob.drive_acc[s]
+    if drive_acc != 0.0:
+        for i in range(fric.size):
+            fric[i] -= drive.j[i] * drive_acc
+    q, v, acc, x = st.q, st.v, st.acc, work.x
+    n = q.size
+    tau = 0.0
+    switches = 0
+    while True:
+        h = dt - tau
+        if h <= 1e-12 * dt:
+            break
+        if switches > 0:   # the full step with the start's states is x, v1 already
+            _substep(h, sys, st, fric, at, x, stagger)
+            for i in range(n):
+                work.v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
+        first, seat, alpha = _first_crossing(sys, st, work, at, lob, s, tau, h)
+        if first < 0 or switches >= MAX_SWITCHES:
+            for i in range(n):      # the (sub)step taken
+                work.a1v[i] = (4.0 / (h * h)) * (x[i] - q[i]) - (4.0 / h) * v[i] - acc[i]
+                q[i] = x[i]
+                v[i] = work.v1[i]
+                acc[i] = work.a1v[i]
+            return switches, 1 if first >= 0 else 0
+        # take the step up to the change, switch the contact, restart the acceleration
+        hs = alpha * h
+        set_inputs(at, lob, s, (tau + hs) / dt, dt)
+        if hs > 1e-12 * dt:
+            _substep(hs, sys, st, fric, at, x, stagger)
+            for i in range(n):
+                v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
+                q[i] = x[i]
+        tau += hs
+        if seat:
+            st.act_s[first] = not st.act_s[first]
+        else:
+            st.act_c[first] = not st.act_c[first]
+        _equilibrium(sys, st, fric, at, stagger)
+        switches += 1
+        set_inputs(at, lob, s, 1.0, dt)
+    return switches, 0
+
+
+@njit(cache=True)
+def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
+    """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
+    ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the
+    summed lobe torque of the last step (the belt's pull). ``stagger``: the shaft under the
+    predicted loads ``work.w_pred`` first, then the trains with its motion prescribed in
+    ``pre`` (:mod:`._partition`). ``fresh`` False: ``work.base`` (the step's solution without
+    contact and friction forces, P = A^-1 M, Q = A^-1 C) is still that of the same start, from
+    the step's previous pass. The drive's angular acceleration at the step's end
+    (``lob.drive_acc``) loads the twist, measured from the drive, with -J theta''. Returns the
+    contact changes located and whether the step had more than MAX_SWITCHES."""
+    step, drive, lay = sys.step, sys.drive, sys.lay
+    q, v, acc = st.q, st.v, st.acc
+    base, hub, zf, x, v1 = work.base, work.hub, work.zf, work.x, work.v1
+    a0, a1, dt = step.a0, step.a1, step.dt
+    n, lobes = q.size, lay.ix.size
+    if fresh:   # the full step with the states of its start
+        rhs_w, rhs_c, blocks = work.rhs_w, work.rhs_c, lay.blocks
+        for i in range(n):
+            rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
+            rhs_c[i] = a1 * q[i] + v[i]
+        for k in range(blocks.size - 1):
+            lo, hi = blocks[k], blocks[k + 1]
+            for i in range(lo, hi):
+                total = step.x_f0[i]
+                for e in range(lo, hi):
+                    total += step.P[i, e] * rhs_w[e] + step.Q[i, e] * rhs_c[e]
+                base[i] = total
+        if drive.x >= 0:      # the belt's torque-dependent pull at the drive station
+            pull = abs(torque) / drive.radius
+            hub[0], hub[1] = pull * drive.cos, pull * drive.sin
+            for i in range(n):
+                base[i] += drive.basis[i, 0] * hub[0] + drive.basis[i, 1] * hub[1]
+        if lob.drive_acc[s] != 0.0:    # the drive's speed oscillation: -J theta'' on the twist
+            for i in range(n):
+                base[i] -= drive.u[i] * lob.drive_acc[s]
+    for j in range(lobes):      # friction on the lobe's coordinates
+        zf[5 * j] = -work.tang[j] * lob.sina[j]
+        zf[5 * j + 1] = work.tang[j] * lob.cosa[j]
+        zf[5 * j + 2] = -work.fr[j] * work.arm[j]
+        zf[5 * j + 3] = 0.0
+        zf[5 * j + 4] = 0.0
+    if stagger:     # the shaft first, under the predicted loads; the trains on its motion
+        add_shaft_loads(zf, work.w_pred, at)
+        for i in range(n):
+            total_x = base[i]
+            for c in range(5 * lobes):
+                total_x += step.basis[i, c] * zf[c]
+            x[i] = total_x
+            v1[i] = a1 * (x[i] - q[i]) - v[i]
+        prescribed_inputs(x, v1, at, lay, pre)
+        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, pre, a1, x)
+    else:
+        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x)
+    for i in range(n):
+        v1[i] = a1 * (x[i] - q[i]) - v[i]
+    if _changes(lay, sys.uni, st, x, v1, at):
+        return _split(sys, st, work, at, lob, s, stagger)
+    for i in range(n):
+        acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
+        q[i] = x[i]
+        v[i] = v1[i]
+    return 0, 0
+
+
+@njit(cache=True)
+def _changes(lay, uni, st, x, v1, at):
+    """Whether any contact's state differs at the trial step's end (x, v1) from its start."""
+    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
+    for j in range(ix.size):
+        pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
+                                                 at.b[j], at.bd[j], at.gx[j], at.gy[j],
+                                                 at.gphi[j])
+        if (pc > 0.0) != st.act_c[j] or (ps > 0.0) != st.act_s[j]:
+            return True
+    return False

@@ -1,0 +1,82 @@
+"""Typed records of the compiled shaft-and-trains march (:mod:`._revolution`, :mod:`._step`),
+grouped by lifetime (named tuples: see :mod:`camtrain.dynamics.records` for why, and the
+records the single train's march shares with this one).
+
+Set once per march:
+
+* :data:`System` = (:data:`Layout`, :data:`Matrices`, :data:`Stepper`, :data:`Drive`,
+  :class:`~camtrain.dynamics.records.Unilateral`): where every lobe's coordinates sit, the
+  linear part's matrices, the full step's factorised parts, the drive's hub load and inertia
+  load, the contact laws of every train (cam, seat).
+* :data:`Lobes`: every lobe's inputs at every step of a revolution.
+* :data:`Scheme`: monolithic or staggered, its predictor and passes.
+
+Set once per revolution: :data:`Friction` (the tables and their correction).
+Carried from step to step: :data:`State`. Written: :data:`Samples`.
+Workspace of one revolution: :data:`Work` and two :data:`LobeAt` (every lobe's inputs at an
+instant of the step, and the staggered step's prescribed inputs).
+
+A new term of the march is a new field of the record of its lifetime.
+"""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+#: state indices of every lobe's shaft coordinates (ix, iy, iphi), follower (ifol), seat
+#: (ival), valve (valve), and the block boundaries of the block-diagonal linear part
+Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks")
+
+#: the linear part: K, C, M, the block-diagonal inverse of M, the constant forces f0
+Matrices = namedtuple("Matrices", "K C M Minv f0")
+
+#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, A^-1 at
+#: every lobe's five contact coordinates (basis) and its rows there (G)
+Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 P Q basis G")
+
+#: the drive: hub-load coordinates (x, y; -1 without), direction (cos, sin), pitch radius,
+#: A^-1 at the two coordinates (basis); J 1 on the twist (j) and A^-1 of it (u)
+Drive = namedtuple("Drive", "x y cos sin radius basis j u")
+
+#: everything set once: Layout, Matrices, Stepper, Drive, Unilateral (uni)
+System = namedtuple("System", "lay mats step drive uni")
+
+#: every lobe's inputs at every step (lobes, steps): valve-referred lift b, its rate bd, the
+#: contact gradient (gx, gy, gphi), friction arm, rocker ratio; follower axes (cosa, sina),
+#: the turn (+1 anticlockwise), the drive's angular acceleration at every step (drive_acc)
+Lobes = namedtuple("Lobes", "b bd gx gy gphi arm ratio cosa sina turn drive_acc")
+
+#: friction tables: coefficient (lobes, levels, steps), its correction (lobes, steps), the
+#: load levels (ln_first, ln_step); the level-1 film (film, squeeze flags; steady film under
+#: 1 N ``unit`` and ``speed`` (lobes, steps), ``exponent``, ``film_table`` (ratios, levels,
+#: grid), fractional grid column ``col`` (lobes, steps), film ratios ln_r0, d_ln_r)
+Friction = namedtuple("Friction", "table corr ln_first ln_step film squeeze unit exponent speed "
+                                  "film_table col ln_r0 d_ln_r")
+
+#: stagger (bool), predictor code, passes per step at most, their tolerance, steps per sample
+Scheme = namedtuple("Scheme", "stagger predictor iterations step_tol substeps")
+
+#: q, v, acc, the contact states (act_c, act_s), the last two steps' loads, the films
+State = namedtuple("State", "q v acc act_c act_s w_prev w_older film")
+
+#: the grid samples (lobes, grid): load, valve acceleration, film
+Samples = namedtuple("Samples", "load acc film")
+
+#: every lobe's inputs at an instant: b, bd, gx, gy, gphi (arrays over the lobes)
+LobeAt = namedtuple("LobeAt", "b bd gx gy gphi")
+
+#: work arrays of a revolution (n: state size, L: lobes)
+Work = namedtuple("Work", "rhs_w rhs_c base x v1 a1v fric zf hub fr tang arm b0 bd0 w_pred "
+                          "w_end q_s v_s acc_s c_s s_s")
+
+
+def workspace(n: int, lobes: int):
+    """(Work, the inputs at the step's end, the staggered step's prescribed inputs)."""
+    e, z = np.empty, np.zeros
+    work = Work(e(n), e(n), e(n), e(n), e(n), e(n), z(n), z(5 * lobes), z(2), z(lobes),
+                z(lobes), z(lobes), e(lobes), e(lobes), z(lobes), z(lobes), e(n), e(n), e(n),
+                e(lobes, dtype=np.bool_), e(lobes, dtype=np.bool_))
+    at = LobeAt(e(lobes), e(lobes), e(lobes), e(lobes), e(lobes))
+    pre = LobeAt(e(lobes), e(lobes), z(lobes), z(lobes), z(lobes))
+    return work, at, pre
