@@ -103,34 +103,6 @@ def geometry_ok(datum, kin) -> np.ndarray:
     return ok
 
 
-def iterate_rows(load_of_mu, friction_of_load, mu0, tolerance: float, max_iterations: int):
-    """Ball's friction/load iteration (:func:`camtrain.loads.iterate_load`) on every case at
-    once, each case converging by its own residual and then held: the same iterates, the same
-    stopping test and the same final friction as the case alone. Returns load, friction, mu,
-    iterations per case and which cases converged."""
-    load = np.asarray(load_of_mu(np.asarray(mu0, dtype=float)), dtype=float)
-    mu = np.array(np.broadcast_to(mu0, load.shape), dtype=float)
-    n = load.shape[0]
-    done = np.zeros(n, dtype=bool)
-    iterations = np.zeros(n, dtype=int)
-    for k in range(1, max_iterations + 1):
-        force = np.asarray(friction_of_load(load), dtype=float)
-        positive = load > 0.0
-        step = np.where(positive, force / np.where(positive, load, 1.0), mu)
-        mu = np.where(done[:, None], mu, step)
-        new = np.asarray(load_of_mu(mu), dtype=float)
-        scale = np.maximum(np.max(np.abs(new), axis=1), 1.0)
-        residual = np.max(np.abs(new - load), axis=1) / scale
-        load = np.where(done[:, None], load, new)
-        now = ~done & (residual <= tolerance)
-        iterations[now] = k
-        done |= now
-        if done.all():
-            break
-    force = np.asarray(friction_of_load(load), dtype=float)
-    return load, force, mu, iterations, done
-
-
 def contact_of(datum, scal: dict):
     """The datum's contact model with the per-case columns in place of its scalars."""
     from camtrain.contact.model import CamContact
@@ -177,6 +149,7 @@ def run_chain(datum, valve, scal: dict, n: int):
     from camtrain.effects.loads import body_inertia
     from camtrain.formulas import cam_torque, friction_torque
     from camtrain.loads import contact_load, contact_mask
+    from camtrain.loads.iteration import iterate_cases
 
     kin = translating_kinematics(datum, valve, scal, n)
     c = datum.clearance
@@ -194,18 +167,17 @@ def run_chain(datum, valve, scal: dict, n: int):
         return np.broadcast_to(contact_load(kin, mu, clearance=clearance, base_load=base_load,
                                             **load_kw), kin.theta.shape)
 
-    if np.any(kin.arm_friction != 0.0):
-        # the load depends on the friction: Ball's iteration (loads.solve_loads), case by case
-        solver = datum.solver
-        load, _, mu_solved, iterations, converged = iterate_rows(
-            load_of_mu, lambda w: contact.solve(kin, w).force, mu_b, solver.friction_tolerance,
-            solver.friction_max_iterations)
-        if not np.all(np.any(kin.arm_friction != 0.0, axis=1)):
-            raise ValueError("cases with and without a friction arm")   # run them alone
-    else:
-        # no friction arm (flat face): one pass at the boundary coefficient, as iterate_load does
-        load = np.asarray(load_of_mu(np.asarray(mu_b, dtype=float)), dtype=float)
-        mu_solved, iterations, converged = mu_b, np.ones(n, dtype=int), np.ones(n, dtype=bool)
+    depends = np.any(kin.arm_friction != 0.0, axis=1)
+    if np.any(depends) and not np.all(depends):
+        raise ValueError("cases with and without a friction arm")   # run them alone
+    # Ball's friction/load iteration, each case converging on its own; one pass at the
+    # boundary coefficient without a friction arm (flat face), as a single run does
+    solver = datum.solver
+    sol = iterate_cases(load_of_mu, (lambda w: contact.solve(kin, w).force)
+                        if np.all(depends) else None, mu0=mu_b,
+                        tolerance=solver.friction_tolerance,
+                        max_iterations=solver.friction_max_iterations)
+    load, mu_solved, iterations, converged = sol.load, sol.mu, sol.iterations, sol.converged
     inside = contact_mask(kin.valve_lift, clearance)
     load0 = np.maximum(load, 0.0)
     hz = contact.hertz(kin, load0)
