@@ -49,39 +49,20 @@ def columns(models: list) -> dict[str, object]:
     return out
 
 
-def _broadcast(fields: dict, shape: tuple[int, int]) -> dict:
-    return {k: np.broadcast_to(v, shape) if isinstance(v, np.ndarray) else v
-            for k, v in fields.items()}
-
-
 def translating_kinematics(datum, valve, scal: dict, n: int):
     """Kinematics of a clockwise flat-faced or domed translating follower (a tapered cam too)
-    for every case (Ball 1988 eqs 3.1-3.6, Williams 2013 ch. 6, Yang 1992 §3.2, by the kernel
-    a single run uses), each array of shape (cases, angles)."""
-    from camtrain.mechanisms import Kinematics
-    from camtrain.mechanisms.translating import translating_contact
+    for every case, by the builder a single run uses
+    (:func:`camtrain.mechanisms.translating.translating_kinematics`), each array of shape
+    (cases, angles)."""
+    from camtrain.mechanisms.translating import translating_kinematics as build
 
-    shape = (n, valve.theta.size)
     mech = datum.mechanism
     flat = mech.type == "flat"
     taper = None if flat or not datum.cam.taper_angle > 0.0 else float(datum.cam.taper_angle)
-    fields = translating_contact(valve.theta, valve.lift, valve.d1, valve.d2,
-                                 base_radius=scal["base_radius"],
-                                 follower_radius=np.inf if flat else scal["follower_radius"],
-                                 offset=0.0 if flat or taper is not None else mech.offset,
-                                 omega=scal["omega"], taper_angle=taper,
-                                 shape="spherical" if flat else mech.follower_shape)
-    with np.errstate(divide="ignore"):
-        ratio = 1.0 / fields["arm_normal"]
-    lc = valve
-    arrays = _broadcast(dict(
-        theta=lc.theta, valve_lift=lc.lift, valve_d1=lc.d1, valve_d2=lc.d2, valve_d3=lc.d3,
-        cam_lift=lc.lift, cam_d1=lc.d1, cam_d2=lc.d2, rocker_ratio=ratio,
-        arm_valve=np.ones_like(lc.lift), q=lc.lift, q_d1=lc.d1, q_d2=lc.d2, **fields), shape)
-    omega = scal["omega"]   # a per-case speed spans the grid like every field (shape check)
-    omega = np.broadcast_to(omega, shape) if isinstance(omega, np.ndarray) else omega
-    return Kinematics(mechanism=mech.type, rotation="clockwise", omega=omega,
-                      inertia={"follower_mass": np.broadcast_to(lc.d2, shape)}, **arrays)
+    return build(valve, mech.type, base_radius=scal["base_radius"],
+                 follower_radius=np.inf if flat else scal["follower_radius"],
+                 offset=0.0 if flat or taper is not None else mech.offset, omega=scal["omega"],
+                 taper_angle=taper, shape="spherical" if flat else mech.follower_shape, cases=n)
 
 
 def geometry_ok(datum, kin) -> np.ndarray:
