@@ -100,53 +100,30 @@ def contact_of(datum, scal: dict):
                                width=scal["width"], lubricant=lub, tribology=trib)
 
 
-def zero_crossings_rows(theta, values) -> list[list[float]]:
-    """Per row, the angles where the periodic ``values`` change sign: the arithmetic of
-    :func:`camtrain.effects.kinematics.zero_crossings`, on every row at once."""
-    v = np.asarray(values, dtype=float)
-    v_next = np.roll(v, -1, axis=-1)
-    t_next = np.roll(theta, -1).copy()
-    t_next[-1] += 2.0 * np.pi
-    rows, idx = np.nonzero((v == 0.0) | (np.sign(v) * np.sign(v_next) < 0))
-    here, after = v[rows, idx], v_next[rows, idx]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        angle = theta[idx] + here / (here - after) * (t_next[idx] - theta[idx])
-    angle = (angle + np.pi) % (2.0 * np.pi) - np.pi
-    before = v[rows, idx - 1]
-    out: list[list[float]] = [[] for _ in range(v.shape[0])]
-    for r, i, h, b, a in zip(rows.tolist(), idx.tolist(), here.tolist(), before.tolist(),
-                             angle.tolist(), strict=True):
-        if h == 0.0:
-            if b != 0.0:   # a run of exact zeros is reported once, at its start
-                out[r].append(float(theta[i]))
-            continue
-        out[r].append(a)
-    return out
-
-
-def run_chain(datum, valve, scal: dict, n: int):
-    """Every case's per-angle physics of the chain kinematics -> loads -> hertz -> film ->
-    friction -> power; returns a dict of (cases, angles) arrays and the products."""
-    from camtrain.effects.loads import body_inertia
-    from camtrain.formulas import cam_torque, friction_torque
+def run_chain(datum, valve, scal: dict, n: int) -> dict:
+    """Every case's chain kinematics -> loads -> hertz -> film -> friction -> power (-> guides)
+    by the physics and the metric definitions of the effects, on (cases, angles) arrays;
+    returns the kinematics, load, Hertz field and film, which cases converged and the
+    metrics (:class:`camtrain.metric_rows.CaseMetric`, in the effects' order)."""
+    from camtrain.effects import film as film_effect
+    from camtrain.effects import friction as friction_effect
+    from camtrain.effects import hertz as hertz_effect
+    from camtrain.effects import kinematics as kinematics_effect
+    from camtrain.effects import loads as loads_effect
+    from camtrain.effects import power as power_effect
     from camtrain.loads import contact_load, contact_mask
+    from camtrain.loads.bounce import bounce_speeds
     from camtrain.loads.iteration import iterate_cases
 
     kin = translating_kinematics(datum, valve, scal, n)
-    c = datum.clearance
-    lash = c is not None and c.lash_adjuster
-    clearance = 0.0 if (c is None or lash) else c.valve_clearance
-    spring = datum.spring
-    load_kw = dict(rate=scal["rate"], preload_compression=scal["preload_compression"],
-                   valve_mass=scal["valve_mass"], body_inertia=body_inertia(datum),
-                   progressive=(spring.progressive_quadratic, spring.progressive_cubic))
+    kw = dict(loads_effect.load_inputs(datum), rate=scal["rate"], valve_mass=scal["valve_mass"],
+              preload_compression=scal["preload_compression"])
+    spring = {k: v for k, v in kw.items() if k not in ("clearance", "base_load")}
     mu_b = scal["boundary_friction"]
-    base_load = c.adjuster_load if lash else 0.0
     contact = contact_of(datum, scal)
 
     def load_of_mu(mu):
-        return np.broadcast_to(contact_load(kin, mu, clearance=clearance, base_load=base_load,
-                                            **load_kw), kin.theta.shape)
+        return np.broadcast_to(contact_load(kin, mu, **kw), kin.theta.shape)
 
     depends = np.any(kin.arm_friction != 0.0, axis=1)
     if np.any(depends) and not np.all(depends):
@@ -158,137 +135,37 @@ def run_chain(datum, valve, scal: dict, n: int):
                         if np.all(depends) else None, mu0=mu_b,
                         tolerance=solver.friction_tolerance,
                         max_iterations=solver.friction_max_iterations)
-    load, mu_solved, iterations, converged = sol.load, sol.mu, sol.iterations, sol.converged
-    inside = contact_mask(kin.valve_lift, clearance)
+    load = sol.load
+    inside = contact_mask(kin.valve_lift, kw["clearance"])
     load0 = np.maximum(load, 0.0)
     hz = contact.hertz(kin, load0)
     film = contact.film(kin, load0)
-    friction = contact.friction(kin, load0, hz, film)
-    force = friction.force
-    tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
-    total = np.asarray(cam_torque(load0, kin.torque_arm_normal, force, kin.friction_arm),
-                       dtype=float)
-    return dict(kin=kin, load=load, load0=load0, inside=inside, hertz=hz, film=film,
-                force=force, friction_torque=tf, cam_torque=total,
-                power=tf * np.abs(scal["omega"]), dissipation=force * np.abs(kin.sliding),
-                load_kw=load_kw, clearance=clearance, mu=mu_b, mu_solved=mu_solved,
-                iterations=iterations, converged=converged,
-                guides=_guides(datum, kin, contact))
+    force = contact.friction(kin, load0, hz, film).force
+    tf, total, power, dissipation = power_effect.pair_torques(kin, load0, force)
+    speeds = bounce_speeds(kin, sol.mu, clearance=kw["clearance"], **spring)
+    theta, nose = kin.theta, kin.nose
+    zeros = kinematics_effect.zero_crossings_rows(valve.theta, kin.entrainment)
+    metrics = (kinematics_effect.pair_metrics(kin, "", datum.mechanism.type == "flat", zeros)
+               + loads_effect.load_metrics(theta, load, inside, sol.iterations,
+                                           solver.friction_tolerance, speeds)
+               + hertz_effect.hertz_metrics(theta, hz.pmax, nose)
+               + film_effect.film_metrics(theta, film.min, nose)
+               + friction_effect.friction_metrics(load0, force, mu_b)
+               + power_effect.power_metrics(theta, tf, power, dissipation, total)
+               + _guide_metrics(datum, kin, contact))
+    return dict(kin=kin, load=load, hertz=hz, film=film, converged=sol.converged,
+                metrics=metrics)
 
 
-def _guides(datum, kin, contact):
-    """The guide losses (:func:`camtrain.contact.guides.guide_losses`) of every case, or None
-    when the deck has no [guides]."""
+def _guide_metrics(datum, kin, contact) -> list:
+    """The guides effect's metrics of every case (none when the deck has no [guides])."""
     if datum.guides is None:
-        return None
+        return []
     from types import SimpleNamespace
 
     from camtrain.contact.guides import guide_losses
+    from camtrain.effects.guides import guide_metrics
 
     deck = SimpleNamespace(guides=datum.guides, lubricant=contact.lubricant,
                            mechanism=datum.mechanism)
-    return guide_losses(deck, kin)
-
-
-def _guide_metrics(losses, n: int) -> list[tuple[str, list[float]]]:
-    """The guides effect's metrics per case: each guide's cycle-mean power and their sum."""
-    if losses is None:
-        return []
-    from camtrain.formulas import cycle_mean
-
-    out, total = [], np.zeros(n)
-    for name, power in (("follower_guide", losses.follower_guide),
-                        ("valve_guide", losses.valve_guide)):
-        if power is None:
-            continue
-        mean = np.asarray(cycle_mean(np.broadcast_to(power, (n, np.shape(power)[-1]))),
-                          dtype=float)
-        total = total + mean
-        out.append((f"{name}_power_mean", mean.tolist()))
-    out.append(("guide_power_mean", total.tolist()))
-    return out
-
-
-def metrics(datum, out: dict, n: int) -> list[list[tuple[str, float, str]]]:
-    """Per case, the metrics the kinematics, loads, hertz, film, friction and power effects
-    write for a single run (names, order and units theirs; lift metrics are added by the
-    caller), as lists of (name, value, unit)."""
-    from camtrain.formulas import cycle_mean
-    from camtrain.loads.bounce import bounce_speeds
-    from camtrain.units import rad_s_to_rpm
-
-    kin = out["kin"]
-    rows = np.arange(n)
-    theta = kin.theta[0]
-    nose = int(np.argmax(kin.valve_lift[0]))
-    rc, ecc, pa = kin.cam_radius, kin.eccentricity, kin.pressure_angle
-    i_rc = np.argmin(rc, axis=1)
-    i_ecc = np.argmax(np.abs(ecc), axis=1)
-    i_pa = np.argmax(np.abs(pa), axis=1)
-    convex = float(np.max(-(kin.valve_lift[0] + kin.valve_d2[0])))
-    flat = datum.mechanism.type == "flat"
-    load, inside = out["load"], out["inside"]
-    i_max = np.argmax(load, axis=1)
-    has_inside = bool(np.any(inside))
-    i_min = np.argmin(np.where(inside, load, np.inf), axis=1)
-    speeds = bounce_speeds(kin, out["mu_solved"], clearance=out["clearance"], **out["load_kw"])
-    i_b = np.argmin(speeds, axis=1)
-    pmax = out["hertz"].pmax
-    i_h = np.argmax(np.where(np.isnan(pmax), -np.inf, pmax), axis=1)
-    hmin = out["film"].min
-    fin = np.isfinite(hmin)
-    i_f = np.argmin(np.where(fin, hmin, np.inf), axis=1)
-    any_fin = np.any(fin, axis=1)
-    load0, force = out["load0"], out["force"]
-    pos = load0 > 0.0
-    capped = pos & (force >= out["mu"] * load0 * (1.0 - 1e-12))
-    boundary = capped.sum(axis=1) / np.maximum(pos.sum(axis=1), 1)
-    tf = out["friction_torque"]
-    i_t = np.argmax(np.abs(tf), axis=1)
-    means = [np.asarray(cycle_mean(out[k]), dtype=float) * np.ones(n)
-             for k in ("power", "dissipation", "cam_torque")]
-    columns = dict(
-        cam_radius_at_max_lift=rc[:, nose], equivalent_radius_at_max_lift=kin.equivalent_radius[:, nose],
-        cam_radius_min=rc[rows, i_rc], eccentricity_max=np.abs(ecc[rows, i_ecc]),
-        pressure_angle_max=np.abs(pa[rows, i_pa]), load_max=load[rows, i_max],
-        load_min=load[rows, i_min], bounce=speeds[rows, i_b], hertz_max=pmax[rows, i_h],
-        hertz_at_max_lift=pmax[:, nose], film_min=hmin[rows, i_f], film_nose=hmin[:, nose],
-        tf_peak=tf[rows, i_t])
-    columns = {k: np.asarray(v, dtype=float).tolist() for k, v in columns.items()}
-    boundary, means = boundary.tolist(), [m.tolist() for m in means]
-    iterations = np.asarray(out["iterations"], dtype=float).tolist()
-    guides = _guide_metrics(out["guides"], n)
-    max_valve_lift = float(kin.valve_lift[0, nose])
-    zeros = zero_crossings_rows(theta, kin.entrainment)
-    per_case = []
-    for r in range(n):
-        col = {k: v[r] for k, v in columns.items()}
-        m = [("max_valve_lift", max_valve_lift, "m"),
-             ("cam_radius_at_max_lift", col["cam_radius_at_max_lift"], "m"),
-             ("equivalent_radius_at_max_lift", col["equivalent_radius_at_max_lift"], "m"),
-             ("cam_radius_min", col["cam_radius_min"], "m"),
-             ("eccentricity_max", col["eccentricity_max"], "m"),
-             ("pressure_angle_max", col["pressure_angle_max"], "rad")]
-        if flat:   # Ball (1988) §2.2.1, as the kinematics effect reports it
-            m.append(("min_base_radius_convex", convex, "m"))
-        m += [(f"zero_entrainment_{j + 1}", a, "rad")
-              for j, a in enumerate(zeros[r])]
-        m.append(("load_max", col["load_max"], "N"))
-        if has_inside:
-            m.append(("load_min", col["load_min"], "N"))
-        m.append(("load_iterations", iterations[r], "-"))
-        if np.isfinite(col["bounce"]):
-            m.append(("bounce_speed", float(rad_s_to_rpm(col["bounce"])), "rpm"))
-        m += [("hertz_max", col["hertz_max"], "Pa"),
-              ("hertz_at_max_lift", col["hertz_at_max_lift"], "Pa")]
-        if any_fin[r]:
-            m.append(("film_min", col["film_min"], "m"))
-        m += [("film_min_at_max_lift", col["film_nose"], "m"),
-              ("boundary_fraction", boundary[r], "-"),
-              ("friction_torque_peak", col["tf_peak"], "N*m"),
-              ("power_loss_mean", means[0][r], "W"),
-              ("dissipation_mean", means[1][r], "W"),
-              ("cam_torque_mean", means[2][r], "N*m")]
-        m += [(name, values[r], "W") for name, values in guides]
-        per_case.append(m)
-    return per_case
+    return guide_metrics(guide_losses(deck, kin))

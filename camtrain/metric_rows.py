@@ -1,0 +1,49 @@
+"""Metrics over a leading case axis: one definition serves a run and a batch of sweep cases.
+
+An effect states each of its metrics once, as a :class:`CaseMetric` read from per-angle arrays
+that may carry leading case axes (a run: none, so every value is one number; the sweep batch:
+one row per case). :func:`one_case` turns them into the rows of ``Result.add_metrics`` for a
+run, :func:`per_case` into the (name, value, unit) lists of every case of a batch. Only numpy.
+"""
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+
+class CaseMetric(NamedTuple):
+    """One metric of every case: ``value`` and ``angle`` one number or one per case;
+    ``present`` whether the case has the metric at all (True, or one bool per case)."""
+
+    name: str
+    value: object
+    unit: str
+    description: str
+    angle: object = None
+    present: object = True
+
+
+def at(values, index):
+    """``values`` at ``index`` along the last (angle) axis, case by case; ``index`` one int
+    for every case or one per case."""
+    if values.ndim == 1 or np.ndim(index) == 0:
+        return values[..., index]
+    return values[np.arange(values.shape[0]), index]
+
+
+def one_case(metrics) -> tuple:
+    """The ``Result.add_metrics`` rows of a run: its metrics that are present."""
+    return tuple((m.name, m.value, m.unit, m.description, m.angle)
+                 for m in metrics if bool(m.present))
+
+
+def per_case(metrics, n: int) -> list[list[tuple[str, float, str]]]:
+    """For each of ``n`` cases, its present metrics as (name, value, unit), in order."""
+    columns = []
+    for m in metrics:
+        values = np.broadcast_to(np.asarray(m.value, dtype=float), (n,)).tolist()
+        present = np.broadcast_to(np.asarray(m.present, dtype=bool), (n,)).tolist()
+        columns.append((m.name, m.unit, values, present))
+    return [[(name, values[r], unit) for name, unit, values, present in columns if present[r]]
+            for r in range(n)]
