@@ -66,22 +66,14 @@ def translating_kinematics(datum, valve, scal: dict, n: int):
 
 
 def geometry_ok(datum, kin) -> np.ndarray:
-    """Per case: the geometry checks of a single run pass (:mod:`camtrain.mechanisms.checks`:
-    a convex cam under a flat face; no cusp and no concave flank tighter than the grinding
-    wheel under a domed one; the contact on the face). A case that fails runs alone and
-    reports the error."""
+    """Per case: the geometry checks of a single run pass
+    (:func:`camtrain.mechanisms.checks.cases_pass`). A case that fails runs alone and reports
+    the error."""
+    from camtrain.mechanisms.checks import cases_pass
+
     mech = datum.mechanism
-    rc = kin.cam_radius
-    if mech.type == "flat":
-        ok = np.all(rc > 0.0, axis=1)
-    else:
-        ok = ~np.any((rc <= 0.0) & (rc > -kin.follower_radius), axis=1)
-        wheel = mech.grinding_wheel_radius
-        if wheel is not None and wheel > 0.0:
-            ok &= ~np.any((rc < 0.0) & (-rc < wheel), axis=1)
-    if mech.face_length is not None:
-        ok &= np.max(np.abs(kin.eccentricity), axis=1) <= 0.5 * mech.face_length
-    return ok
+    return cases_pass(kin, flat=mech.type == "flat", face_length=mech.face_length,
+                      min_concave_radius=mech.grinding_wheel_radius)
 
 
 def contact_of(datum, scal: dict):
