@@ -3,13 +3,12 @@
 An effect states each of its metrics once, as a :class:`CaseMetric` read from per-angle arrays
 that may carry leading case axes (a run: none, so every value is one number; the sweep batch:
 one row per case). :func:`one_case` turns them into the rows of ``Result.add_metrics`` for a
-run, :func:`per_case` into the (name, value, unit) lists of every case of a batch. Only numpy.
+run, :func:`per_case` into the (name, value, unit) lists of every case of a batch. Light to
+import (numpy only inside the functions that need it), so effect modules import it at their top.
 """
 from __future__ import annotations
 
 from typing import NamedTuple
-
-import numpy as np
 
 
 class CaseMetric(NamedTuple):
@@ -27,19 +26,41 @@ class CaseMetric(NamedTuple):
 def at(values, index):
     """``values`` at ``index`` along the last (angle) axis, case by case; ``index`` one int
     for every case or one per case."""
-    if values.ndim == 1 or np.ndim(index) == 0:
+    if values.ndim == 1:
+        return values[index]
+    if not getattr(index, "ndim", 0):
         return values[..., index]
+    import numpy as np
+
     return values[np.arange(values.shape[0]), index]
 
 
-def one_case(metrics) -> tuple:
-    """The ``Result.add_metrics`` rows of a run: its metrics that are present."""
-    return tuple((m.name, m.value, m.unit, m.description, m.angle)
-                 for m in metrics if bool(m.present))
+def count(mask):
+    """Number of true angles, case by case (the 1-D form of a run is the fast one)."""
+    import numpy as np
+
+    if mask.ndim == 1:
+        return np.count_nonzero(mask)
+    return np.count_nonzero(mask, axis=-1)
+
+
+def anywhere(mask):
+    """Whether any angle is true, case by case."""
+    import numpy as np
+
+    return np.count_nonzero(mask) > 0 if mask.ndim == 1 else np.any(mask, axis=-1)
+
+
+def one_case(metrics) -> list:
+    """The ``Result.add_metrics`` rows of a run: its metrics that are present (a CaseMetric
+    is such a row: add_metrics reads name, value, unit, description and angle)."""
+    return [m for m in metrics if m.present]
 
 
 def per_case(metrics, n: int) -> list[list[tuple[str, float, str]]]:
     """For each of ``n`` cases, its present metrics as (name, value, unit), in order."""
+    import numpy as np
+
     columns = []
     for m in metrics:
         values = np.broadcast_to(np.asarray(m.value, dtype=float), (n,)).tolist()

@@ -7,6 +7,8 @@ Taylor 1983; Ball eq. 4.3). The plan says which, from the products it provides.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, anywhere, at, one_case
+
 
 def missing(deck) -> list[str]:
     if deck.lubricant is None:
@@ -76,7 +78,6 @@ def run_pair(contact, kin, load, res, component: str | None = None):
 
     from camtrain.contact.hertz import is_line
     from camtrain.formulas.friction import film_parameter
-    from camtrain.metric_rows import one_case
 
     no_width = load is not None and contact.width is None and is_line(kin)
     if no_width:
@@ -123,12 +124,11 @@ def film_metrics(theta, h_min, nose: int, tag: str = "") -> list:
     sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
     import numpy as np
 
-    from camtrain.metric_rows import CaseMetric, at
 
     fin = np.isfinite(h_min)
     i = np.where(fin, h_min, np.inf).argmin(axis=-1)
     return [CaseMetric("film_min", at(h_min, i), "m", "smallest minimum film over the cycle"
-                       + tag, at(theta, i), np.any(fin, axis=-1)),
+                       + tag, at(theta, i), anywhere(fin)),
             CaseMetric("film_min_at_max_lift", h_min[..., nose], "m",
                        "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
                        theta[..., nose])]

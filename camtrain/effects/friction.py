@@ -7,6 +7,8 @@ Greenwood-Tripp mixed model (Teodorescu et al. 2005), by ``tribology.friction_mo
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, count, one_case
+
 
 def missing(deck) -> list[str]:
     return []
@@ -21,12 +23,11 @@ def friction_metrics(load, force, boundary_friction, tag: str = "") -> list:
     a sweep batch (:class:`camtrain.metric_rows.CaseMetric`); ``load`` >= 0."""
     import numpy as np
 
-    from camtrain.metric_rows import CaseMetric
 
     pos = load > 0.0
     capped = pos & (force >= boundary_friction * load * (1.0 - 1e-12))
-    share = (np.count_nonzero(capped, axis=-1)
-             / np.maximum(np.count_nonzero(pos, axis=-1), 1))
+    loaded = count(pos)
+    share = count(capped) / (max(loaded, 1) if load.ndim == 1 else np.maximum(loaded, 1))
     return [CaseMetric("boundary_fraction", share, "-",
                        "share of loaded angles at the boundary friction limit" + tag)]
 
@@ -39,7 +40,6 @@ def run(deck, inputs, res):
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
-    from camtrain.metric_rows import one_case
 
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     hertz, films = inputs[ContactHertz], inputs[ContactFilm]

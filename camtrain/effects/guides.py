@@ -5,6 +5,8 @@ one valve) and are not included in ``power_loss_mean``.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, one_case
+
 
 def missing(deck) -> list[str]:
     out = [] if deck.guides is not None else ["[guides] section"]
@@ -23,7 +25,6 @@ def guide_metrics(losses) -> list:
     """Cycle-mean power of each guide and their sum (Yang 1992 §3.3.2), for a run or every case
     of a sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
     from camtrain.formulas import cycle_mean
-    from camtrain.metric_rows import CaseMetric
 
     total = 0.0
     out = []
@@ -44,7 +45,6 @@ def guide_metrics(losses) -> list:
 def run(deck, inputs, res):
     from camtrain.contact.guides import guide_losses
     from camtrain.mechanisms import TrainKinematics
-    from camtrain.metric_rows import one_case
 
     losses = guide_losses(deck, inputs[TrainKinematics].main)
     for name, power in (("follower_guide", losses.follower_guide),

@@ -6,6 +6,8 @@ contact) per pair; the closing pair of a desmodromic train is the result's ``clo
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, at, one_case
+
 
 def missing(deck) -> list[str]:
     return [] if deck.cam.width is not None else ["cam.width"]
@@ -23,7 +25,6 @@ def run(deck, inputs, res):
     from camtrain.contact.products import ContactHertz
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
-    from camtrain.metric_rows import one_case
 
     train, loads = inputs[TrainKinematics], inputs[ContactLoad]
     fields = []
@@ -57,7 +58,6 @@ def hertz_metrics(theta, pmax, nose: int, tag: str = "") -> list:
     every case of a sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
     import numpy as np
 
-    from camtrain.metric_rows import CaseMetric, at
 
     undefined = np.isnan(pmax)
     p = np.where(undefined, -np.inf, pmax) if np.count_nonzero(undefined) else pmax

@@ -10,6 +10,7 @@ import math
 from functools import lru_cache
 
 from camtrain.identity_cache import by_identity
+from camtrain.metric_rows import CaseMetric, at, one_case
 
 
 def missing(deck) -> list[str]:
@@ -240,11 +241,10 @@ def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving
     """The metric rows, zero-entrainment angles and warning of :func:`kinematics_metrics`: they
     depend on the (shared, read-only) Kinematics and these few deck facts only, so they are
     formed once per Kinematics."""
-    from camtrain.metric_rows import one_case
 
     label = f" of the {component} pair" if component else ""
     zeros = tuple(zero_crossings(k.theta, k.entrainment))
-    metrics = one_case(pair_metrics(k, label, convexity, [zeros]))
+    metrics = tuple(one_case(pair_metrics(k, label, convexity, [zeros])))
     warning = ""
     if zeros and moving:
         where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
@@ -260,7 +260,6 @@ def pair_metrics(k, label: str, convexity: bool, zeros: list) -> list:
     case's zero-entrainment angles (:func:`zero_crossings_rows`)."""
     import numpy as np
 
-    from camtrain.metric_rows import CaseMetric, at
 
     theta = k.theta
     nose = k.nose

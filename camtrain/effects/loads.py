@@ -8,7 +8,10 @@ friction/load iteration is the contact model's (:mod:`camtrain.contact.friction`
 """
 from __future__ import annotations
 
+import math
+
 from camtrain.identity_cache import by_identity
+from camtrain.metric_rows import CaseMetric, anywhere, at, one_case
 
 RIGID = "rigid valve train, D'Alembert balance (Ball 1988 §4.2)"
 DESMODROMIC = "rigid desmodromic train, both pairs (Ball 1988 App D)"
@@ -138,21 +141,25 @@ def load_metrics(theta, load, inside, iterations, tolerance: float, speeds) -> l
     from the per-angle ``speeds`` of :func:`camtrain.loads.bounce.bounce_speeds`."""
     import numpy as np
 
-    from camtrain.metric_rows import CaseMetric, at
     from camtrain.units import rad_s_to_rpm
 
     i = load.argmax(axis=-1)
     j = np.where(inside, load, np.inf).argmin(axis=-1)
     b = speeds.argmin(axis=-1)
     bounce = at(speeds, b)
-    finite = np.isfinite(bounce)
+    if load.ndim == 1:   # a run: plain numbers
+        bounce = float(bounce)
+        finite = math.isfinite(bounce)
+    else:
+        finite = np.isfinite(bounce)
+    bounce = np.where(finite, bounce, 0.0) if load.ndim > 1 else bounce if finite else 0.0
     return [
         CaseMetric("load_max", at(load, i), "N", "largest contact load", at(theta, i)),
         CaseMetric("load_min", at(load, j), "N", "smallest contact load while the cam drives "
-                   "the valve", at(theta, j), np.any(inside, axis=-1)),
+                   "the valve", at(theta, j), anywhere(inside)),
         CaseMetric("load_iterations", iterations, "-",
                    f"friction/load iterations (tolerance {tolerance:g})"),
-        CaseMetric("bounce_speed", rad_s_to_rpm(np.where(finite, bounce, 0.0)), "rpm",
+        CaseMetric("bounce_speed", rad_s_to_rpm(bounce), "rpm",
                    "camshaft speed at which the rigid train first loses contact",
                    at(theta, b), finite)]
 
@@ -164,7 +171,6 @@ def run(deck, inputs, res):
     from camtrain.loads.forces import contact_mask, load_parts, valve_force
     from camtrain.loads.product import ContactLoad, runs
     from camtrain.mechanisms.base import TrainKinematics
-    from camtrain.metric_rows import one_case
 
     train = inputs[TrainKinematics]
     if deck.mechanism.type == "desmodromic":

@@ -8,6 +8,8 @@ The guide losses are the ``guides`` effect's.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, at, one_case
+
 
 def missing(deck) -> list[str]:
     return []
@@ -58,7 +60,6 @@ def power_metrics(theta, tf, power, dissipation, total, tag: str = "") -> list:
     import numpy as np
 
     from camtrain.formulas.cycle import cycle_mean
-    from camtrain.metric_rows import CaseMetric, at
 
     i = np.abs(tf).argmax(axis=-1)
     return [
@@ -78,7 +79,6 @@ def run_pair(kin, load, force, res, component: str | None = None):
     (cam torque, friction torque, power) arrays."""
     import numpy as np
 
-    from camtrain.metric_rows import one_case
 
     tag = f" ({component} pair)" if component else ""
     tf, total, power, dissipation = pair_torques(kin, np.maximum(load, 0.0), force)
