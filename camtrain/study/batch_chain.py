@@ -1,14 +1,15 @@
-"""The valve-train chain for many sweep cases at once: (cases, angles) arrays.
+"""Many sweep cases of the valve-train chain at once, by the code of a single run.
 
 The cases of a batch share the deck except for scalars the chain uses elementwise (speed, base
 radius, spring, valve-side mass, lubricant, boundary coefficient, materials, cam width); each
-such scalar becomes a column of shape (cases, 1) and broadcasts against the angle grid through
-the same physics functions a single run calls: the flat follower's contact kernel
-(:func:`camtrain.mechanisms.translating.translating_contact`), the rigid-train load
-(:func:`camtrain.loads.contact_load`), the pair's contact model (Hertz, film, friction laws) and
-the torque and power formulas. The metrics of each case are then read from its row, as the
-effects write them for one run. :mod:`camtrain.study.batch` decides which sweeps qualify and runs
-everything else case by case.
+such scalar becomes a column of shape (cases, 1) (:func:`columns`, :func:`contact_of`) and
+broadcasts against the angle grid through the pieces a single run calls: the translating
+follower's kinematics builder, the rigid-train load and Ball's friction/load iteration
+(:func:`camtrain.loads.iteration.iterate_cases`), the pair's contact model, the torques, the
+geometry predicates, and the metric functions of the kinematics, loads, hertz, film, friction,
+power and guides effects (:mod:`camtrain.metric_rows`). Nothing of the chain is written here
+a second time: :func:`run_chain` calls those pieces in the plan's order.
+:mod:`camtrain.study.batch` decides which sweeps qualify and runs everything else case by case.
 """
 from __future__ import annotations
 
