@@ -63,8 +63,15 @@ def per_case(metrics, n: int) -> list[list[tuple[str, float, str]]]:
 
     columns = []
     for m in metrics:
-        values = np.broadcast_to(np.asarray(m.value, dtype=float), (n,)).tolist()
-        present = np.broadcast_to(np.asarray(m.present, dtype=bool), (n,)).tolist()
+        value, present = m.value, m.present
+        values = (np.asarray(value, dtype=float).tolist() if getattr(value, "ndim", 0)
+                  else [float(value)] * n)
+        if present is True:
+            present = None   # every case has it
+        elif getattr(present, "ndim", 0):
+            present = present.tolist()
+        else:
+            present = [bool(present)] * n
         columns.append((m.name, m.unit, values, present))
-    return [[(name, values[r], unit) for name, unit, values, present in columns if present[r]]
-            for r in range(n)]
+    return [[(name, values[r], unit) for name, unit, values, present in columns
+             if present is None or present[r]] for r in range(n)]

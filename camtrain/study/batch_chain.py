@@ -135,7 +135,8 @@ def run_chain(datum, valve, scal: dict, n: int) -> dict:
     film = contact.film(kin, load0)
     force = contact.friction(kin, load0, hz, film).force
     tf, total, power, dissipation = power_effect.pair_torques(kin, load0, force)
-    speeds = bounce_speeds(kin, sol.mu, clearance=kw["clearance"], **spring)
+    mu = sol.mu if sol.friction is not None else mu_b   # as the loads effect takes it
+    speeds = bounce_speeds(kin, mu, clearance=kw["clearance"], **spring)
     theta, nose = kin.theta, kin.nose
     zeros = kinematics_effect.zero_crossings_rows(valve.theta, kin.entrainment)
     metrics = (kinematics_effect.pair_metrics(kin, "", datum.mechanism.type == "flat", zeros)
