@@ -129,9 +129,9 @@ def film_metrics(theta, h_min, nose: int, tag: str = "") -> list:
     i = np.where(fin, h_min, np.inf).argmin(axis=-1)
     return [CaseMetric("film_min", at(h_min, i), "m", "smallest minimum film over the cycle"
                        + tag, at(theta, i), anywhere(fin)),
-            CaseMetric("film_min_at_max_lift", h_min[..., nose], "m",
+            CaseMetric("film_min_at_max_lift", at(h_min, nose), "m",
                        "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-                       theta[..., nose])]
+                       at(theta, nose))]
 
 
 def transient_outputs(film, kin, res, component: str | None = None) -> None:

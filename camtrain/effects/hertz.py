@@ -64,6 +64,6 @@ def hertz_metrics(theta, pmax, nose: int, tag: str = "") -> list:
     i = p.argmax(axis=-1)
     return [CaseMetric("hertz_max", at(pmax, i), "Pa",
                        "largest Hertz pressure over the cycle" + tag, at(theta, i)),
-            CaseMetric("hertz_at_max_lift", pmax[..., nose], "Pa",
+            CaseMetric("hertz_at_max_lift", at(pmax, nose), "Pa",
                        "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-                       theta[..., nose])]
+                       at(theta, nose))]

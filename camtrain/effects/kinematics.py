@@ -263,16 +263,16 @@ def pair_metrics(k, label: str, convexity: bool, zeros: list) -> list:
 
     theta = k.theta
     nose = k.nose
-    at_nose = theta[..., nose]
+    at_nose = at(theta, nose)
     i = k.cam_radius.argmin(axis=-1)
     j = np.abs(k.eccentricity).argmax(axis=-1)
     m = np.abs(k.pressure_angle).argmax(axis=-1)
     metrics = [
-        CaseMetric("max_valve_lift", k.valve_lift[..., nose], "m", "maximum valve lift" + label,
+        CaseMetric("max_valve_lift", at(k.valve_lift, nose), "m", "maximum valve lift" + label,
                    at_nose),
-        CaseMetric("cam_radius_at_max_lift", k.cam_radius[..., nose], "m",
+        CaseMetric("cam_radius_at_max_lift", at(k.cam_radius, nose), "m",
                    "cam radius of curvature at maximum lift" + label, at_nose),
-        CaseMetric("equivalent_radius_at_max_lift", k.equivalent_radius[..., nose], "m",
+        CaseMetric("equivalent_radius_at_max_lift", at(k.equivalent_radius, nose), "m",
                    "equivalent radius at maximum lift" + label, at_nose),
         CaseMetric("cam_radius_min", at(k.cam_radius, i), "m",
                    "smallest cam radius of curvature (most negative: tightest concave flank)"
