@@ -26,7 +26,7 @@ PEAK = ("import resource, subprocess, sys; subprocess.run(sys.argv[1:], check=Tr
 def _sweep_cmd(out, jobs: int, points: int | None = None) -> list[str]:
     grid = ["--set", f"solver.angle_points={points}"] if points else []
     return [sys.executable, "-m", "camtrain.cli", "sweep", DECK, "-p", "base_radius", "--range",
-            f"14:22:{CASES}", *grid, "--no-plots", "--quiet", "--jobs", str(jobs), "--out",
+            f"14:22:{CASES}", *grid, "--no-plots", "--quiet", "--force", "--jobs", str(jobs), "--out",
             str(out)]
 
 

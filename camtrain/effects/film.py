@@ -7,6 +7,8 @@ Taylor 1983; Ball eq. 4.3). The plan says which, from the products it provides.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, anywhere, at, one_case
+
 
 def missing(deck) -> list[str]:
     if deck.lubricant is None:
@@ -104,17 +106,8 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     columns.append(("lambda", lam, "-", "film parameter h_min / sigma (< 1: boundary regime)"
                     + tag))
     res.add_columns(columns, component)
-    metrics = []
-    if finite:
-        h = np.where(fin, film.min, np.inf)
-        i = int(h.argmin())
-        metrics.append(("film_min", h[i], "m", "smallest minimum film over the cycle" + tag,
-                        kin.theta[i]))
     k = kin.nose
-    metrics.append(("film_min_at_max_lift", film.min[k], "m",
-                    "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-                    kin.theta[k]))
-    res.add_metrics(metrics, component)
+    res.add_metrics(one_case(film_metrics(kin.theta, film.min, k, tag)), component)
     if not np.isfinite(film.min[k]):
         why = ("the pair carries no load there" if load is not None and not load[k] > 0.0
                else "the contact is not Hertzian there")
@@ -124,6 +117,21 @@ def run_pair(contact, kin, load, res, component: str | None = None):
     if film.steady is not None:
         transient_outputs(film, kin, res, component)
     return film
+
+
+def film_metrics(theta, h_min, nose: int, tag: str = "") -> list:
+    """Smallest finite minimum film and the film at maximum lift, for a run or every case of a
+    sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
+    import numpy as np
+
+
+    fin = np.isfinite(h_min)
+    i = np.where(fin, h_min, np.inf).argmin(axis=-1)
+    return [CaseMetric("film_min", at(h_min, i), "m", "smallest minimum film over the cycle"
+                       + tag, at(theta, i), anywhere(fin)),
+            CaseMetric("film_min_at_max_lift", at(h_min, nose), "m",
+                       "minimum film at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
+                       at(theta, nose))]
 
 
 def transient_outputs(film, kin, res, component: str | None = None) -> None:

@@ -7,6 +7,8 @@ Greenwood-Tripp mixed model (Teodorescu et al. 2005), by ``tribology.friction_mo
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, count, one_case
+
 
 def missing(deck) -> list[str]:
     return []
@@ -14,6 +16,20 @@ def missing(deck) -> list[str]:
 
 def reason(deck, planned) -> str:
     return "Hertz zone and film available"
+
+
+def friction_metrics(load, force, boundary_friction, tag: str = "") -> list:
+    """Share of the loaded angles at the boundary friction limit, for a run or every case of
+    a sweep batch (:class:`camtrain.metric_rows.CaseMetric`); ``load`` >= 0."""
+    import numpy as np
+
+
+    pos = load > 0.0
+    capped = pos & (force >= boundary_friction * load * (1.0 - 1e-12))
+    loaded = count(pos)
+    share = count(capped) / (max(loaded, 1) if load.ndim == 1 else np.maximum(loaded, 1))
+    return [CaseMetric("boundary_fraction", share, "-",
+                       "share of loaded angles at the boundary friction limit" + tag)]
 
 
 def run(deck, inputs, res):
@@ -43,11 +59,9 @@ def run(deck, inputs, res):
              f"cam/follower friction force ({contact.friction_law} model){tag}"),
             ("friction_coefficient", mu, "-", "friction coefficient F/W (0 unloaded)" + tag)),
             name)
-        capped = pos & (force >= contact.tribology.boundary_friction * load * (1.0 - 1e-12))
-        res.add_metric("boundary_fraction",
-                       np.count_nonzero(capped) / max(np.count_nonzero(pos), 1), "-",
-                       "share of loaded angles at the boundary friction limit" + tag,
-                       component=name)
+        res.add_metrics(one_case(friction_metrics(load, force,
+                                                  contact.tribology.boundary_friction, tag)),
+                        name)
         skipped = pos & ~(field.used | np.isnan(hertz[component].pmax))
         if np.count_nonzero(skipped):
             res.warn(f"friction_force not computed{tag} at {int(skipped.sum())} loaded angles "

@@ -5,6 +5,8 @@ one valve) and are not included in ``power_loss_mean``.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, one_case
+
 
 def missing(deck) -> list[str]:
     out = [] if deck.guides is not None else ["[guides] section"]
@@ -19,26 +21,38 @@ def reason(deck, planned) -> str:
     return f"[guides] and lubricant given: Couette shear of the {which} (Yang 1992 eq. 3.29)"
 
 
-def run(deck, inputs, res):
-    from camtrain.contact.guides import guide_losses
+def guide_metrics(losses) -> list:
+    """Cycle-mean power of each guide and their sum (Yang 1992 §3.3.2), for a run or every case
+    of a sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
     from camtrain.formulas import cycle_mean
-    from camtrain.mechanisms import TrainKinematics
 
-    losses = guide_losses(deck, inputs[TrainKinematics].main)
     total = 0.0
+    out = []
     for name, power in (("follower_guide", losses.follower_guide),
                         ("valve_guide", losses.valve_guide)):
         if power is None:
             continue
         what = name.replace("_", "/")
-        res.add_column(f"{name}_power", power, "W",
-                       f"{what} Couette shear power (Yang 1992 eq. 3.29)")
-        mean = float(cycle_mean(power))
-        total += mean
-        res.add_metric(f"{name}_power_mean", mean, "W",
-                       f"cycle-mean {what} friction power, one valve train (Yang 1992 §3.3.2)")
-    res.add_metric("guide_power_mean", total, "W", "cycle-mean guide friction power, one "
-                   "valve train (not included in power_loss_mean)")
+        mean = cycle_mean(power)
+        total = total + mean
+        out.append(CaseMetric(f"{name}_power_mean", mean, "W", f"cycle-mean {what} friction "
+                              "power, one valve train (Yang 1992 §3.3.2)"))
+    out.append(CaseMetric("guide_power_mean", total, "W", "cycle-mean guide friction power, one "
+                          "valve train (not included in power_loss_mean)"))
+    return out
+
+
+def run(deck, inputs, res):
+    from camtrain.contact.guides import guide_losses
+    from camtrain.mechanisms import TrainKinematics
+
+    losses = guide_losses(deck, inputs[TrainKinematics].main)
+    for name, power in (("follower_guide", losses.follower_guide),
+                        ("valve_guide", losses.valve_guide)):
+        if power is not None:
+            res.add_column(f"{name}_power", power, "W", f"{name.replace('_', '/')} Couette "
+                           "shear power (Yang 1992 eq. 3.29)")
+    res.add_metrics(one_case(guide_metrics(losses)))
     if deck.guides.follower_diameter is not None and losses.follower_guide is None:
         res.warn("guides.follower_*: a pivoted follower has no guide; follower/guide friction "
                  "skipped")

@@ -6,6 +6,8 @@ contact) per pair; the closing pair of a desmodromic train is the result's ``clo
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, at, one_case
+
 
 def missing(deck) -> list[str]:
     return [] if deck.cam.width is not None else ["cam.width"]
@@ -47,14 +49,21 @@ def run(deck, inputs, res):
             res.warn(f"hertz_pmax is infinite{tag} at {int(infinite.sum())} loaded "
                      "angles (a vanishing contact radius or width): the contact cannot carry "
                      "the load there")
-        undefined = np.isnan(hz.pmax)
-        p = np.where(undefined, -np.inf, hz.pmax) if np.count_nonzero(undefined) else hz.pmax
-        i = int(p.argmax())
-        k = kin.nose
-        res.add_metrics((
-            ("hertz_max", hz.pmax[i], "Pa", "largest Hertz pressure over the cycle" + tag,
-             kin.theta[i]),
-            ("hertz_at_max_lift", hz.pmax[k], "Pa",
-             "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
-             kin.theta[k])), name)
+        res.add_metrics(one_case(hertz_metrics(kin.theta, hz.pmax, kin.nose, tag)), name)
     return ContactHertz(tuple(fields))
+
+
+def hertz_metrics(theta, pmax, nose: int, tag: str = "") -> list:
+    """Largest Hertz pressure (NaN angles skipped) and the one at maximum lift, for a run or
+    every case of a sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
+    import numpy as np
+
+
+    undefined = np.isnan(pmax)
+    p = np.where(undefined, -np.inf, pmax) if np.count_nonzero(undefined) else pmax
+    i = p.argmax(axis=-1)
+    return [CaseMetric("hertz_max", at(pmax, i), "Pa",
+                       "largest Hertz pressure over the cycle" + tag, at(theta, i)),
+            CaseMetric("hertz_at_max_lift", at(pmax, nose), "Pa",
+                       "Hertz pressure at the maximum-lift position (Ball Tables 5.1-5.3)" + tag,
+                       at(theta, nose))]

@@ -10,6 +10,7 @@ import math
 from functools import lru_cache
 
 from camtrain.identity_cache import by_identity
+from camtrain.metric_rows import CaseMetric, at, one_case
 
 
 def missing(deck) -> list[str]:
@@ -240,69 +241,96 @@ def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving
     """The metric rows, zero-entrainment angles and warning of :func:`kinematics_metrics`: they
     depend on the (shared, read-only) Kinematics and these few deck facts only, so they are
     formed once per Kinematics."""
-    import numpy as np
-
-    theta = k.theta
-    nose = k.nose
-    at_nose = theta[nose]
 
     label = f" of the {component} pair" if component else ""
-    i = int(k.cam_radius.argmin())
-    j = int(np.abs(k.eccentricity).argmax())
-    m = int(np.abs(k.pressure_angle).argmax())
-    metrics = [
-        ("max_valve_lift", k.valve_lift[nose], "m", "maximum valve lift" + label, at_nose),
-        ("cam_radius_at_max_lift", k.cam_radius[nose], "m",
-         "cam radius of curvature at maximum lift" + label, at_nose),
-        ("equivalent_radius_at_max_lift", k.equivalent_radius[nose], "m",
-         "equivalent radius at maximum lift" + label, at_nose),
-        ("cam_radius_min", k.cam_radius[i], "m",
-         "smallest cam radius of curvature (most negative: tightest concave flank)" + label,
-         theta[i]),
-        ("eccentricity_max", abs(k.eccentricity[j]), "m",
-         "largest distance of the contact from the face centre" + label, theta[j]),
-        ("pressure_angle_max", abs(k.pressure_angle[m]), "rad",
-         "largest pressure angle" + label, theta[m]),
-    ]
-    if convexity:
-        # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
-        metrics.append(("min_base_radius_convex", float((-(k.valve_lift + k.valve_d2)).max()),
-                        "m", "smallest base radius for which the cam stays convex under a "
-                        "flat follower"))
-    zeros = tuple(zero_crossings(theta, k.entrainment))
-    metrics += [(f"zero_entrainment_{n + 1}", angle, "rad",
-                 f"cam angle where the entrainment velocity passes through zero{label}", angle)
-                for n, angle in enumerate(zeros)]
+    zeros = tuple(zero_crossings(k.theta, k.entrainment))
+    metrics = tuple(one_case(pair_metrics(k, label, convexity, [zeros])))
     warning = ""
     if zeros and moving:
         where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
         warning = (f"entrainment velocity passes through zero{label} at {where} deg: the "
                    "steady EHL film vanishes there"
                    + (carried or STEADY_FILM_NOTE))
-    return tuple(metrics), zeros, warning
+    return metrics, zeros, warning
+
+
+def pair_metrics(k, label: str, convexity: bool, zeros: list) -> list:
+    """The kinematics metrics of one pair (:class:`camtrain.metric_rows.CaseMetric`), for a run
+    or every case of a sweep batch (a Kinematics of (cases, angles) arrays); ``zeros``: each
+    case's zero-entrainment angles (:func:`zero_crossings_rows`)."""
+    import numpy as np
+
+
+    theta = k.theta
+    nose = k.nose
+    at_nose = at(theta, nose)
+    i = k.cam_radius.argmin(axis=-1)
+    j = np.abs(k.eccentricity).argmax(axis=-1)
+    m = np.abs(k.pressure_angle).argmax(axis=-1)
+    metrics = [
+        CaseMetric("max_valve_lift", at(k.valve_lift, nose), "m", "maximum valve lift" + label,
+                   at_nose),
+        CaseMetric("cam_radius_at_max_lift", at(k.cam_radius, nose), "m",
+                   "cam radius of curvature at maximum lift" + label, at_nose),
+        CaseMetric("equivalent_radius_at_max_lift", at(k.equivalent_radius, nose), "m",
+                   "equivalent radius at maximum lift" + label, at_nose),
+        CaseMetric("cam_radius_min", at(k.cam_radius, i), "m",
+                   "smallest cam radius of curvature (most negative: tightest concave flank)"
+                   + label, at(theta, i)),
+        CaseMetric("eccentricity_max", abs(at(k.eccentricity, j)), "m",
+                   "largest distance of the contact from the face centre" + label, at(theta, j)),
+        CaseMetric("pressure_angle_max", abs(at(k.pressure_angle, m)), "rad",
+                   "largest pressure angle" + label, at(theta, m)),
+    ]
+    if convexity:
+        # Ball (1988) §2.2.1: the cam is convex (r_c > 0) only if r_B > -min(l + l'')
+        metrics.append(CaseMetric(
+            "min_base_radius_convex", (-(k.valve_lift + k.valve_d2)).max(axis=-1), "m",
+            "smallest base radius for which the cam stays convex under a flat follower"))
+    for n in range(max(map(len, zeros), default=0)):
+        angles = np.array([z[n] if n < len(z) else np.nan for z in zeros])
+        present = np.array([n < len(z) for z in zeros])
+        if theta.ndim == 1:   # a run: one case
+            angles, present = angles[0], present[0]
+        metrics.append(CaseMetric(
+            f"zero_entrainment_{n + 1}", angles, "rad",
+            f"cam angle where the entrainment velocity passes through zero{label}", angles,
+            present))
+    return metrics
 
 
 def zero_crossings(theta, values) -> list[float]:
     """Angles where a periodic per-angle quantity changes sign (linear interpolation); a run of
-    exact zeros is reported once, at its start."""
+    exact zeros is reported once, at its start (:func:`zero_crossings_rows` of one row)."""
+    import numpy as np
+
+    return zero_crossings_rows(theta, np.asarray(values, dtype=float)[None, :])[0]
+
+
+def zero_crossings_rows(theta, values) -> list[list[float]]:
+    """Per row of ``values`` (cases, angles) over the 1-D grid ``theta``, the angles where the
+    periodic quantity changes sign (linear interpolation); a run of exact zeros is reported
+    once, at its start."""
     import numpy as np
 
     v = np.asarray(values, dtype=float)
-    sign = np.sign(v)
-    idx = np.flatnonzero((sign == 0.0) | (sign * np.concatenate((sign[1:], sign[:1])) < 0))
-    out = []
-    n = v.size
-    two_pi = 2.0 * math.pi
-    for i in idx.tolist():   # a few angles per cycle
-        vi = float(v[i])
-        if vi == 0.0:
-            if v[i - 1] != 0.0:
-                out.append(float(theta[i]))
+    v_next = np.roll(v, -1, axis=-1)
+    t_next = np.roll(theta, -1).copy()
+    t_next[-1] += 2.0 * np.pi
+    rows, idx = np.nonzero((v == 0.0) | (np.sign(v) * np.sign(v_next) < 0))
+    here, after = v[rows, idx], v_next[rows, idx]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        angle = theta[idx] + here / (here - after) * (t_next[idx] - theta[idx])
+    angle = (angle + np.pi) % (2.0 * np.pi) - np.pi
+    before = v[rows, idx - 1]
+    out: list[list[float]] = [[] for _ in range(v.shape[0])]
+    for r, i, h, b, a in zip(rows.tolist(), idx.tolist(), here.tolist(), before.tolist(),
+                             angle.tolist(), strict=True):
+        if h == 0.0:
+            if b != 0.0:   # a run of exact zeros is reported once, at its start
+                out[r].append(float(theta[i]))
             continue
-        j = (i + 1) % n
-        t, t_next = float(theta[i]), float(theta[j]) + (two_pi if j == 0 else 0.0)
-        angle = t + vi / (vi - float(v[j])) * (t_next - t)
-        out.append((angle + math.pi) % two_pi - math.pi)
+        out[r].append(a)
     return out
 
 

@@ -8,7 +8,10 @@ friction/load iteration is the contact model's (:mod:`camtrain.contact.friction`
 """
 from __future__ import annotations
 
+import math
+
 from camtrain.identity_cache import by_identity
+from camtrain.metric_rows import CaseMetric, anywhere, at, one_case
 
 RIGID = "rigid valve train, D'Alembert balance (Ball 1988 §4.2)"
 DESMODROMIC = "rigid desmodromic train, both pairs (Ball 1988 App D)"
@@ -131,14 +134,43 @@ def run_desmodromic(deck, train, res):
                        model=DESMODROMIC, closing=d.closing)
 
 
+def load_metrics(theta, load, inside, iterations, tolerance: float, speeds) -> list:
+    """The rigid train's load metrics (:class:`camtrain.metric_rows.CaseMetric`), for a run or
+    for every case of a sweep batch (arrays with a leading case axis): largest load, smallest
+    while the cam drives the valve, iterations, and the camshaft speed of first loss of contact
+    from the per-angle ``speeds`` of :func:`camtrain.loads.bounce.bounce_speeds`."""
+    import numpy as np
+
+    from camtrain.units import rad_s_to_rpm
+
+    i = load.argmax(axis=-1)
+    j = np.where(inside, load, np.inf).argmin(axis=-1)
+    b = speeds.argmin(axis=-1)
+    bounce = at(speeds, b)
+    if load.ndim == 1:   # a run: plain numbers
+        bounce = float(bounce)
+        finite = math.isfinite(bounce)
+    else:
+        finite = np.isfinite(bounce)
+    bounce = np.where(finite, bounce, 0.0) if load.ndim > 1 else bounce if finite else 0.0
+    return [
+        CaseMetric("load_max", at(load, i), "N", "largest contact load", at(theta, i)),
+        CaseMetric("load_min", at(load, j), "N", "smallest contact load while the cam drives "
+                   "the valve", at(theta, j), anywhere(inside)),
+        CaseMetric("load_iterations", iterations, "-",
+                   f"friction/load iterations (tolerance {tolerance:g})"),
+        CaseMetric("bounce_speed", rad_s_to_rpm(bounce), "rpm",
+                   "camshaft speed at which the rigid train first loses contact",
+                   at(theta, b), finite)]
+
+
 def run(deck, inputs, res):
     import numpy as np
 
-    from camtrain.loads.bounce import bounce_speed
+    from camtrain.loads.bounce import bounce_speeds
     from camtrain.loads.forces import contact_mask, load_parts, valve_force
     from camtrain.loads.product import ContactLoad, runs
     from camtrain.mechanisms.base import TrainKinematics
-    from camtrain.units import rad_s_to_rpm
 
     train = inputs[TrainKinematics]
     if deck.mechanism.type == "desmodromic":
@@ -159,19 +191,10 @@ def run(deck, inputs, res):
                    "valve-side force, spring + valve-side inertia (0 while the valve is seated)")
     res.add_column("load", load, "N", "normal cam/follower contact load (rigid train; 0 before "
                    "the cam takes up the valve clearance; negative = loss of contact)")
-    i, j = int(load.argmax()), int(np.where(inside, load, np.inf).argmin())
-    res.add_metric("load_max", load[i], "N", "largest contact load", kin.theta[i])
-    if np.count_nonzero(inside):
-        res.add_metric("load_min", load[j], "N", "smallest contact load while the cam drives "
-                       "the valve", kin.theta[j])
-    res.add_metric("load_iterations", sol.iterations, "-",
-                   f"friction/load iterations (tolerance {sol.tolerance:g})")
     mu = sol.mu if sol.friction is not None else deck.tribology.boundary_friction
-    b = bounce_speed(kin, mu, clearance=kw["clearance"], parts=parts, **spring)
-    if np.isfinite(b.omega):
-        res.add_metric("bounce_speed", rad_s_to_rpm(b.omega), "rpm",
-                       "camshaft speed at which the rigid train first loses contact",
-                       b.angle)
+    speeds = bounce_speeds(kin, mu, clearance=kw["clearance"], parts=parts, **spring)
+    res.add_metrics(one_case(load_metrics(kin.theta, load, inside, sol.iterations,
+                                          sol.tolerance, speeds)))
     lost = inside & (load <= 0.0)
     if np.count_nonzero(lost):
         for start, end in runs(lost, kin.theta):

@@ -8,6 +8,8 @@ The guide losses are the ``guides`` effect's.
 """
 from __future__ import annotations
 
+from camtrain.metric_rows import CaseMetric, at, one_case
+
 
 def missing(deck) -> list[str]:
     return []
@@ -38,32 +40,53 @@ def run(deck, inputs, res):
     return CamTorque(*main, total_power=total)
 
 
+def pair_torques(kin, load, force):
+    """Friction torque F r, total cam torque W e + F r, friction power F r omega and contact
+    dissipation F |V_s| per angle (Ball 1988 eq. 4.8), for a run or every case of a sweep batch
+    ((cases, angles) arrays); ``load`` >= 0."""
+    import numpy as np
+
+    from camtrain.formulas.cycle import cam_torque, friction_torque
+
+    tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
+    total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
+                       dtype=float)
+    return tf, total, tf * abs(kin.omega), force * np.abs(kin.sliding)
+
+
+def power_metrics(theta, tf, power, dissipation, total, tag: str = "") -> list:
+    """Peak friction torque and the cycle means of power, dissipation and cam torque (Ball eq.
+    4.9), for a run or every case of a sweep batch (:class:`camtrain.metric_rows.CaseMetric`)."""
+    import numpy as np
+
+    from camtrain.formulas.cycle import cycle_mean
+
+    i = np.abs(tf).argmax(axis=-1)
+    return [
+        CaseMetric("friction_torque_peak", at(tf, i), "N*m", "largest friction torque" + tag,
+                   at(theta, i)),
+        CaseMetric("power_loss_mean", cycle_mean(power), "W",
+                   "cycle-mean friction power (Ball eq. 4.9)" + tag),
+        CaseMetric("dissipation_mean", cycle_mean(dissipation), "W",
+                   "cycle-mean contact dissipation F |V_s| (equals the above for flat "
+                   "followers)" + tag),
+        CaseMetric("cam_torque_mean", cycle_mean(total), "N*m", "cycle-mean camshaft torque"
+                   + tag)]
+
+
 def run_pair(kin, load, force, res, component: str | None = None):
     """Columns and metrics of one pair; returns its cycle-mean friction power [W] and its
     (cam torque, friction torque, power) arrays."""
     import numpy as np
 
-    from camtrain.formulas.cycle import cam_torque, cycle_mean, friction_torque
 
     tag = f" ({component} pair)" if component else ""
-    load = np.maximum(load, 0.0)
-    tf = np.asarray(friction_torque(force, kin.friction_arm), dtype=float)
-    total = np.asarray(cam_torque(load, kin.torque_arm_normal, force, kin.friction_arm),
-                       dtype=float)
-    power = tf * abs(kin.omega)
-    dissipation = force * np.abs(kin.sliding)
+    tf, total, power, dissipation = pair_torques(kin, np.maximum(load, 0.0), force)
     res.add_columns((
         ("friction_torque", tf, "N*m", "friction torque about the cam axis F r" + tag),
         ("cam_torque", total, "N*m", "total camshaft torque W e + F r" + tag),
         ("power_loss", power, "W", "friction power F r omega (Ball eq. 4.8)" + tag)),
         component)
-    i = int(np.abs(tf).argmax())
-    mean = float(cycle_mean(power))
-    res.add_metrics((
-        ("friction_torque_peak", tf[i], "N*m", "largest friction torque" + tag, kin.theta[i]),
-        ("power_loss_mean", mean, "W", "cycle-mean friction power (Ball eq. 4.9)" + tag),
-        ("dissipation_mean", cycle_mean(dissipation), "W",
-         "cycle-mean contact dissipation F |V_s| (equals the above for flat followers)" + tag),
-        ("cam_torque_mean", cycle_mean(total), "N*m", "cycle-mean camshaft torque" + tag)),
-        component)
-    return mean, (total, tf, power)
+    metrics = power_metrics(kin.theta, tf, power, dissipation, total, tag)
+    res.add_metrics(one_case(metrics), component)
+    return float(metrics[1].value), (total, tf, power)

@@ -14,7 +14,7 @@ import numpy as np
 
 from camtrain.errors import ConvergenceError
 
-__all__ = ["LoadSolution", "iterate_load"]
+__all__ = ["CaseLoads", "LoadSolution", "iterate_cases", "iterate_load"]
 
 
 @dataclass(frozen=True)
@@ -33,7 +33,8 @@ def iterate_load(load_of_mu: Callable[[np.ndarray], np.ndarray],
                  friction_of_load: Callable[[np.ndarray], np.ndarray] | None, *,
                  mu0: float = 0.08, tolerance: float = 1e-6, max_iterations: int = 50,
                  depends_on_mu: bool = True) -> LoadSolution:
-    """Fixed-point iteration W_k = load(mu_(k-1)), mu_k = F(W_k)/W_k.
+    """Fixed-point iteration W_k = load(mu_(k-1)), mu_k = F(W_k)/W_k of one run
+    (:func:`iterate_cases` on a single case).
 
     Args:
         load_of_mu: per-angle load for a per-angle friction coefficient.
@@ -46,26 +47,66 @@ def iterate_load(load_of_mu: Callable[[np.ndarray], np.ndarray],
 
     Where W <= 0 (no contact or loss of contact) the previous mu is kept.
     """
+    cases = iterate_cases(load_of_mu, friction_of_load, mu0=mu0, tolerance=tolerance,
+                          max_iterations=max_iterations, depends_on_mu=depends_on_mu)
+    if not cases.converged:
+        raise ConvergenceError(
+            f"friction/load iteration did not converge: relative load change "
+            f"{float(cases.residual):.3g} after {max_iterations} iterations, tolerance "
+            f"{tolerance:g} (raise solver.friction_max_iterations or solver.friction_tolerance)")
+    return LoadSolution(cases.load, cases.friction, cases.mu, int(cases.iterations),
+                        float(cases.residual), tolerance)
+
+
+@dataclass(frozen=True)
+class CaseLoads:
+    """:func:`iterate_cases` per case: the arrays of :class:`LoadSolution` with any leading
+    case axes, and per case its iterations, last residual and whether it converged."""
+
+    load: np.ndarray
+    friction: np.ndarray | None
+    mu: np.ndarray
+    iterations: np.ndarray
+    residual: np.ndarray
+    converged: np.ndarray
+
+
+def iterate_cases(load_of_mu: Callable[[np.ndarray], np.ndarray],
+                  friction_of_load: Callable[[np.ndarray], np.ndarray] | None, *,
+                  mu0=0.08, tolerance: float = 1e-6, max_iterations: int = 50,
+                  depends_on_mu: bool = True) -> CaseLoads:
+    """Ball's iteration (:func:`iterate_load`) over per-angle arrays with any leading case axes
+    (the last axis is the cam angle): each case stops at its own convergence and is then held,
+    so its iterates, iteration count and final friction are those of the case alone. ``mu0``
+    may be one coefficient per case (shaped to broadcast against the loads)."""
     load = np.asarray(load_of_mu(np.asarray(mu0, dtype=float)), dtype=float)
+    cases = load.shape[:-1]
     mu = np.empty_like(load)   # (np.full_like is a Python-level wrapper)
-    mu.fill(mu0)
+    mu[...] = mu0
     if friction_of_load is None:
-        return LoadSolution(load, None, mu, 1, 0.0, tolerance)
-    residual = np.inf
+        one = np.ones(cases, dtype=int)
+        return CaseLoads(load, None, mu, one, np.zeros(cases), np.ones(cases, dtype=bool))
+    done = np.zeros(cases, dtype=bool)
+    iterations = np.zeros(cases, dtype=int)
+    residual = np.full(cases, np.inf)
     for k in range(1, max_iterations + 1):
         force = np.asarray(friction_of_load(load), dtype=float)
         positive = load > 0.0
-        mu = np.where(positive, force / np.where(positive, load, 1.0), mu)
+        step = np.where(positive, force / np.where(positive, load, 1.0), mu)
+        mu = np.where(done[..., None], mu, step) if k > 1 else step
         if not depends_on_mu:
-            return LoadSolution(load, force, mu, k, 0.0, tolerance)
+            return CaseLoads(load, force, mu, np.full(cases, k), np.zeros(cases),
+                             np.ones(cases, dtype=bool))
         new = np.asarray(load_of_mu(mu), dtype=float)
-        scale = max(float(np.max(np.abs(new))), 1.0)
-        residual = float(np.max(np.abs(new - load))) / scale
-        load = new
-        if residual <= tolerance:
-            force = np.asarray(friction_of_load(load), dtype=float)
-            return LoadSolution(load, force, mu, k, residual, tolerance)
-    raise ConvergenceError(
-        f"friction/load iteration did not converge: relative load change {residual:.3g} after "
-        f"{max_iterations} iterations, tolerance {tolerance:g} (raise "
-        f"solver.friction_max_iterations or solver.friction_tolerance)")
+        scale = np.maximum(np.max(np.abs(new), axis=-1), 1.0)
+        change = np.max(np.abs(new - load), axis=-1) / scale
+        residual = np.where(done, residual, change)
+        load = np.where(done[..., None], load, new) if k > 1 else new
+        now = ~done & (change <= tolerance)
+        iterations[now] = k
+        done |= now
+        if done.all():
+            break
+    iterations[~done] = max_iterations
+    force = np.asarray(friction_of_load(load), dtype=float)
+    return CaseLoads(load, force, mu, iterations, residual, done)

@@ -22,11 +22,48 @@ def mm(value: float) -> str:
     return f"{value * 1e3:.3f} mm"
 
 
+def convex(rc):
+    """Per angle: the cam is convex there (r_c > 0), as a flat face needs (Ball §2.2.1)."""
+    return rc > 0.0
+
+
+def cusped(rc, rf):
+    """Per angle: a curved follower cuts a cusp there (-r_f < r_c <= 0)."""
+    return (rc <= 0.0) & (rc > -rf)
+
+
+def too_tight(rc, wheel: float):
+    """Per angle: a concave flank tighter than the grinding wheel (0 < -r_c < wheel)."""
+    return (rc < 0.0) & (-rc < wheel)
+
+
+def off_face(eccentricity, face_length: float, face_centre: float = 0.0):
+    """Per angle: the contact lies beyond half the face length from the face centre."""
+    return np.abs(eccentricity - face_centre) > 0.5 * face_length
+
+
+def cases_pass(k: Kinematics, *, flat: bool, min_concave_radius: float | None = None,
+               face_length: float | None = None) -> np.ndarray:
+    """Per case (the leading axes of a batch's (cases, angles) Kinematics): whether
+    :func:`check_flat_follower_convex` (``flat``) or :func:`check_curved_follower`, and
+    :func:`check_face`, pass. A sweep batch runs a failing case alone, for its error."""
+    rc = k.cam_radius
+    if flat:
+        ok = np.all(convex(rc), axis=-1)
+    else:
+        ok = ~np.any(cusped(rc, k.follower_radius), axis=-1)
+        if min_concave_radius is not None and min_concave_radius > 0.0:
+            ok &= ~np.any(too_tight(rc, min_concave_radius), axis=-1)
+    if face_length is not None:
+        ok &= ~np.any(off_face(k.eccentricity, face_length), axis=-1)
+    return ok
+
+
 def check_flat_follower_convex(k: Kinematics, base_radius: float,
                                field: str = "cam.base_radius") -> None:
     """A flat face needs r_c = r_B + l + l'' > 0 everywhere (Ball §2.2.1, Williams §4)."""
     rc = k.cam_radius
-    if np.count_nonzero(rc > 0.0) == rc.size:
+    if np.count_nonzero(convex(rc)) == rc.size:
         return
     i = int(np.argmin(rc))
     needed = base_radius - float(rc[i])
@@ -45,7 +82,7 @@ def check_curved_follower(k: Kinematics, *, radius_field: str, base_field: str =
     with np.errstate(divide="ignore", invalid="ignore"):
         # r_f / (r_c + r_f) >= 1 marks the cusp band; it is smooth where r_c passes through inf
         cusp_index = np.where(np.isinf(rc), 0.0, rf / (rc + rf))
-    cusp = (rc <= 0.0) & (rc > -rf)
+    cusp = cusped(rc, rf)
     if np.any(cusp):
         i = int(np.argmax(np.where(cusp, cusp_index, -np.inf)))
         raise GeometryError(
@@ -54,7 +91,7 @@ def check_curved_follower(k: Kinematics, *, radius_field: str, base_field: str =
             f"of {mm(rf[i])}; reduce the follower radius or enlarge the base circle")
     if min_concave_radius is None or min_concave_radius <= 0.0:
         return
-    tight = (rc < 0.0) & (-rc < min_concave_radius)
+    tight = too_tight(rc, min_concave_radius)
     if np.any(tight):
         i = int(np.argmax(np.where(tight, rc, -np.inf)))
         raise GeometryError(
@@ -73,10 +110,12 @@ def check_face(k: Kinematics, face_length: float | None, face_centre: float = 0.
     """
     if face_length is None:
         return
-    offset = k.eccentricity - face_centre
-    i = int(np.argmax(np.abs(offset)))
-    if abs(offset[i]) > 0.5 * face_length:
-        needed = 2.0 * float(np.max(np.abs(offset)))
+    off = off_face(k.eccentricity, face_length, face_centre)
+    if np.any(off):
+        offset = k.eccentricity - face_centre
+        beyond = np.where(off, np.abs(offset), -np.inf)
+        i = int(np.argmax(beyond))
+        needed = 2.0 * float(beyond[i])
         raise GeometryError(
             f"{field}: the contact runs off the follower face at {angle_text(k.theta[i])} "
             f"({mm(offset[i])} from the face centre, face length {mm(face_length)}); "

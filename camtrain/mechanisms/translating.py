@@ -203,27 +203,44 @@ def _ones(like: np.ndarray) -> np.ndarray:
     return ones
 
 
+def translating_kinematics(lc: LiftCurve, name: str, *, base_radius, follower_radius, offset,
+                           omega, shape="spherical", taper_angle=None,
+                           cases: int = 0) -> Kinematics:
+    """Clockwise kinematics of a translating follower on the lift curve ``lc`` (the contact
+    kernel :func:`translating_contact`, no checks). With ``cases`` > 0 a scalar may be one value
+    per sweep case, a (cases, 1) column, and every field is a (cases, angles) array."""
+    fields = translating_contact(lc.theta, lc.lift, lc.d1, lc.d2, base_radius=base_radius,
+                                 follower_radius=follower_radius, offset=offset,
+                                 omega=omega, shape=shape, taper_angle=taper_angle)
+    arm = fields["arm_normal"]
+    if np.count_nonzero(arm) == arm.size:   # the usual case: no errstate context needed
+        ratio = 1.0 / arm
+    else:
+        with np.errstate(divide="ignore"):
+            ratio = 1.0 / arm
+    # the valve, cam and follower coordinates of a direct-acting follower are one lift
+    lift, d1, d2 = kept(lc.lift), kept(lc.d1), kept(lc.d2)
+    arrays = dict(theta=kept(lc.theta), valve_lift=lift, valve_d1=d1, valve_d2=d2,
+                  valve_d3=kept(lc.d3), cam_lift=lift, cam_d1=d1, cam_d2=d2, rocker_ratio=ratio,
+                  arm_valve=_ones(lc.lift), q=lift, q_d1=d1, q_d2=d2, **fields)
+    if cases:   # a batch of sweep cases: every field spans (cases, angles)
+        grid = (cases, lc.theta.size)
+        arrays = {k: np.broadcast_to(v, grid) for k, v in arrays.items()}
+        omega = np.broadcast_to(omega, grid) if isinstance(omega, np.ndarray) else omega
+    else:
+        omega = float(omega)
+    return Kinematics(mechanism=name, rotation="clockwise", omega=omega,
+                      inertia={"follower_mass": arrays["q_d2"]}, **arrays)
+
+
 def _translating(lift: LiftCurve, name: str, *, base_radius, follower_radius, offset, omega,
                  rotation, shape="spherical", taper_angle=None) -> Kinematics:
     check_translating_inputs(base_radius, follower_radius, offset, omega, shape)
 
     def kernel(lc: LiftCurve, user_theta: np.ndarray) -> Kinematics:
-        fields = translating_contact(lc.theta, lc.lift, lc.d1, lc.d2, base_radius=base_radius,
-                                     follower_radius=follower_radius, offset=offset,
-                                     omega=omega, shape=shape, taper_angle=taper_angle)
-        arm = fields["arm_normal"]
-        if np.count_nonzero(arm) == arm.size:   # the usual case: no errstate context needed
-            ratio = 1.0 / arm
-        else:
-            with np.errstate(divide="ignore"):
-                ratio = 1.0 / arm
-        # the valve, cam and follower coordinates of a direct-acting follower are one lift
-        lift, d1, d2 = kept(lc.lift), kept(lc.d1), kept(lc.d2)
-        return Kinematics(
-            mechanism=name, rotation="clockwise", omega=float(omega), theta=kept(lc.theta),
-            valve_lift=lift, valve_d1=d1, valve_d2=d2, valve_d3=kept(lc.d3), cam_lift=lift,
-            cam_d1=d1, cam_d2=d2, rocker_ratio=ratio, arm_valve=_ones(lc.lift),
-            q=lift, q_d1=d1, q_d2=d2, inertia={"follower_mass": d2}, **fields)
+        return translating_kinematics(lc, name, base_radius=base_radius,
+                                      follower_radius=follower_radius, offset=offset,
+                                      omega=omega, shape=shape, taper_angle=taper_angle)
 
     return analyse(lift, rotation, kernel)
 

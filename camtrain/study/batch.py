@@ -163,6 +163,7 @@ def _curves(degrees: list[float], valve, out: dict, row: int) -> dict:
 def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict], list[Case]]:
     from camtrain.effects.kinematics import _cached_curve, lift_columns
     from camtrain.formulas._util import trusted_inputs
+    from camtrain.metric_rows import per_case
     from camtrain.result import Result
     from camtrain.study import batch_chain as bc
     from camtrain.study.case_model import datum_model
@@ -184,7 +185,8 @@ def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict]
             out = bc.run_chain(datum, valve, scal, n)
             ok = bc.geometry_ok(datum, out["kin"])
             converged = out["converged"]
-            for r, (case, good, metrics) in enumerate(zip(part, ok, bc.metrics(datum, out, n),
+            for r, (case, good, metrics) in enumerate(zip(part, ok,
+                                                          per_case(out["metrics"], n),
                                                           strict=True)):
                 m = {name: (value, unit) for name, value, unit in head + metrics}
                 load_min = m.get("load_min")
