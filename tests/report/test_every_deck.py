@@ -8,6 +8,7 @@ import csv
 import json
 import math
 import re
+from pathlib import Path
 
 import pytest
 
@@ -41,6 +42,10 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     assert {"cycle.csv", "summary.json", "report.txt"} <= names
     pngs = [p for p in written if p.suffix == ".png"]
     assert pngs, "no plot sheet written"
+    # the sheets the effects declare are those the column-name code wrote before
+    # (tests/report/declarations.py wrote the fixture)
+    fixture = json.loads((Path(__file__).parent / "data" / "declarations.json").read_text())
+    assert sorted(p.stem for p in pngs) == fixture[name.removesuffix(".toml")]["sheets"]
     for png in pngs:
         # a blank A4 sheet is a few kB; an orbit plot is a small figure
         assert png.stat().st_size > (8_000 if png.name.startswith("orbit_") else 20_000), png.name
