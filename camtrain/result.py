@@ -293,7 +293,7 @@ class Result:
     @classmethod
     def load(cls, path: str | Path) -> Result:
         """Read a result written by :meth:`save` (its plan comes back without effect specs)."""
-        from camtrain.scene import Plan, Step
+        from camtrain.plan import Plan, Step
 
         with np.load(Path(path), allow_pickle=False) as z:
             meta = json.loads(str(z["__meta__"]))

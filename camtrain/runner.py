@@ -7,7 +7,7 @@ import time
 from functools import cache
 from typing import TypeVar
 
-from camtrain.effects.catalogue import PRODUCTS, EffectSpec
+from camtrain.catalogue import PRODUCTS, EffectSpec
 from camtrain.formulas._util import trusted_inputs
 from camtrain.result import Result
 from camtrain.scene import Plan, effect_module, resolve

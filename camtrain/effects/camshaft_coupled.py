@@ -51,7 +51,7 @@ def run(deck, inputs, res):
     from camtrain.dynamics import CamInput, march
     from camtrain.dynamics.coupling import lobe_input_perturbation, waveform_relaxation
     from camtrain.dynamics.findings import findings
-    from camtrain.effects.shaft_output import add_shaft
+    from camtrain.tabulate.shaft import add_shaft
     from camtrain.formulas import cam_torque
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
@@ -201,7 +201,7 @@ def _report(res, loads, valve_accelerations, theta, solver: str, passes: int, ch
                        theta[i], component=comp)
     res.add_column("camshaft_load_sum", np.sum(loads, axis=0), "N",
                    "sum of the lobes' contact loads")
-    from camtrain.effects.shaft_output import add_orders
+    from camtrain.tabulate.shaft import add_orders
 
     lobes = [f"lobe_{j + 1}" for j in range(len(loads))]
     add_orders(res, "load", dict(zip(lobes, loads, strict=True)), "N", "contact load", orders)
@@ -227,7 +227,7 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     from camtrain.dynamics.coupled_film import squeeze_film_model
     from camtrain.dynamics.excitation import TimeBase
     from camtrain.dynamics.monolithic import FRICTION_LEVELS, march_coupled
-    from camtrain.effects.shaft_output import add_shaft
+    from camtrain.tabulate.shaft import add_shaft
     from camtrain.formulas import cam_torque
 
     cs, f = deck.camshaft, deck.camshaft.flexibility

@@ -167,7 +167,7 @@ OTHER_SHEETS = {
 
 def declared_sheets(result: Result) -> list[str]:
     """The sheets the effects that ran declare, in plan order (EffectSpec.sheets)."""
-    from camtrain.effects.catalogue import declared_effects
+    from camtrain.catalogue import declared_effects
 
     return list(dict.fromkeys(n for spec in declared_effects(result.plan) for n in spec.sheets))
 

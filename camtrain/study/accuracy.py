@@ -139,7 +139,7 @@ def relevant_knobs(raw: dict, plan=None, base_dir=None) -> list[str]:
     """Knobs that change something for this deck: those the effects of its plan declare
     (EffectSpec.knobs), narrowed by each knob's test on the deck's options (e.g. no friction
     iteration on a flat tappet). ``plan``: the deck's plan when already resolved."""
-    from camtrain.effects.catalogue import declared_effects
+    from camtrain.catalogue import declared_effects
 
     plan = plan_of(raw, base_dir) if plan is None else plan
     declared = {n for spec in declared_effects(plan) for n in spec.knobs}
@@ -211,7 +211,7 @@ def _run_rung(raw: dict, base_dir, repeat: int, least: int = 1) -> dict:
 def declared_metrics(plan) -> tuple[str, ...]:
     """The metric names (``{k}``: any component number) the effects of ``plan`` declare for
     the accuracy study (EffectSpec.accuracy_metrics), in plan order."""
-    from camtrain.effects.catalogue import declared_effects
+    from camtrain.catalogue import declared_effects
 
     return tuple(dict.fromkeys(n for spec in declared_effects(plan)
                                for n in spec.accuracy_metrics))

@@ -11,6 +11,7 @@ import copy
 from collections.abc import Callable
 from dataclasses import dataclass
 
+
 @dataclass(frozen=True)
 class Knob:
     """One resolution knob: the deck field it sets and its ladder, coarsest first.

@@ -11,7 +11,7 @@ import camtrain.api as ct
 from camtrain.cli import main
 from camtrain.deck.load import load_deck_text, validate
 from camtrain.deck.templates import render_template
-from camtrain.effects.catalogue import KINDS, kind_of
+from camtrain.catalogue import KINDS, kind_of
 from camtrain.errors import InputError
 from camtrain.scene import resolve
 

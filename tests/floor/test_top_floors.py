@@ -133,10 +133,10 @@ def test_declarations_give_the_knobs_metrics_and_results_of_before(name):
 def test_every_sheet_written_before_is_declared_by_an_effect_of_the_plan(name):
     """Each sheet the column-name code wrote is declared by an effect that ran (the sheets
     written now are compared with the fixture in tests/report/test_every_deck.py)."""
-    from camtrain.effects.catalogue import declared_effects
-    from tests.report.declarations import StoredPlan
-
     import tomllib
+
+    from camtrain.catalogue import declared_effects
+    from tests.report.declarations import StoredPlan
 
     want = _fixture()[name]
     kind = tomllib.loads((ROOT / "decks" / f"{name}.toml").read_text()).get("kind",

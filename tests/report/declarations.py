@@ -39,7 +39,7 @@ class StoredPlan:
 
 def from_golden(name: str) -> dict:
     """Knobs, study metrics and key results of deck ``name`` from its golden file."""
-    from camtrain.effects.catalogue import declared_effects
+    from camtrain.catalogue import declared_effects
     from camtrain.study.accuracy import relevant_knobs, studied_metrics
 
     raw = tomllib.loads((DECKS / f"{name}.toml").read_text())

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from camtrain import api
-from camtrain.effects.catalogue import kind_of
+from camtrain.catalogue import kind_of
 from camtrain.report.display import fmt
 from tests.conftest import DECKS
 

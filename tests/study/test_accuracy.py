@@ -16,14 +16,14 @@ from hypothesis import strategies as st
 
 from camtrain.cli_accuracy import accuracy
 from camtrain.errors import InputError
+from camtrain.study import accuracy as acc
+from camtrain.study.accuracy_plot import pareto_front
 from tests.report.declarations import StoredPlan
 
 #: the plan of a lubricated valve train (the knobs' tests on deck options narrow it)
 CHAIN = StoredPlan("valve_train", ["kinematics", "loads", "hertz", "film", "friction", "power"])
 COUPLED = StoredPlan("valve_train", ["kinematics", "dynamics", "hertz", "film", "friction",
                                      "power", "camshaft_torque", "camshaft_coupled"])
-from camtrain.study import accuracy as acc
-from camtrain.study.accuracy_plot import pareto_front
 
 HARRISON = Path(__file__).resolve().parents[2] / "decks" / "harrison_flat.toml"
 
