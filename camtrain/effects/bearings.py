@@ -89,6 +89,8 @@ def run(deck, inputs, res):
     from camtrain.bearings.product import BearingOrbits
     from camtrain.camshaft.product import CamshaftLoads, ElasticCamshaft
     from camtrain.deck.schema_bearing_model import film_model_options
+    from camtrain.errors import ConvergenceError
+    from camtrain.progress import detail
     from camtrain.tabulate.bearing import (
         CAMSHAFT_DECK_TERMS,
         add_orbit,
@@ -96,8 +98,6 @@ def run(deck, inputs, res):
         model_reason,
         solve_bearing,
     )
-    from camtrain.errors import ConvergenceError
-    from camtrain.progress import detail
 
     cs = deck.camshaft
     shaft = inputs[CamshaftLoads]

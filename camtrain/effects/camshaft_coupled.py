@@ -51,10 +51,10 @@ def run(deck, inputs, res):
     from camtrain.dynamics import CamInput, march
     from camtrain.dynamics.coupling import lobe_input_perturbation, waveform_relaxation
     from camtrain.dynamics.findings import findings
-    from camtrain.tabulate.shaft import add_shaft
     from camtrain.formulas import cam_torque
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
+    from camtrain.tabulate.shaft import add_shaft
 
     cs, f = deck.camshaft, deck.camshaft.flexibility
     kin = inputs[TrainKinematics].main
@@ -227,8 +227,8 @@ def _monolithic(deck, res, kin, run_setup, shaft, gammas, axes, ratio, turn, con
     from camtrain.dynamics.coupled_film import squeeze_film_model
     from camtrain.dynamics.excitation import TimeBase
     from camtrain.dynamics.monolithic import FRICTION_LEVELS, march_coupled
-    from camtrain.tabulate.shaft import add_shaft
     from camtrain.formulas import cam_torque
+    from camtrain.tabulate.shaft import add_shaft
 
     cs, f = deck.camshaft, deck.camshaft.flexibility
     arm_sign = np.sign(np.where(kin.friction_arm == 0, 1.0, kin.friction_arm))
