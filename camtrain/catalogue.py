@@ -274,8 +274,9 @@ def declared_effects(plan) -> tuple[EffectSpec, ...]:
     if plan is None:
         return KINDS[DEFAULT_KIND].effects
     by_name = {e.name: e for e in KINDS[plan.kind].effects}
-    return tuple(s.spec if getattr(s, "spec", None) is not None else by_name[s.effect]
-                 for s in plan.steps if s.chosen)
+    specs = (s.spec if getattr(s, "spec", None) is not None else by_name.get(s.effect)
+             for s in plan.steps if s.chosen)
+    return tuple(spec for spec in specs if spec is not None)   # an effect since renamed: none
 
 
 def kind_of(deck) -> DeckKind:
