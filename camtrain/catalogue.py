@@ -52,6 +52,9 @@ class EffectSpec:
     #: the metrics ``camtrain accuracy`` reads on every rung when the run produced them;
     #: ``{k}`` stands for a component number (``bearing_{k}_min_film``: every bearing's)
     accuracy_metrics: tuple[str, ...] = ()
+    #: sections of report.txt this effect's products feed, by name (camtrain.report.text:
+    #: "cycle_table", the per-angle table)
+    sections: tuple[str, ...] = ()
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -80,7 +83,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "surface, entrainment and sliding velocities",
                produces=("TrainKinematics",),
                key_metrics=("max_lift", "max_velocity", "min_acceleration", "max_acceleration"),
-               sheets=("kinematics", "contact", "profile"),
+               sheets=("kinematics", "contact", "profile"), sections=("cycle_table",),
                knobs=("angle_points", "table_smoothing"),
                accuracy_metrics=("cam_radius_at_max_lift", "equivalent_radius_at_max_lift")),
     EffectSpec("loads", "camtrain.effects.loads",
