@@ -55,6 +55,10 @@ class EffectSpec:
     #: sections of report.txt this effect's products feed, by name (camtrain.report.text:
     #: "cycle_table", the per-angle table)
     sections: tuple[str, ...] = ()
+    #: "module:function" giving the decks this effect reads the runs of, each run through a
+    #: plan of its own before the effect (``included(deck) -> [(name, deck model)]``; the
+    #: effect reads ``inputs.included[name]`` = (deck model, Result)); "" = none
+    includes: str = ""
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -214,7 +218,8 @@ ENGINE: tuple[EffectSpec, ...] = (
                "valve-train decks included by path, run at the camshaft speed: cams, camshaft "
                "bearings and guides",
                produces=("ValveTrainFriction",),
-               key_metrics=("valve_train_power_total",)),
+               key_metrics=("valve_train_power_total",),
+               includes="camtrain.build.valve_trains:included_valve_trains"),
     EffectSpec("flame", "camtrain.effects.flame",
                "FLAME engine total: bearings + valve trains + pistons + accessories, fmep and "
                "shares",

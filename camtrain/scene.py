@@ -21,6 +21,16 @@ from camtrain.plan import Plan, Step
 __all__ = ["Plan", "Step", "resolve", "effect_module"]
 
 
+def included(deck, spec: EffectSpec) -> list[tuple[str, object, Plan]]:
+    """(name, deck model, plan) of every deck the effect ``spec`` includes
+    (EffectSpec.includes): an engine deck's valve trains, composed here as plans of their own."""
+    if not spec.includes:
+        return []
+    module, _, func = spec.includes.partition(":")
+    decks = getattr(importlib.import_module(module), func)(deck)
+    return [(name, model, resolve(model)) for name, model in decks]
+
+
 def effect_module(spec: EffectSpec):
     """The module of an effect (its top level imports no physics)."""
     module = sys.modules.get(spec.module)

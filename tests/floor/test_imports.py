@@ -141,9 +141,6 @@ FLOORS: tuple[tuple[str, tuple[str, ...]], ...] = (
 
 #: (importer, imported) arrows up that stay, each with its reason
 UPWARD_ALLOWED: dict[tuple[str, str], str] = {
-    ("camtrain.effects.valve_trains", "camtrain.runner"):
-        "an engine deck's included valve-train decks are run through their own plans by the "
-        "valve_trains effect; composing them as plans in the scene is still to do",
     ("camtrain.result", "camtrain.report.display"):
         "Result.to_dataframe gives columns in the deck's display units, which report/display.py "
         "defines (imported when a frame is asked for)",
