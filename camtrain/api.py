@@ -107,7 +107,7 @@ def check(deck: LoadedDeck | Deck) -> tuple[str, list[str]]:
     kind without such an effect the first item says plainly that no geometry was checked."""
     import importlib
 
-    from camtrain.effects.catalogue import kind_of
+    from camtrain.catalogue import kind_of
     from camtrain.runner import Inputs
     from camtrain.scene import effect_module
 

@@ -293,7 +293,7 @@ class Result:
     @classmethod
     def load(cls, path: str | Path) -> Result:
         """Read a result written by :meth:`save` (its plan comes back without effect specs)."""
-        from camtrain.scene import Plan, Step
+        from camtrain.plan import Plan, Step
 
         with np.load(Path(path), allow_pickle=False) as z:
             meta = json.loads(str(z["__meta__"]))
@@ -322,8 +322,7 @@ def _pandas(what: str):
 
 def _in_units(name: str, si_unit: str, units: str) -> tuple[str, float]:
     """(unit, factor from SI) of a column or metric in "deck" or "si" units: the same rules as
-    the files a run writes (one table of display rules, :mod:`camtrain.report.display`, which
-    imports nothing of camtrain)."""
-    from camtrain.report.display import output_unit
+    the files a run writes (one table of display rules, :mod:`camtrain.display_units`)."""
+    from camtrain.display_units import output_unit
 
     return output_unit(name, si_unit, units)

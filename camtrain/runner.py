@@ -7,10 +7,11 @@ import time
 from functools import cache
 from typing import TypeVar
 
-from camtrain.effects.catalogue import PRODUCTS, EffectSpec
+from camtrain.catalogue import PRODUCTS, EffectSpec
 from camtrain.formulas._util import trusted_inputs
+from camtrain.progress import detail
 from camtrain.result import Result
-from camtrain.scene import Plan, effect_module, resolve
+from camtrain.scene import Plan, effect_module, included, resolve
 
 T = TypeVar("T")
 
@@ -19,9 +20,11 @@ class Inputs:
     """The products one effect may read: those it ``needs`` (always there) and those it
     ``uses`` (there when the plan provides them). Keyed by product class."""
 
-    def __init__(self, spec: EffectSpec, products: dict[str, object]):
+    def __init__(self, spec: EffectSpec, products: dict[str, object], included=None):
         self._spec = spec
         self._products = products
+        #: name -> (deck model, Result) of the decks the effect includes (EffectSpec.includes)
+        self.included = included or {}
 
     def _declared(self, cls: type, kinds: tuple[str, ...]) -> str:
         name = cls.__name__
@@ -60,13 +63,23 @@ def run_plan(deck, plan: Plan | None = None, progress=None) -> Result:
                 progress(spec.name, done, len(effects))
             start = time.perf_counter()
             with _details(progress, spec.name, done, len(effects)):
-                out = effect_module(spec).run(deck, Inputs(spec, products), result)
+                included = _run_included(deck, spec)
+                out = effect_module(spec).run(deck, Inputs(spec, products, included), result)
             result.timings[spec.name] = time.perf_counter() - start
             products.update(_checked(spec, out))
     if progress is not None:
         progress("done", len(effects), len(effects))
     warn_non_finite(result)
     return result
+
+
+def _run_included(deck, spec: EffectSpec) -> dict:
+    """The runs of the decks an effect includes, each through its own plan (scene.included)."""
+    runs = {}
+    for name, model, plan in included(deck, spec):
+        detail(name)
+        runs[name] = (model, run_plan(model, plan))
+    return runs
 
 
 def _details(progress, name: str, done: int, total: int):

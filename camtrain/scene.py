@@ -1,6 +1,6 @@
 """Scene plan: which effects a deck calls for, in which order, and why.
 
-The deck's kind (:data:`camtrain.effects.catalogue.KINDS`) gives the effects that may run. A deck
+The deck's kind (:data:`camtrain.catalogue.KINDS`) gives the effects that may run. A deck
 either lists the effects it wants or says ``auto``; then an effect runs only when the deck
 supplies its data and the products it needs are planned (as in Ball's program: no spring or mass
 data -> kinematics and the load-free Blok film only). Where several effects offer the same
@@ -13,42 +13,22 @@ from __future__ import annotations
 import importlib
 import sys
 import weakref
-from dataclasses import dataclass, field
 
-from camtrain.effects.catalogue import EffectSpec, kind_of
+from camtrain.catalogue import EffectSpec, kind_of
 from camtrain.errors import InputError, Problem
+from camtrain.plan import Plan, Step
+
+__all__ = ["Plan", "Step", "resolve", "effect_module"]
 
 
-@dataclass(frozen=True)
-class Step:
-    """An effect's place in the plan: chosen or skipped, and why."""
-
-    effect: str
-    chosen: bool
-    reason: str
-    spec: EffectSpec | None = field(default=None, compare=False, repr=False)
-
-    def as_dict(self) -> dict:
-        return {"effect": self.effect, "chosen": self.chosen, "reason": self.reason}
-
-
-@dataclass(frozen=True)
-class Plan:
-    mode: str
-    steps: tuple[Step, ...]
-    kind: str = "valve_train"
-
-    @property
-    def chosen(self) -> list[str]:
-        return [s.effect for s in self.steps if s.chosen]
-
-    @property
-    def effects(self) -> list[EffectSpec]:
-        """The chosen effects in run order."""
-        return [s.spec for s in self.steps if s.chosen]
-
-    def as_dict(self) -> dict:
-        return {"mode": self.mode, "steps": [s.as_dict() for s in self.steps]}
+def included(deck, spec: EffectSpec) -> list[tuple[str, object, Plan]]:
+    """(name, deck model, plan) of every deck the effect ``spec`` includes
+    (EffectSpec.includes): an engine deck's valve trains, composed here as plans of their own."""
+    if not spec.includes:
+        return []
+    module, _, func = spec.includes.partition(":")
+    decks = getattr(importlib.import_module(module), func)(deck)
+    return [(name, model, resolve(model)) for name, model in decks]
 
 
 def effect_module(spec: EffectSpec):

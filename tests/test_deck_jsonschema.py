@@ -13,12 +13,12 @@ from click.testing import CliRunner
 
 jsonschema = pytest.importorskip("jsonschema")
 
+from camtrain.catalogue import KINDS  # noqa: E402
 from camtrain.cli import MECHANISM_CHOICES, main  # noqa: E402
 from camtrain.deck.fields import section_fields  # noqa: E402
 from camtrain.deck.jsonschema import deck_json_schema, kind_schema  # noqa: E402
 from camtrain.deck.load import validate  # noqa: E402
 from camtrain.deck.templates import render_template  # noqa: E402
-from camtrain.effects.catalogue import KINDS  # noqa: E402
 from camtrain.errors import InputError  # noqa: E402
 from camtrain.units import UNITS  # noqa: E402
 from tests.conftest import DECKS  # noqa: E402

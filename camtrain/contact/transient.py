@@ -60,9 +60,9 @@ def nearest(values, theta, grid):
 
 
 def _solver(contact):
-    if contact.solver is None:
-        from camtrain.deck.schema_tribology import Solver
-        return Solver()
+    if contact.solver is None:   # a contact built without solver options (no deck)
+        from camtrain.contact.film_march import DEFAULTS
+        return DEFAULTS
     return contact.solver
 
 

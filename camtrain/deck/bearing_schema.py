@@ -18,7 +18,13 @@ from camtrain.deck.schema_bearing_model import (
     n_theta_field,
     n_z_field,
 )
-from camtrain.deck.schema_camshaft import bearing_geometry_problems
+from camtrain.deck.schema_journal import (
+    bearing_geometry_problems,
+    clearance_field,
+    diameter_field,
+    groove_width_field,
+    length_field,
+)
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
@@ -27,13 +33,10 @@ from camtrain.units import from_si
 class BearingGeometry:
     """The bearing and its oil (a full central groove makes two lands)."""
 
-    diameter: float = quantity("Journal diameter d", "mm", gt=0, example=25.0)
-    length: float = quantity("Overall bearing length b, groove included", "mm", gt=0,
-                             example=18.0)
-    clearance: float = quantity("Radial clearance c", "mm", gt=0, example=0.025)
-    groove_width: float = quantity(
-        "Width of a full circumferential central groove; 0 = ungrooved", "mm", default=0.0,
-        ge=0)
+    diameter: float = diameter_field(example=25.0)
+    length: float = length_field(example=18.0)
+    clearance: float = clearance_field(example=0.025)
+    groove_width: float = groove_width_field()
     viscosity: float = quantity("Effective dynamic viscosity of the oil film", "Pa·s", gt=0,
                                 example=0.01)
 

@@ -13,6 +13,7 @@ import dataclasses
 import importlib
 
 from camtrain import __version__
+from camtrain.catalogue import DEFAULT_KIND, KINDS
 from camtrain.deck.fields import (
     ExactlyOne,
     FieldInfo,
@@ -23,7 +24,6 @@ from camtrain.deck.fields import (
     deck_key,
     section_fields,
 )
-from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
 from camtrain.units import UNITS
 
 #: where a template's ``#:schema`` line points (written by ``camtrain schema --out``)

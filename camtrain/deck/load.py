@@ -12,9 +12,9 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+from camtrain.catalogue import DEFAULT_KIND, KINDS
 from camtrain.deck.fields import build_section, schema_paths
 from camtrain.deck.schema import Deck
-from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
 from camtrain.errors import InputError, Problem
 
 MAX_DECK_BYTES = 20 * 1024 * 1024
@@ -76,7 +76,7 @@ def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
     """Validate raw TOML data into the immutable SI model, reporting every problem at once.
 
     The top-level ``kind`` picks the schema among the registered deck kinds
-    (:data:`camtrain.effects.catalogue.KINDS`; ``valve_train`` is the default).
+    (:data:`camtrain.catalogue.KINDS`; ``valve_train`` is the default).
     """
     kind = raw.get("kind", DEFAULT_KIND)
     if not isinstance(kind, str) or kind not in KINDS:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
+from camtrain.catalogue import effect_names
 from camtrain.deck.fields import ExactlyOne, When, option, quantity, section
 from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one schema namespace
     CamBearing,
@@ -46,7 +47,6 @@ from camtrain.deck.schema_tribology import (  # noqa: F401
     Spring,
     Tribology,
 )
-from camtrain.effects.catalogue import effect_names
 from camtrain.errors import Problem
 from camtrain.units import from_si, mm_text
 
@@ -270,7 +270,7 @@ class Cam:
 
 # --------------------------------------------------------------------------- the deck
 
-#: the effects a valve-train deck may list (registered in camtrain.effects.catalogue)
+#: the effects a valve-train deck may list (registered in camtrain.catalogue)
 EFFECT_NAMES = effect_names("valve_train")
 
 

@@ -14,6 +14,13 @@ from camtrain.deck.schema_bearing_model import (
     n_z_field,
 )
 from camtrain.deck.schema_flexibility import CamshaftFlexibility
+from camtrain.deck.schema_journal import (
+    bearing_geometry_problems,
+    clearance_field,
+    diameter_field,
+    groove_width_field,
+    length_field,
+)
 from camtrain.errors import Problem
 from camtrain.units import mm_text
 
@@ -38,31 +45,15 @@ class CamLobe:
         "half the V angle)", default=1)
 
 
-def bearing_geometry_problems(bearing, path: str) -> list[Problem]:
-    """Checks shared by every journal-bearing section (camshaft bearings, stand-alone bearing):
-    the groove must be shorter than the bearing, the clearance far below the journal radius."""
-    out = []
-    if bearing.groove_width >= bearing.length:
-        out.append(Problem(f"{path}.groove_width", "is not shorter than the bearing",
-                           mm_text(bearing.groove_width), f"< length ({mm_text(bearing.length)})"))
-    if bearing.clearance >= 0.5 * bearing.diameter:
-        out.append(Problem(f"{path}.clearance", "is larger than the journal radius",
-                           mm_text(bearing.clearance), "a radial clearance << d/2"))
-    return out
-
-
 @dataclass(frozen=True, kw_only=True)
 class CamBearing:
     """One plain camshaft bearing (a full central groove makes two lands)."""
 
     position: float = quantity("Axial position of the bearing centre", "mm", example=0.0)
-    diameter: float = quantity("Journal diameter d", "mm", gt=0, example=25.97)
-    length: float = quantity("Overall bearing length b, groove included", "mm", gt=0,
-                             example=17.0)
-    clearance: float = quantity("Radial clearance c", "mm", gt=0, example=0.0225)
-    groove_width: float = quantity(
-        "Width of a full circumferential central groove; 0 = ungrooved", "mm", default=0.0,
-        ge=0)
+    diameter: float = diameter_field(example=25.97)
+    length: float = length_field(example=17.0)
+    clearance: float = clearance_field(example=0.0225)
+    groove_width: float = groove_width_field()
 
     def problems(self, path: str) -> list[Problem]:
         return bearing_geometry_problems(self, path)

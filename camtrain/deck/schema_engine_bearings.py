@@ -18,6 +18,7 @@ from camtrain.deck.schema_bearing_model import (
     n_theta_field,
     n_z_field,
 )
+from camtrain.deck.schema_journal import clearance_field, diameter_field, length_field
 from camtrain.errors import Problem
 from camtrain.units import from_si
 
@@ -26,10 +27,9 @@ from camtrain.units import from_si
 class CrankBearingSection:
     """One crankshaft bearing (every big-end alike, or every main alike)."""
 
-    diameter: float = quantity("Journal diameter d", "mm", gt=0, example=203.2)
-    length: float = quantity("Overall bearing length b, groove included", "mm", gt=0,
-                             example=57.15)
-    clearance: float = quantity("Radial clearance c", "mm", gt=0, example=0.08255)
+    diameter: float = diameter_field(example=203.2)
+    length: float = length_field(example=57.15)
+    clearance: float = clearance_field(example=0.08255)
     grooving: Literal["none", "central", "partial"] = option(
         "none (full length), central (a full circumferential groove: two lands, each a short "
         "bearing carrying half the load) or partial (the mean of the two extremes, as Yang's "

@@ -9,7 +9,7 @@ concentric power (eq. 1.19). The film is the deck's ``camshaft.bearing_model``: 
 pi film (Ocvirk, as Ball and Yang) or the finite-length Reynolds film
 (:mod:`camtrain.bearings.models`); ``auto`` picks per bearing by its land b/d. Power uses the pi
 or 2 pi shear film (Yang eqs 1.21, 1.22). The orbit solver and its result columns are shared with
-the stand-alone bearing deck (:mod:`camtrain.effects.bearing_output`).
+the stand-alone bearing deck (:mod:`camtrain.tabulate.bearing`).
 """
 from __future__ import annotations
 
@@ -47,7 +47,7 @@ def reason(deck, planned) -> str:
     if cs.method == "petroff":
         return head + " (concentric power, no film model)"
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import model_reason
+    from camtrain.tabulate.bearing import model_reason
 
     options = film_model_options(cs, "bearing_")
     groups: dict[str, list[int]] = {}
@@ -89,15 +89,15 @@ def run(deck, inputs, res):
     from camtrain.bearings.product import BearingOrbits
     from camtrain.camshaft.product import CamshaftLoads, ElasticCamshaft
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import (
+    from camtrain.errors import ConvergenceError
+    from camtrain.progress import detail
+    from camtrain.tabulate.bearing import (
         CAMSHAFT_DECK_TERMS,
         add_orbit,
         deck_terms,
         model_reason,
         solve_bearing,
     )
-    from camtrain.errors import ConvergenceError
-    from camtrain.progress import detail
 
     cs = deck.camshaft
     shaft = inputs[CamshaftLoads]

@@ -33,9 +33,9 @@ def run(deck, inputs, res):
     from camtrain.build.coupled import coupled_problem
     from camtrain.camshaft.product import CamshaftLoads
     from camtrain.coupled import solve
-    from camtrain.effects.shaft_output import add_coupled
     from camtrain.loads import ContactLoad
     from camtrain.mechanisms import TrainKinematics
+    from camtrain.tabulate.shaft import add_coupled
 
     problem = coupled_problem(deck, inputs[TrainKinematics].main, inputs[ContactLoad].load,
                               inputs[CamshaftLoads].lobe_positions, res["cam_angle"])

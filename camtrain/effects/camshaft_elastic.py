@@ -34,7 +34,7 @@ def reason(deck, planned) -> str:
 def run(deck, inputs, res):
     from camtrain.build.shaft import answer, shaft_from_deck
     from camtrain.camshaft.product import CamshaftLoads
-    from camtrain.effects.shaft_output import add_shaft
+    from camtrain.tabulate.shaft import add_shaft
 
     cs = deck.camshaft
     loads = inputs[CamshaftLoads]

@@ -25,7 +25,7 @@ def reason(deck, planned) -> str:
         return head + " (concentric power, no film model)"
     from camtrain.bearings import JournalBearing
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import model_reason
+    from camtrain.tabulate.bearing import model_reason
 
     options = film_model_options(s, "bearing_")
     parts = []
@@ -39,9 +39,9 @@ def reason(deck, planned) -> str:
 
 def run(deck, inputs, result):
     from camtrain.build import engine as build
-    from camtrain.effects.crank_bearing_output import add_bearing
     from camtrain.engine import CrankLoads, solve_crank_bearings
     from camtrain.errors import ConvergenceError
+    from camtrain.tabulate.crank_bearing import add_bearing
 
     loads = inputs[CrankLoads]
     try:

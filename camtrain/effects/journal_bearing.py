@@ -24,7 +24,7 @@ def reason(deck, planned) -> str:
     if deck.solver.method == "petroff":
         return head + " (concentric power, no film model)"
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import model_reason
+    from camtrain.tabulate.bearing import model_reason
 
     brg = _journal(deck)
     return head + "; " + model_reason(brg, film_model_options(deck.solver),
@@ -54,7 +54,7 @@ def run(deck, inputs, result):
     from camtrain.bearings import bearing_petroff_power
     from camtrain.bearings.product import BearingOrbits
     from camtrain.deck.schema_bearing_model import film_model_options
-    from camtrain.effects.bearing_output import (
+    from camtrain.tabulate.bearing import (
         BEARING_DECK_TERMS,
         add_orbit,
         deck_terms,

@@ -1,7 +1,8 @@
 """Valve-train effect of an engine deck: each valve-train deck the engine includes by path
-([[flame.valve_trains]]) runs through its own plan at the engine's camshaft speed; the cams,
-camshaft bearings and guides of every camshaft are summed (Yang 1992 Part IV, Fig. 4.7;
-:mod:`camtrain.engine.valve_trains`)."""
+([[flame.valve_trains]]) runs through its own plan at the engine's camshaft speed (the scene
+composes them, camtrain.build.valve_trains makes the decks, the runner runs them before this
+effect: EffectSpec.includes); the cams, camshaft bearings and guides of every camshaft are
+summed (Yang 1992 Part IV, Fig. 4.7; :mod:`camtrain.engine.valve_trains`)."""
 from __future__ import annotations
 
 
@@ -19,27 +20,15 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, result):
-    import dataclasses
     from pathlib import Path
 
-    from camtrain.build.oil import flame_oil_factor
-    from camtrain.deck.load import load_deck
     from camtrain.engine.valve_trains import ValveTrainFriction, valve_train_parts
-    from camtrain.progress import detail
-    from camtrain.runner import run_plan
     from camtrain.units import from_si
 
     parts, speeds, notes = {}, {}, {}
-    factor = flame_oil_factor(deck)
     for vt in deck.flame.valve_trains:
-        detail(f"{vt.name} ({Path(vt.deck).name})")
-        model = load_deck(vt.deck).model
-        omega = vt.speed_ratio * deck.speed.engine
-        model = dataclasses.replace(model, speed=dataclasses.replace(
-            model.speed, camshaft=omega, engine=None))
-        if factor != 1.0:   # [oil] moves FLAME's viscosities with the oil temperature
-            model = _with_viscosity_factor(model, factor)
-        sub = run_plan(model)
+        model, sub = inputs.included[vt.name]   # run through its own plan before this effect
+        omega = model.speed.camshaft
         metrics = {k: m.value for k, m in sub.metrics.items()}
         lobes = None if model.camshaft is None else len(model.camshaft.lobes)
         parts[vt.name] = valve_train_parts(metrics, lobes, vt.trains)
@@ -59,18 +48,3 @@ def run(deck, inputs, result):
     result.add_metric("valve_train_power_total", out.total, "W",
                       "every included valve train: friction power")
     return out
-
-
-def _with_viscosity_factor(model, factor: float):
-    """The valve-train deck with its lubricant viscosity (and the camshaft bearings' own, when
-    given) times ``factor``."""
-    import dataclasses
-
-    lub = model.lubricant
-    model = dataclasses.replace(model, lubricant=dataclasses.replace(
-        lub, viscosity=lub.viscosity * factor))
-    shaft = getattr(model, "camshaft", None)
-    if shaft is not None and shaft.viscosity is not None:
-        model = dataclasses.replace(model, camshaft=dataclasses.replace(
-            shaft, viscosity=shaft.viscosity * factor))
-    return model

@@ -135,7 +135,7 @@ def key_metric_names(result: Result) -> list[str]:
     """The metrics an engineer reads first, in plan order: those the effects that ran declare
     (``EffectSpec.key_metrics``); a run without a plan (``camtrain lift``) takes what the
     valve-train effects declare. Every metric is in summary.json and report.txt."""
-    from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
+    from camtrain.catalogue import DEFAULT_KIND, KINDS
 
     specs = result.plan.effects if result.plan is not None else KINDS[DEFAULT_KIND].effects
     names = dict.fromkeys(n for spec in specs for n in spec.key_metrics)

@@ -26,9 +26,8 @@ def load_sheet(result: Result, out_dir: Path, *, deck=None, sha: str | None = No
                formats=("png",)) -> list[Path]:
     """``sheet_engine_loads.<fmt>``, an A4 page in the house style: big-end 1 (rod axes) and
     every main (block axes) as polar load diagrams [kN], small multiples four to a row, and
-    every load magnitude against crank angle. Empty when the run has no crank loads."""
-    if "crank_angle" not in result.columns:
-        return []
+    every load magnitude against crank angle (the crank-loads effect declares it). Empty when
+    no bearing has a load diagram."""
     diagrams = _diagrams(result)
     if not diagrams:
         return []

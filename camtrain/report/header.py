@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 import math
 
-from camtrain.effects.catalogue import DEFAULT_KIND, KINDS, kind_of
+from camtrain.catalogue import DEFAULT_KIND, KINDS, kind_of
 from camtrain.report.display import fmt
 from camtrain.result import Result
 from camtrain.units import from_si

@@ -133,7 +133,7 @@ def lobe_sheet(result, out_dir, *, deck=None, sha=None, formats=("png",)) -> lis
              for pattern, label, pair in LOBE_ROWS]
     found = [f for f in found if f[3]]
     lobes = sorted({k for *_, cols in found for k, _ in cols})
-    if len(lobes) <= OVERLAID_LOBES or "cam_angle" not in result.columns:
+    if len(lobes) <= OVERLAID_LOBES:
         return []
     theta = np.degrees(result["cam_angle"])
     with house_page(deck, result, "Every lobe: contact load, shaft deflection, twist", sha) as fig:

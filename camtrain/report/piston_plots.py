@@ -22,9 +22,7 @@ def _rings(result: Result) -> list[str]:
 def piston_sheet(result: Result, out_dir: Path, *, deck=None, sha: str | None = None,
                  formats=("png",)) -> list[Path]:
     """``sheet_piston.<fmt>``: gas pressures, ring films, friction per component and (with a
-    FLAME total) the friction power by component. Empty without a piston run."""
-    if "ring_angle" not in result.columns:
-        return []
+    FLAME total) the friction power by component (the piston effect declares it)."""
     from camtrain.report.canvas import save_sheet
     from camtrain.report.house import LEGEND_RIGHT_IN, grid, house_page
     from camtrain.report.summaries import flame_parts

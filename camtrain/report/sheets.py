@@ -139,29 +139,53 @@ def _figure(size):
     return figure(size)
 
 
-def _other_sheets(result: Result, deck, out_dir: Path, formats, sha: str | None,
-                  progress: Progress | None) -> list[Path]:
-    """The sheets that are not cycle panels, each in the house style: journal orbits (one A4
-    sheet of them all, and one plot per bearing), an engine's load diagrams, its piston and
-    FLAME sheet. What the result holds decides which (none for a run without them)."""
+def _orbits(result: Result, out_dir: Path, *, deck=None, sha: str | None = None,
+            formats=("png",)) -> list[Path]:
+    """Journal orbits: one A4 sheet of them all, and one plot per bearing (none without
+    orbits: a Petroff-only run)."""
     from camtrain.report.bearing_plots import orbit_series, orbit_sheets, write_orbit_plots
-    from camtrain.report.correlation_plots import correlation_sheet
-    from camtrain.report.engine_plots import load_sheet
-    from camtrain.report.panels_shaft import lobe_sheet
-    from camtrain.report.piston_plots import piston_sheet
+
+    if not orbit_series(result):
+        return []
+    written = orbit_sheets(result, out_dir, deck=deck, sha=sha, formats=formats)
+    title = getattr(deck, "title", "") if deck is not None else ""
+    for ext in formats:
+        written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha, deck=deck)
+    return written
+
+
+#: the sheets that are not cycle panels: name an effect declares (EffectSpec.sheets) ->
+#: "module:function" drawing it, ``draw(result, out_dir, deck=, sha=, formats=) -> [Path]``
+#: (empty when the run has nothing for it)
+OTHER_SHEETS = {
+    "orbits": "camtrain.report.sheets:_orbits",
+    "lobes": "camtrain.report.panels_shaft:lobe_sheet",
+    "engine_loads": "camtrain.report.engine_plots:load_sheet",
+    "piston": "camtrain.report.piston_plots:piston_sheet",
+    "correlations": "camtrain.report.correlation_plots:correlation_sheet",
+}
+
+
+def declared_sheets(result: Result) -> list[str]:
+    """The sheets the effects that ran declare, in plan order (EffectSpec.sheets)."""
+    from camtrain.catalogue import declared_effects
+
+    return list(dict.fromkeys(n for spec in declared_effects(result.plan) for n in spec.sheets))
+
+
+def _other_sheets(result: Result, wanted: list[str], out_dir: Path, formats, sha: str | None,
+                  deck, progress: Progress | None) -> list[Path]:
+    """The declared sheets that are not cycle panels, each in the house style: journal orbits,
+    the lobes of a long camshaft, an engine's load diagrams, its piston and FLAME sheet."""
+    import importlib
 
     written: list[Path] = []
-    if orbit_series(result):
-        if progress:
-            progress("sheet orbits", 0, 1)
-        written += orbit_sheets(result, out_dir, deck=deck, sha=sha, formats=formats)
-        title = getattr(deck, "title", "") if deck is not None else ""
-        for ext in formats:
-            written += write_orbit_plots(result, out_dir, title=title, fmt=ext, sha=sha,
-                                         deck=deck)
-    for name, draw in (("lobes", lobe_sheet), ("engine loads", load_sheet),
-                       ("piston", piston_sheet), ("correlations", correlation_sheet)):
-        files = draw(result, out_dir, deck=deck, sha=sha, formats=formats)
+    for name in wanted:
+        if name not in OTHER_SHEETS:   # a cycle sheet (SHEETS)
+            continue
+        module, _, func = OTHER_SHEETS[name].partition(":")
+        files = getattr(importlib.import_module(module), func)(
+            result, out_dir, deck=deck, sha=sha, formats=formats)
         if files and progress:
             progress(f"sheet {name}", 1, 1)
         written += files
@@ -179,9 +203,12 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
     """Draw every sheet (and every panel alone) that the result supports into ``out_dir``,
     and a polar orbit plot per journal bearing when the run has bearings.
 
-    One A4 figure is drawn on, saved and cleared for every sheet in turn."""
-    orbits = _other_sheets(result, deck, out_dir, formats, sha, progress)
-    if "cam_angle" not in result.columns:
+    The sheets are those the effects that ran declare (EffectSpec.sheets). One A4 figure is
+    drawn on, saved and cleared for every sheet in turn."""
+    wanted = declared_sheets(result)
+    orbits = _other_sheets(result, wanted, out_dir, formats, sha, deck, progress)
+    cycle = [name for name in SHEETS if name in wanted]
+    if not cycle or not result.axes:   # an empty result (no plan, no grid) has no cycle
         return orbits
     import matplotlib
 
@@ -192,10 +219,10 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
     with matplotlib.rc_context({**RC, **({"savefig.dpi": dpi} if dpi else {})}):
         ctx = _ctx(result)
         page = Page(A4_PORTRAIT)
-        panels = [(sheet, p) for sheet, (_, names) in SHEETS.items() for p in names]
-        total = len(SHEETS) + (len(panels) if single_panels else 0)
+        panels = [(sheet, p) for sheet in cycle for p in SHEETS[sheet][1]]
+        total = len(cycle) + (len(panels) if single_panels else 0)
         done, drawn = 0, set()
-        for name in SHEETS:
+        for name in cycle:
             if _sheet(page, result, deck, name, ctx, sha):
                 written += _save(page.fig, out_dir / f"sheet_{name}", formats)
                 drawn.add(name)

@@ -99,7 +99,12 @@ def _summary_lines(result: Result, deck) -> list[str]:
 
 
 def _cycle_table(result: Result, step_deg: float) -> list[str]:
-    if "cam_angle" not in result.columns:
+    """The per-angle table of report.txt, when an effect that ran declares it
+    (EffectSpec.sections: "cycle_table"); its columns are those of TABLE_COLUMNS the run has."""
+    from camtrain.catalogue import declared_effects
+
+    declared = any("cycle_table" in spec.sections for spec in declared_effects(result.plan))
+    if not declared or not result.axes:   # an empty result (no plan, no grid): no table
         return []
     theta = np.degrees(result["cam_angle"])
     names = [n for n in TABLE_COLUMNS if n in result.columns]

@@ -16,11 +16,12 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import time
 from collections.abc import Callable, Sequence
 
 from camtrain.errors import CamtrainError, InputError, Problem
-from camtrain.study.accuracy_knobs import BEARING_METRICS, KEY_METRICS, KNOBS
+from camtrain.study.accuracy_knobs import KNOBS
 
 #: Observed orders outside this range are treated as noise, not as asymptotic convergence.
 PLAUSIBLE_ORDER = (0.5, 8.0)
@@ -126,23 +127,38 @@ def parse_tolerance(text: str) -> float:
     return value
 
 
-def relevant_knobs(raw: dict) -> list[str]:
-    """Knobs that change something for this deck (e.g. no friction iteration on a flat tappet)."""
-    return [name for name, knob in KNOBS.items() if knob.applies(raw)]
+def plan_of(raw: dict, base_dir=None):
+    """The plan of the deck ``raw`` (validated, not run)."""
+    from camtrain import api
+    from camtrain.deck.load import validate
+
+    return api.plan(validate(raw, base_dir=base_dir))
 
 
-def check_knobs(raw: dict, names: Sequence[str] | None) -> list[str]:
+def relevant_knobs(raw: dict, plan=None, base_dir=None) -> list[str]:
+    """Knobs that change something for this deck: those the effects of its plan declare
+    (EffectSpec.knobs), narrowed by each knob's test on the deck's options (e.g. no friction
+    iteration on a flat tappet). ``plan``: the deck's plan when already resolved."""
+    from camtrain.catalogue import declared_effects
+
+    plan = plan_of(raw, base_dir) if plan is None else plan
+    declared = {n for spec in declared_effects(plan) for n in spec.knobs}
+    return [name for name, knob in KNOBS.items() if name in declared and knob.applies(raw)]
+
+
+def check_knobs(raw: dict, names: Sequence[str] | None, plan=None, base_dir=None) -> list[str]:
     """Validate requested knob names against the deck; default: every relevant knob."""
+    relevant = relevant_knobs(raw, plan, base_dir)
     if not names:
-        return relevant_knobs(raw)
+        return relevant
     out = []
     for name in names:
         if name not in KNOBS:
             raise InputError(Problem("--knob", "is not a resolution knob", name,
                                      "one of " + ", ".join(KNOBS)))
-        if not KNOBS[name].applies(raw):
+        if name not in relevant:
             raise InputError(Problem("--knob", "does not apply to this deck", name,
-                                     "one of " + (", ".join(relevant_knobs(raw)) or "none"),
+                                     "one of " + (", ".join(relevant) or "none"),
                                      f"it sets the {KNOBS[name].description}, "
                                      "which this deck does not use"))
         if name not in out:
@@ -182,18 +198,43 @@ def _run_rung(raw: dict, base_dir, repeat: int, least: int = 1) -> dict:
                 break
     except CamtrainError as exc:
         return {"status": "error", "message": str(exc), "exit_code": exc.exit_code,
-                "wall_time": None, "wall_spread": None, "timed_runs": len(times), "metrics": {}}
+                "wall_time": None, "wall_spread": None, "timed_runs": len(times), "metrics": {},
+                "declared": ()}
     metrics = {k: {"value": m.value, "unit": m.unit} for k, m in result.metrics.items()}
     spread = timing_spread(times)
     return {"status": "ok", "message": "", "exit_code": 0, "wall_time": min(times),
             "wall_spread": spread if math.isfinite(spread) else None,
-            "timed_runs": len(times), "metrics": metrics}
+            "timed_runs": len(times), "metrics": metrics,
+            "declared": declared_metrics(result.plan)}
+
+
+def declared_metrics(plan) -> tuple[str, ...]:
+    """The metric names (``{k}``: any component number) the effects of ``plan`` declare for
+    the accuracy study (EffectSpec.accuracy_metrics), in plan order."""
+    from camtrain.catalogue import declared_effects
+
+    return tuple(dict.fromkeys(n for spec in declared_effects(plan)
+                               for n in spec.accuracy_metrics))
+
+
+def studied_metrics(runs, plan=None, metrics: Sequence[str] | None = None) -> list[str]:
+    """The metrics studied over rungs whose metrics are ``runs`` (one mapping per rung): those
+    the rungs produced that match a name declared by the plan's effects (or given in
+    ``metrics``), in the order declared."""
+    wanted = declared_metrics(plan) if metrics is None else metrics
+    produced = dict.fromkeys(k for r in runs for k in r)
+    found: dict[str, None] = {}
+    for name in wanted:
+        pattern = re.compile(re.escape(name).replace(re.escape("{k}"), "[^_]+"))
+        found.update(dict.fromkeys(k for k in produced if pattern.fullmatch(k)))
+    return list(found)
 
 
 def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat: int = 5,
                ladder: Sequence[float] | None = None,
-               metrics: Sequence[str] = KEY_METRICS) -> dict:
-    """Run the ladder of one knob and analyse every key metric it produced."""
+               metrics: Sequence[str] | None = None) -> dict:
+    """Run the ladder of one knob and analyse every metric it produced that the effects of
+    the rungs' plans declare for the study (or that ``metrics`` names)."""
     knob = KNOBS[name]
     values = tuple(ladder or knob.ladder_of(raw))
     values = tuple(int(v) for v in values) if knob.integer else values
@@ -202,16 +243,14 @@ def study_knob(raw: dict, name: str, tolerance: float, *, base_dir=None, repeat:
     rungs = [dict(value=v, **_run_rung(setter(raw, v), base_dir, max(repeat, least), least))
              for v in values]
     steps = [knob.step(v) for v in values]
-    found = [m for m in metrics if any(m in r["metrics"] for r in rungs)]
-    if metrics is KEY_METRICS:
-        names = dict.fromkeys(k for r in rungs for k in r["metrics"])
-        found += [k for k in names if k.startswith("bearing_")
-                  and k.partition("_")[2].partition("_")[2] in BEARING_METRICS]
+    declared = tuple(dict.fromkeys(n for r in rungs for n in r.pop("declared")))
+    found = studied_metrics([r["metrics"] for r in rungs], None,
+                            declared if metrics is None else metrics)
     per_metric = {}
     for m in found:
         series = [r["metrics"].get(m, {}).get("value") for r in rungs]
         a = analyse(series, steps)
-        unit = next(r["metrics"][m]["unit"] for r in rungs if m in r["metrics"])
+        unit = next(u for r in rungs if (u := r["metrics"].get(m, {}).get("unit")) is not None)
         per_metric[m] = dict(unit=unit, values=series, **a)
     worst = [None if r["status"] != "ok" else
              max((per_metric[m]["errors"][i] or 0.0 for m in found), default=0.0)
@@ -236,8 +275,8 @@ def study(deck: str, knobs: Sequence[str] | None = None, tolerance: float = 1e-3
     name, text = read_text(deck)
     raw = parse_toml(text, name)
     base_dir = Path(deck).resolve().parent if deck != "-" else Path.cwd()
-    names = check_knobs(raw, knobs)
     loaded = api.loads(text, name) if deck == "-" else api.load(deck)
+    names = check_knobs(raw, knobs, api.plan(loaded))
     api.run(loaded)  # warm-up: imports and caches must not be charged to the first rung
     out = {"deck": name, "title": loaded.model.title, "tolerance": tolerance, "knobs": {}}
     for knob in names:

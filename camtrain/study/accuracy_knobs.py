@@ -1,5 +1,7 @@
-"""The resolution knobs `camtrain accuracy` studies: the deck field each sets, its ladder, the
-decks it applies to, and the key metrics read from every rung (camtrain.study.accuracy runs them).
+"""The resolution knobs `camtrain accuracy` studies: the deck field each sets, its ladder and the
+deck options it needs (camtrain.study.accuracy runs them). Which knobs a deck offers is declared by
+the effects of its plan (EffectSpec.knobs), and the metrics read on every rung likewise
+(EffectSpec.accuracy_metrics); a knob's ``applies`` only narrows it by the deck's options.
 
 Plain data and small predicates on a raw deck dictionary; nothing here imports numpy.
 """
@@ -8,28 +10,6 @@ from __future__ import annotations
 import copy
 from collections.abc import Callable
 from dataclasses import dataclass
-
-#: Metrics studied when a run produces them (scalar results a designer acts on).
-KEY_METRICS = ("power_loss_mean", "film_min_at_max_lift", "hertz_max", "load_max",
-               "bounce_speed", "cam_radius_at_max_lift", "equivalent_radius_at_max_lift",
-               "shaft_deflection_max", "shaft_twist_max",
-               "min_film", "max_eccentricity", "power_mean", "bearings_power_total",
-               # engine decks: crank-train loads and crank bearings
-               "big_end_max_load", "big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
-               "total_power_dynamic", "total_power_steady",
-               # transient cam film
-               "film_at_zero_entrainment_1", "film_max",
-               # engine decks: piston assembly and FLAME
-               "piston_power_total", "ring_1_min_film_flooded", "inter_ring_pressure_1_peak",
-               "flame_total",
-               # valve-train dynamics
-               "separation_angle")
-
-#: Per-bearing metrics of a camshaft (``bearing_<k>_<name>``) studied with the key metrics.
-BEARING_METRICS = ("min_film", "max_eccentricity", "power_mean",
-                   # the elastic camshaft: load from the shaft and its orders 1 and 4
-                   "reaction_max", "reaction_order_1", "reaction_order_4")
-
 
 
 @dataclass(frozen=True)
@@ -60,17 +40,14 @@ class Knob:
         return tuple(special) if special else self.ladder
 
 
-def _valve_train(raw: dict) -> bool:
-    return raw.get("kind", "valve_train") == "valve_train"
-
-
-def _engine(raw: dict) -> bool:
-    return raw.get("kind") == "engine"
+def _always(raw: dict) -> bool:
+    """The knob applies wherever an effect of the plan declares it."""
+    return True
 
 
 def _engine_orbits(raw: dict) -> bool:
     methods = raw.get("solver", {}).get("methods", ("dynamic",))
-    return _engine(raw) and "dynamic" in methods
+    return "dynamic" in methods
 
 
 def _choice_step(choices: tuple[str, ...]) -> Callable[[str], float]:
@@ -86,10 +63,6 @@ def _lift_form(raw: dict) -> str:
 def _iterates(raw: dict) -> bool:
     # Only followers whose contact load depends on friction iterate (pivoted, pushrod, desmo).
     return raw.get("mechanism", {}).get("type") in ("finger", "rocker", "pushrod", "desmodromic")
-
-
-def _elastic_camshaft(raw: dict) -> bool:
-    return "flexibility" in raw.get("camshaft", {})
 
 
 def _coupled_camshaft(raw: dict) -> bool:
@@ -183,10 +156,6 @@ def _averaged_reynolds(raw: dict) -> bool:
     return _film_model(raw) == "averaged_reynolds"
 
 
-def _dynamics(raw: dict) -> bool:
-    return "dynamics" in raw
-
-
 def _spring_chain(raw: dict) -> bool:
     return int(raw.get("dynamics", {}).get("spring_elements", 0)) > 0
 
@@ -197,7 +166,7 @@ def _adaptive(raw: dict) -> bool:
 
 KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
-         lambda v: 1.0 / v, _valve_train,
+         lambda v: 1.0 / v, _always,
          "cam angles over one revolution (angle step 360 deg / n)", integer=True),
     Knob("friction_tolerance", "solver.friction_tolerance",
          (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8), lambda v: v, _iterates,
@@ -206,7 +175,7 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda v: v, _smoothing_spline,
          "smoothing level of the lift-table spline (relative to the data precision)"),
     Knob("shaft_stations", "camshaft.flexibility.nodes_per_span", (0, 1, 2, 4, 8),
-         lambda v: 1.0 / (v + 1), _elastic_camshaft,
+         lambda v: 1.0 / (v + 1), _always,
          "extra stations per span of the elastic camshaft (element length / (n + 1))",
          integer=True, ladder_for=_coupled_ladder("shaft_stations")),
     Knob("bearing_mesh", "solver.n_theta | camshaft.bearing_n_theta (n_z = n_theta / 12)",
@@ -224,7 +193,7 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          _camshaft_orbits, "load-diagram angles per revolution the camshaft-bearing orbits are "
          "marched on (the run's grid resampled; a rung at or above the run's grid marches on "
          "it)", integer=True),
-    Knob("crank_step", "solver.crank_step", (4.0, 2.0, 1.0, 0.5, 0.25), lambda v: v, _engine,
+    Knob("crank_step", "solver.crank_step", (4.0, 2.0, 1.0, 0.5, 0.25), lambda v: v, _always,
          "crank-angle step of the load diagrams and orbits [deg]"),
     Knob("period_tolerance", "solver.period_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
          lambda v: v, _engine_orbits,
@@ -232,7 +201,7 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("step_tolerance", "solver.step_tolerance", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9),
          lambda v: v, _engine_orbits, "error per time step of the crank-bearing orbit march"),
     Knob("pressure_interpolation", "solver.pressure_interpolation",
-         ("linear", "periodic_cubic"), _choice_step(("linear", "periodic_cubic")), _engine,
+         ("linear", "periodic_cubic"), _choice_step(("linear", "periodic_cubic")), _always,
          "cylinder pressure between table angles (model choice; reference: periodic_cubic)"),
     Knob("mobility", "solver.mobility", ("booker", "exact"),
          _choice_step(("booker", "exact")), _engine_orbits,
@@ -249,20 +218,20 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("film_tolerance", "solver.film_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8),
          lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
     Knob("piston_crank_step", "piston.solver.crank_step", (4.0, 2.0, 1.0, 0.5),
-         lambda v: v, lambda raw: "piston" in raw,
+         lambda v: v, _always,
          "crank-angle step of the inter-ring gas and ring-film marches [deg]"),
     Knob("ring_tolerance", "piston.solver.ring_tolerance", (1e-2, 1e-3, 1e-4, 1e-5, 1e-6),
-         lambda v: v, lambda raw: "piston" in raw,
+         lambda v: v, _always,
          "cyclic tolerance of the ring-film march"),
     Knob("pass_tolerance", "piston.solver.pass_tolerance", (1e-1, 1e-2, 1e-3, 1e-4),
-         lambda v: v, lambda raw: "piston" in raw and raw["piston"].get("solver", {}).get(
+         lambda v: v, lambda raw: raw["piston"].get("solver", {}).get(
              "pass_mode", "converged") == "converged",
          "tolerance of the ring pack's starved passes to their fixed point"),
     Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
-         lambda v: v, lambda raw: "piston" in raw,
+         lambda v: v, _always,
          "iteration and cyclic tolerance of the inter-ring gas march"),
     Knob("steps_per_degree", "dynamics.steps_per_degree", (2.0, 4.0, 8.0, 16.0, 32.0, 64.0),
-         lambda v: 1.0 / v, lambda raw: _dynamics(raw) and not _adaptive(raw),
+         lambda v: 1.0 / v, lambda raw: not _adaptive(raw),
          "time steps per degree of cam of the valve-train dynamics",
          ladder_for=_coupled_ladder("steps_per_degree")),
     Knob("coupling_iterations", "camshaft.flexibility.coupling_iterations", (1, 2, 4, 10),

@@ -79,7 +79,7 @@ def _schema_of(raw: dict) -> type:
     """The schema class of a raw deck's kind (valve_train when it names none or an unknown)."""
     import importlib
 
-    from camtrain.effects.catalogue import DEFAULT_KIND, KINDS
+    from camtrain.catalogue import DEFAULT_KIND, KINDS
 
     kind = KINDS.get(raw.get("kind", DEFAULT_KIND), KINDS[DEFAULT_KIND])
     module, cls = kind.schema.split(":")

@@ -8,10 +8,10 @@ import pytest
 from click.testing import CliRunner
 
 import camtrain.api as ct
+from camtrain.catalogue import KINDS, kind_of
 from camtrain.cli import main
 from camtrain.deck.load import load_deck_text, validate
 from camtrain.deck.templates import render_template
-from camtrain.effects.catalogue import KINDS, kind_of
 from camtrain.errors import InputError
 from camtrain.scene import resolve
 

@@ -1,4 +1,5 @@
-"""The import structure of camtrain: no import circle, no effect importing another effect.
+"""The import structure of camtrain: no import circle, no effect importing another effect, no
+import from a lower floor to a higher one.
 
 Every import counts, also those inside functions: a circle through a lazy import is still two
 modules that need each other, and effects meet only through products."""
@@ -7,7 +8,7 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-from camtrain.effects.catalogue import KINDS
+from camtrain.catalogue import KINDS
 
 PACKAGE = Path(__file__).resolve().parents[2] / "camtrain"
 
@@ -121,3 +122,68 @@ def test_the_walk_sees_imports():
     g = graph()
     assert "camtrain.contact.model" in g["camtrain.effects.friction"]
     assert "camtrain.camshaft.loads" in g["camtrain.camshaft"]
+
+
+#: the floors of docs/architecture.md ("Layers"), lowest first: module prefixes (under
+#: camtrain.) on each; a module may import its own floor and those below, never one above
+FLOORS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("base", ("__init__", "formulas", "numerics", "progress", "interrupts", "errors", "units",
+              "components", "identity_cache", "output_lock", "data", "catalogue", "plan",
+              "display_units", "metric_rows")),
+    ("physics", ("lift", "mechanisms", "loads", "dynamics", "contact", "camshaft", "bearings",
+                 "engine", "lubrication", "piston", "coupled")),
+    ("deck", ("deck",)),
+    ("build", ("build",)),
+    ("result", ("result", "tabulate")),
+    ("effects", ("effects",)),
+    ("run", ("scene", "runner")),
+    ("top", ("api", "warmup", "report", "study", "design", "cli")),
+)
+
+#: (importer, imported) arrows up that stay, each with its reason
+UPWARD_ALLOWED: dict[tuple[str, str], str] = {}
+
+
+def floor_of(module: str) -> int:
+    """The floor index of a camtrain module (by its longest matching prefix)."""
+    rest = "__init__" if module == "camtrain" else module.removeprefix("camtrain.")
+    best = None
+    for index, (_, prefixes) in enumerate(FLOORS):
+        for p in prefixes:
+            hit = rest == p or rest.startswith(p + ".") or (p == "cli" and rest.startswith(p))
+            if hit and (best is None or len(p) > best[1]):
+                best = (index, len(p))
+    if best is None:
+        raise AssertionError(f"{module} is on no floor: add it to FLOORS and the docs' table")
+    return best[0]
+
+
+def upward_imports(g) -> dict[tuple[str, str], str]:
+    return {(m, d): f"{FLOORS[floor_of(m)][0]} -> {FLOORS[floor_of(d)][0]}"
+            for m, deps in g.items() for d in deps if floor_of(d) > floor_of(m)}
+
+
+def test_no_import_from_a_lower_floor_to_a_higher_one():
+    """Every import counts, lazy ones inside functions too."""
+    up = upward_imports(graph(lazy=True))
+    assert {k: v for k, v in up.items() if k not in UPWARD_ALLOWED} == {}
+    assert set(UPWARD_ALLOWED) <= set(up), "an allowed arrow is gone: take it off the list"
+
+
+def test_the_floor_check_sees_an_arrow_up():
+    assert upward_imports({"camtrain.contact.transient": {"camtrain.deck.schema_tribology"},
+                           "camtrain.deck.load": {"camtrain.catalogue"}}) == {
+        ("camtrain.contact.transient", "camtrain.deck.schema_tribology"): "physics -> deck"}
+
+
+def test_the_film_march_defaults_of_the_physics_are_the_decks():
+    """The transient film marches a contact built without a deck on the defaults of
+    camtrain.contact.film_march, which the deck's [solver] fields repeat."""
+    import dataclasses
+
+    from camtrain.contact.film_march import DEFAULTS
+    from camtrain.deck.schema_tribology import Solver
+
+    deck = Solver()
+    for f in dataclasses.fields(DEFAULTS):
+        assert getattr(deck, f.name) == getattr(DEFAULTS, f.name), f.name

@@ -7,9 +7,9 @@ import dataclasses
 import numpy as np
 import pytest
 
+from camtrain.catalogue import KINDS, VALVE_TRAIN, EffectSpec, kind_of
 from camtrain.contact.model import contact_friction, contact_hertz
 from camtrain.deck.load import load_deck
-from camtrain.effects.catalogue import KINDS, VALVE_TRAIN, EffectSpec, kind_of
 from camtrain.formulas import cycle_mean, friction_torque
 from camtrain.runner import run_plan
 from camtrain.scene import order, resolve

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from camtrain.catalogue import EffectSpec
 from camtrain.deck.schema import Deck
-from camtrain.effects.catalogue import EffectSpec
 
 SPEC = EffectSpec("toy_loads", __name__, "toy contact load: the rigid-train load scaled",
                   needs=("TrainKinematics",), produces=("ContactLoad",), rank=1)

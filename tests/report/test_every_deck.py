@@ -8,11 +8,12 @@ import csv
 import json
 import math
 import re
+from pathlib import Path
 
 import pytest
 
 from camtrain import api
-from camtrain.effects.catalogue import kind_of
+from camtrain.catalogue import kind_of
 from camtrain.report.display import fmt
 from tests.conftest import DECKS
 
@@ -43,6 +44,10 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     assert ("cycle.csv" in names) == bool(result.columns)
     pngs = [p for p in written if p.suffix == ".png"]
     assert pngs, "no plot sheet written"
+    # the sheets the effects declare are those the column-name code wrote before
+    # (tests/report/declarations.py wrote the fixture)
+    fixture = json.loads((Path(__file__).parent / "data" / "declarations.json").read_text())
+    assert sorted(p.stem for p in pngs) == fixture[name.removesuffix(".toml")]["sheets"]
     for png in pngs:
         # a blank A4 sheet is a few kB; an orbit plot is a small figure
         assert png.stat().st_size > (8_000 if png.name.startswith("orbit_") else 20_000), png.name

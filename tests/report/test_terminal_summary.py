@@ -10,7 +10,7 @@ from contextlib import contextmanager
 from click.testing import CliRunner
 
 from camtrain import api
-from camtrain.effects.catalogue import KINDS
+from camtrain.catalogue import KINDS
 from camtrain.report.console import PlainOut, key_metric_names, print_run, summary_tables
 from camtrain.report.text import report_text
 from camtrain.study.dynamics_speed import render

@@ -18,6 +18,12 @@ from camtrain.cli_accuracy import accuracy
 from camtrain.errors import InputError
 from camtrain.study import accuracy as acc
 from camtrain.study.accuracy_plot import pareto_front
+from tests.report.declarations import StoredPlan
+
+#: the plan of a lubricated valve train (the knobs' tests on deck options narrow it)
+CHAIN = StoredPlan("valve_train", ["kinematics", "loads", "hertz", "film", "friction", "power"])
+COUPLED = StoredPlan("valve_train", ["kinematics", "dynamics", "hertz", "film", "friction",
+                                     "power", "camshaft_torque", "camshaft_coupled"])
 
 HARRISON = Path(__file__).resolve().parents[2] / "decks" / "harrison_flat.toml"
 
@@ -75,12 +81,12 @@ def test_parse_tolerance_rejects(text):
 def test_knobs_follow_the_deck():
     flat = {"mechanism": {"type": "flat"}, "lift": {"form": "four_power"}}
     table = {"mechanism": {"type": "finger"}, "lift": {"form": "table", "table": {}}}
-    assert acc.relevant_knobs(flat) == ["angle_points"]
-    assert acc.relevant_knobs(table) == ["angle_points", "friction_tolerance", "table_smoothing"]
+    assert acc.relevant_knobs(flat, CHAIN) == ["angle_points"]
+    assert acc.relevant_knobs(table, CHAIN) == ["angle_points", "friction_tolerance", "table_smoothing"]
     with pytest.raises(InputError, match="--knob"):
-        acc.check_knobs(flat, ["friction_tolerance"])
+        acc.check_knobs(flat, ["friction_tolerance"], CHAIN)
     with pytest.raises(InputError, match="--knob"):
-        acc.check_knobs(flat, ["nope"])
+        acc.check_knobs(flat, ["nope"], CHAIN)
 
 
 def test_coupled_camshaft_climbs_its_cheaper_ladders():
@@ -103,8 +109,8 @@ def test_staggered_passes_are_a_knob_of_the_staggered_solver_only():
     monolithic = {"dynamics": {}, "camshaft": {"flexibility": dict(flex)}}
     staggered = {"dynamics": {}, "camshaft": {"flexibility": dict(
         flex, coupling_solver="staggered")}}
-    assert "coupling_iterations" not in acc.relevant_knobs(monolithic)
-    assert "coupling_iterations" in acc.relevant_knobs(staggered)
+    assert "coupling_iterations" not in acc.relevant_knobs(monolithic, COUPLED)
+    assert "coupling_iterations" in acc.relevant_knobs(staggered, COUPLED)
 
 
 def test_set_path_copies_and_creates_tables():

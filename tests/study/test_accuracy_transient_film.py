@@ -8,17 +8,21 @@ import pytest
 from camtrain.errors import InputError
 from camtrain.study import accuracy as acc
 from tests.conftest import DECKS
+from tests.report.declarations import StoredPlan
+
+#: the plan of a lubricated valve train (the knobs' tests on deck options narrow it)
+CHAIN = StoredPlan("valve_train", ["kinematics", "loads", "hertz", "film", "friction", "power"])
 
 
 def test_film_knobs_follow_the_film_model():
     flat = {"mechanism": {"type": "flat"}, "lift": {"form": "four_power"}}
     squeeze = dict(flat, tribology={"film_model": "squeeze"})
     level2 = dict(flat, tribology={"film_model": "averaged_reynolds"})
-    assert acc.relevant_knobs(squeeze) == ["angle_points", "film_angle_step"]
-    assert acc.relevant_knobs(level2) == ["angle_points", "film_angle_step", "film_nodes",
+    assert acc.relevant_knobs(squeeze, CHAIN) == ["angle_points", "film_angle_step"]
+    assert acc.relevant_knobs(level2, CHAIN) == ["angle_points", "film_angle_step", "film_nodes",
                                           "film_zone_width", "film_tolerance"]
     with pytest.raises(InputError, match="--knob"):
-        acc.check_knobs(squeeze, ["film_nodes"])
+        acc.check_knobs(squeeze, ["film_nodes"], CHAIN)
 
 
 def test_film_nodes_ladder_reports_error_against_cost():

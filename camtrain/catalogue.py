@@ -42,6 +42,23 @@ class EffectSpec:
     #: "module:function" drawing this effect's own summary tables for the terminal and
     #: report.txt, ``tables(result, deck) -> [Table]`` (per bearing, per component); "" = none
     summary: str = ""
+    #: the plot sheets this effect's products feed, by the names the report registers
+    #: (camtrain.report.sheets: SHEETS and OTHER_SHEETS); a sheet is written when an effect
+    #: that ran declares it and its panels have something to draw
+    sheets: tuple[str, ...] = ()
+    #: the resolution knobs of ``camtrain accuracy`` that change this effect's numbers, by name
+    #: (camtrain.study.accuracy_knobs.KNOBS; a knob's own test on the deck narrows it further)
+    knobs: tuple[str, ...] = ()
+    #: the metrics ``camtrain accuracy`` reads on every rung when the run produced them;
+    #: ``{k}`` stands for a component number (``bearing_{k}_min_film``: every bearing's)
+    accuracy_metrics: tuple[str, ...] = ()
+    #: sections of report.txt this effect's products feed, by name (camtrain.report.text:
+    #: "cycle_table", the per-angle table)
+    sections: tuple[str, ...] = ()
+    #: "module:function" giving the decks this effect reads the runs of, each run through a
+    #: plan of its own before the effect (``included(deck) -> [(name, deck model)]``; the
+    #: effect reads ``inputs.included[name]`` = (deck model, Result)); "" = none
+    includes: str = ""
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -69,36 +86,50 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "lift law and follower kinematics: lift and derivatives, contact point, r_c, R, "
                "surface, entrainment and sliding velocities",
                produces=("TrainKinematics",),
-               key_metrics=("max_lift", "max_velocity", "min_acceleration", "max_acceleration")),
+               key_metrics=("max_lift", "max_velocity", "min_acceleration", "max_acceleration"),
+               sheets=("kinematics", "contact", "profile"), sections=("cycle_table",),
+               knobs=("angle_points", "table_smoothing"),
+               accuracy_metrics=("cam_radius_at_max_lift", "equivalent_radius_at_max_lift")),
     EffectSpec("loads", "camtrain.effects.loads",
                "contact load from the rigid-train D'Alembert balance; loss of contact",
                needs=("TrainKinematics",), produces=("ContactLoad",),
-               key_metrics=("load_max", "load_min", "bounce_speed")),
+               key_metrics=("load_max", "load_min", "bounce_speed"),
+               sheets=("contact",), accuracy_metrics=("load_max", "bounce_speed")),
     EffectSpec("dynamics", "camtrain.effects.dynamics",
                "contact load of the elastic train in time: separation, spring surge, valve "
                "seating (replaces the rigid-train load when the deck has [dynamics])",
                needs=("TrainKinematics",), produces=("ContactLoad",), rank=1,
                key_metrics=("load_max", "dynamic_load_ratio", "separations", "jumps",
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
-                            "valve_acceleration_max")),
+                            "valve_acceleration_max"),
+               sheets=("contact", "dynamics"),
+               knobs=("steps_per_degree", "spring_elements", "dynamics_rtol"),
+               accuracy_metrics=("load_max", "separation_angle")),
     EffectSpec("hertz", "camtrain.effects.hertz",
                "Hertz contact half-width and maximum pressure",
                needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",),
-               key_metrics=("hertz_max", "hertz_at_max_lift")),
+               key_metrics=("hertz_max", "hertz_at_max_lift"),
+               sheets=("contact",), accuracy_metrics=("hertz_max",)),
     EffectSpec("film", "camtrain.effects.film",
                "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
                needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",),
-               key_metrics=("film_min_at_max_lift", "film_min")),
+               key_metrics=("film_min_at_max_lift", "film_min"),
+               sheets=("contact", "transient_film", "profile"),
+               knobs=("film_angle_step", "film_nodes", "film_zone_width", "film_tolerance"),
+               accuracy_metrics=("film_min_at_max_lift", "film_at_zero_entrainment_1",
+                                 "film_max")),
     EffectSpec("friction", "camtrain.effects.friction",
                "friction force and coefficient: viscous shear capped by boundary friction",
                needs=("TrainKinematics", "ContactLoad", "ContactHertz", "ContactFilm"),
                produces=("ContactFriction",),
-               key_metrics=("boundary_fraction",)),
+               key_metrics=("boundary_fraction",),
+               sheets=("friction",), knobs=("friction_tolerance",)),
     EffectSpec("power", "camtrain.effects.power",
                "friction torque about the cam axis and power loss",
                needs=("TrainKinematics", "ContactLoad", "ContactFriction"),
                produces=("CamTorque",),
-               key_metrics=("power_loss_mean", "friction_torque_peak")),
+               key_metrics=("power_loss_mean", "friction_torque_peak"),
+               sheets=("friction",), accuracy_metrics=("power_loss_mean",)),
     EffectSpec("guides", "camtrain.effects.guides",
                "follower/guide and valve/guide Couette shear losses (Yang 1992 eq. 3.29)",
                needs=("TrainKinematics",), produces=("GuideLosses",)),
@@ -107,31 +138,50 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "bank, pendulum dampers",
                needs=("TrainKinematics", "ContactLoad"), uses=("ContactFriction", "CamTorque"),
                produces=("CamshaftLoads",),
-               key_metrics=("drive_power_mean", "camshaft_torque_peak")),
+               key_metrics=("drive_power_mean", "camshaft_torque_peak"),
+               sheets=("camshaft", "lobes")),
     EffectSpec("camshaft_elastic", "camtrain.effects.camshaft_elastic",
                "elastic camshaft: bending in two planes and torsion under the lobe and drive "
                "loads, bearing reactions, deflections and twist per lobe, orders",
-               needs=("CamshaftLoads",), produces=("ElasticCamshaft",),
-               key_metrics=("shaft_deflection_max", "shaft_twist_max")),
+               needs=("CamshaftLoads",),
+               produces=("ElasticCamshaft",),
+               key_metrics=("shaft_deflection_max", "shaft_twist_max"),
+               sheets=("camshaft", "lobes"), knobs=("shaft_stations",),
+               accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
+                                 "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
+                                 "bearing_{k}_reaction_order_4")),
     EffectSpec("camshaft_coupled", "camtrain.effects.camshaft_coupled",
                "every lobe's elastic valve train on the elastic camshaft, iterated to one "
                "periodic state: lobe loads, bearing reactions, deflections, twist",
                needs=("TrainKinematics", "ContactLoad", "CamshaftLoads"),
                produces=("ElasticCamshaft",), rank=1,
-               key_metrics=("shaft_deflection_max", "shaft_twist_max")),
+               key_metrics=("shaft_deflection_max", "shaft_twist_max"),
+               sheets=("camshaft", "lobes"),
+               knobs=("shaft_stations", "steps_per_degree", "coupling_iterations"),
+               accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
+                                 "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
+                                 "bearing_{k}_reaction_order_4")),
     EffectSpec("bearings", "camtrain.effects.bearings",
                "camshaft bearings: lobe and drive forces split as beams (or by the elastic "
                "shaft), journal orbits (Booker mobility), minimum film and power",
                needs=("CamshaftLoads",), uses=("ElasticCamshaft",), produces=("BearingOrbits",),
                key_metrics=("bearings_power_total",),
-               summary="camtrain.report.summaries:bearing_orbits"),
+               summary="camtrain.report.summaries:bearing_orbits",
+               sheets=("camshaft", "orbits"),
+               knobs=("bearing_mesh", "bearing_model", "orbit_points"),
+               accuracy_metrics=("bearings_power_total", "bearing_{k}_min_film",
+                                 "bearing_{k}_max_eccentricity", "bearing_{k}_power_mean",
+                                 "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
+                                 "bearing_{k}_reaction_order_4")),
 )
 
 JOURNAL_BEARING: tuple[EffectSpec, ...] = (
     EffectSpec("journal_bearing", "camtrain.effects.journal_bearing",
                "journal orbit, minimum film and power of one bearing under its load diagram",
                produces=("BearingOrbits",),
-               key_metrics=("min_film", "max_eccentricity", "power_mean", "petroff_power")),
+               key_metrics=("min_film", "max_eccentricity", "power_mean", "petroff_power"),
+               sheets=("orbits",), knobs=("bearing_mesh", "bearing_model"),
+               accuracy_metrics=("min_film", "max_eccentricity", "power_mean")),
 )
 
 ENGINE: tuple[EffectSpec, ...] = (
@@ -139,37 +189,51 @@ ENGINE: tuple[EffectSpec, ...] = (
                "crank-train loads: gas and inertia forces, side thrust, big-end loads in rod "
                "axes, main-bearing loads by the determinate bay split",
                produces=("CrankLoads",),
-               key_metrics=("big_end_max_load",)),
+               key_metrics=("big_end_max_load",),
+               sheets=("engine_loads",), knobs=("crank_step", "pressure_interpolation"),
+               accuracy_metrics=("big_end_max_load",)),
     EffectSpec("crank_bearings", "camtrain.effects.crank_bearings",
                "big-end and main bearings: orbits to a periodic cycle, steady and Petroff "
                "columns, minimum film and power per bearing and in total",
                needs=("CrankLoads",), produces=("EngineBearings",),
                key_metrics=("total_power_dynamic",),
-               summary="camtrain.report.summaries:crank_bearings"),
+               summary="camtrain.report.summaries:crank_bearings",
+               sheets=("orbits",),
+               knobs=("bearing_mesh", "bearing_model", "period_tolerance", "step_tolerance",
+                      "mobility"),
+               accuracy_metrics=("big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
+                                 "total_power_dynamic", "total_power_steady")),
     EffectSpec("piston", "camtrain.effects.piston",
                "piston assembly: inter-ring gas, compression-ring films (flooded, then starved "
                "passes), oil-control ring and skirt friction, power of every piston",
                produces=("PistonFriction",),
                key_metrics=("piston_power_mean", "piston_power_total"),
-               summary="camtrain.report.summaries:piston_rings"),
+               summary="camtrain.report.summaries:piston_rings",
+               sheets=("piston",),
+               knobs=("piston_crank_step", "ring_tolerance", "pass_tolerance",
+                      "gas_tolerance"),
+               accuracy_metrics=("piston_power_total", "ring_1_min_film_flooded",
+                                 "inter_ring_pressure_1_peak")),
     EffectSpec("valve_trains", "camtrain.effects.valve_trains",
                "valve-train decks included by path, run at the camshaft speed: cams, camshaft "
                "bearings and guides",
                produces=("ValveTrainFriction",),
-               key_metrics=("valve_train_power_total",)),
+               key_metrics=("valve_train_power_total",),
+               includes="camtrain.build.valve_trains:included_valve_trains"),
     EffectSpec("flame", "camtrain.effects.flame",
                "FLAME engine total: bearings + valve trains + pistons + accessories, fmep and "
                "shares",
                uses=("EngineBearings", "ValveTrainFriction", "PistonFriction"),
                produces=("EngineFriction",),
-               summary="camtrain.report.summaries:flame"),
+               summary="camtrain.report.summaries:flame",
+               accuracy_metrics=("flame_total",)),
     EffectSpec("correlations", "camtrain.effects.correlations",
                "friction correlations: Patton-Nitschke-Heywood 1989 and Sandoval-Heywood 2003 "
                "term by term, Chen-Flynn with the user's constants (beside FLAME, or alone on "
                "a bare engine deck)",
                produces=("FrictionCorrelations",),
                key_metrics=("pnh1989_fmep", "sandoval_heywood2003_fmep", "chen_flynn_fmep"),
-               summary="camtrain.report.summaries:correlations"),
+               summary="camtrain.report.summaries:correlations", sheets=("correlations",)),
 )
 
 
@@ -210,6 +274,18 @@ DEFAULT_KIND = "valve_train"
 def effect_names(kind: str = DEFAULT_KIND) -> tuple[str, ...]:
     """Names of the effects a deck of ``kind`` may list in ``effects``."""
     return tuple(e.name for e in KINDS[kind].effects)
+
+
+def declared_effects(plan) -> tuple[EffectSpec, ...]:
+    """The specs of the effects a plan ran, in run order, for the top floors to read what they
+    declared; a plan read back from a saved result is matched by effect name, and no plan (a
+    lift-only run) stands for the valve-train effects."""
+    if plan is None:
+        return KINDS[DEFAULT_KIND].effects
+    by_name = {e.name: e for e in KINDS[plan.kind].effects}
+    specs = (s.spec if getattr(s, "spec", None) is not None else by_name.get(s.effect)
+             for s in plan.steps if s.chosen)
+    return tuple(spec for spec in specs if spec is not None)   # an effect since renamed: none
 
 
 def kind_of(deck) -> DeckKind:
