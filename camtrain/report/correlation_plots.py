@@ -27,11 +27,18 @@ def _bars(result: Result) -> list[tuple[str, list[tuple[str, float]], float, flo
         # Chen-Flynn is one fit of the whole engine: no parts to split it into
         bars.append((label, parts or [("whole engine", total)], total,
                      None if fmep is None else fmep.value))
-    if bars and "flame_total" in result.metrics:
+    if bars and _ran(result, "flame"):
         fmep = result.metrics.get("fmep")
         bars.append(("FLAME", flame_parts(result), result.metrics["flame_total"].value,
                      None if fmep is None else fmep.value))
     return bars
+
+
+def _ran(result: Result, effect: str) -> bool:
+    """Whether the plan ran ``effect`` (the sheet asks the plan, not the metric names)."""
+    from camtrain.catalogue import declared_effects
+
+    return any(spec.name == effect for spec in declared_effects(result.plan))
 
 
 def correlation_sheet(result: Result, out_dir: Path, *, deck=None, sha: str | None = None,
