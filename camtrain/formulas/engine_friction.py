@@ -30,6 +30,7 @@ import numpy as np
 from camtrain.errors import field_error
 
 from ._util import arr, out
+from .fmep import PNH_CONSTANTS
 
 __all__ = [
     "VALVE_TRAIN_CONSTANTS", "OIL_GRADES", "NU_REFERENCE", "BOUNDARY_SPEEDS",
@@ -48,19 +49,13 @@ BOUNDARY_SPEEDS = {"pnh1989": 1000.0, "sandoval_heywood2003": 500.0}
 RING_GAS_K = 2.38e-2
 
 #: (C_ff flat follower, C_rf roller follower, C_oh oscillating hydrodynamic, C_om oscillating
-#: mixed) per valve-train layout (PNH 1989; Sandoval 2002 Table 4.2 as transcribed).
-#: The OHV roller constant is printed "0.5" in the public copies: 22 to 100 times the other
-#: roller constants (0.005-0.0227), and it would make a roller OHV train lose more than a flat
-#: one at every speed above about 1400 rev/min (0.5 N = 400 (1 + 1000/N)); a suspected
-#: misprint, so it is left undefined (a deck asking for it gets a message, not a number).
-VALVE_TRAIN_CONSTANTS = {
-    "sohc_finger": (600.0, 0.0227, 0.2, 42.8),
-    "sohc_rocker": (400.0, 0.0151, 0.5, 21.4),
-    "sohc_direct": (200.0, 0.0076, 0.5, 10.7),
-    "dohc_finger": (600.0, 0.0227, 0.2, 25.8),
-    "dohc_direct": (133.0, 0.0050, 0.5, 10.7),
-    "ohv": (400.0, None, 0.5, 32.1),
-}
+#: mixed) per valve-train layout (PNH 1989; Sandoval 2002 Table 4.2 as transcribed): the one
+#: table of camtrain.formulas.fmep. The OHV roller constant is printed "0.5" in the public
+#: copies: 22 to 100 times the other roller constants (0.005-0.0227), and it would make a roller
+#: OHV train lose more than a flat one at every speed above about 1400 rev/min (0.5 N = 400
+#: (1 + 1000/N)); a suspected misprint, so it is left undefined (a deck asking for it gets a
+#: message, not a number).
+VALVE_TRAIN_CONSTANTS = PNH_CONSTANTS
 
 #: Vogel fits of multigrade and monograde oils, nu [cSt] = k exp(theta_1 / (T + theta_2)), T in
 #: degC, and the high-shear / low-shear viscosity ratio: grade -> (k, theta_1, theta_2, ratio)
