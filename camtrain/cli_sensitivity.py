@@ -4,11 +4,9 @@ Imports only click at module level, so that `camtrain --help` stays fast.
 """
 from __future__ import annotations
 
-import sys
-
 import click
 
-from camtrain.cli_sweep import Terminated, _pair_specs, _terminate_as_interrupt
+from camtrain.cli_sweep import _pair_specs, run_resumable
 
 _DIST_OPTIONS = ("--uniform", "--log-uniform", "--normal", "--relative")
 _HINT = "--uniform LOW:HIGH, --log-uniform LOW:HIGH, --normal MEAN:SD or --relative -P%:+P%"
@@ -76,19 +74,9 @@ def sensitivity(ctx: click.Context, deck: str, params, uniform_, log_uniform_, n
     sweep.csv (every case) and plots. Exit codes: 0 done, 2 bad arguments or deck,
     130 interrupted, 143 terminated (continue with --resume).
     """
-    from camtrain.errors import CamtrainError
-
-    try:
-        with _terminate_as_interrupt():
-            report, out_dir = _run(ctx, deck, metrics, method, samples, seed, confidence, sets,
-                                   out, jobs, scheduler, resume, no_plots, quiet)
-    except CamtrainError as exc:
-        click.echo(f"error: {exc}", err=True)
-        sys.exit(exc.exit_code)
-    except KeyboardInterrupt as exc:
-        click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
-                   err=True)
-        sys.exit(143 if isinstance(exc, Terminated) else 130)
+    report, out_dir = run_resumable(lambda: _run(
+        ctx, deck, metrics, method, samples, seed, confidence, sets, out, jobs, scheduler,
+        resume, no_plots, quiet))
     for metric, why in report.skipped.items():
         click.echo(f"warning: {metric}: indices not estimated: {why}", err=True)
     if not quiet:

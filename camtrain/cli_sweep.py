@@ -113,19 +113,11 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
     sweep goes on. Exit codes: 0 done (even with failed cases), 2 bad arguments or deck,
     70 an internal error in some case, 130 interrupted, 143 terminated (use --resume).
     """
-    from camtrain.errors import EXIT_INTERNAL, CamtrainError
+    from camtrain.errors import EXIT_INTERNAL
 
-    try:
-        with _terminate_as_interrupt():
-            outcome, out_dir = _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume,
-                                    no_plots, overlay_max, quiet, units, write_decks, force)
-    except CamtrainError as exc:
-        click.echo(f"error: {exc}", err=True)
-        sys.exit(exc.exit_code)
-    except KeyboardInterrupt as exc:
-        click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
-                   err=True)
-        sys.exit(143 if isinstance(exc, Terminated) else 130)
+    outcome, out_dir = run_resumable(lambda: _run(
+        ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,
+        units, write_decks, force))
     for note in outcome.notes:
         click.echo(f"note: {note}", err=True)
     if not quiet:
@@ -142,6 +134,23 @@ def sweep(ctx: click.Context, deck: str, params, values_, range_, relative_, zip
         click.echo("some cases hit an internal error (a bug in camtrain; see sweep.csv)",
                    err=True)
         sys.exit(EXIT_INTERNAL)
+
+
+def run_resumable(study):
+    """Run ``study()``, a study that keeps its finished cases in sweep.csv: an input error
+    exits with its code, Ctrl-C (130) and SIGTERM (143) say how to continue."""
+    from camtrain.errors import CamtrainError
+
+    try:
+        with _terminate_as_interrupt():
+            return study()
+    except CamtrainError as exc:
+        click.echo(f"error: {exc}", err=True)
+        sys.exit(exc.exit_code)
+    except KeyboardInterrupt as exc:
+        click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
+                   err=True)
+        sys.exit(143 if isinstance(exc, Terminated) else 130)
 
 
 class Terminated(KeyboardInterrupt):
