@@ -14,9 +14,9 @@ import numpy as np
 from conftest import ROOT, note, paired, record
 
 from camtrain import api
-from camtrain.build.dynamics import setup
-from camtrain.build.lift_law import build_lift_law
-from camtrain.build.mechanism import kinematics
+from camtrain.assemble.dynamics import setup
+from camtrain.assemble.lift_law import build_lift_law
+from camtrain.assemble.mechanism import kinematics
 from camtrain.dynamics import march
 from camtrain.lift import angle_grid
 

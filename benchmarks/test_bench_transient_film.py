@@ -13,7 +13,7 @@ import pytest
 from conftest import ROOT, note, paired, record
 
 from camtrain import mechanisms as M
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.contact.film import steady_film
 from camtrain.contact.model import CamContact
 from camtrain.deck.load import load_deck_text

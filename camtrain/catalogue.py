@@ -219,7 +219,7 @@ ENGINE: tuple[EffectSpec, ...] = (
                "bearings and guides",
                produces=("ValveTrainFriction",),
                key_metrics=("valve_train_power_total",),
-               includes="camtrain.build.valve_trains:included_valve_trains"),
+               includes="camtrain.assemble.valve_trains:included_valve_trains"),
     EffectSpec("flame", "camtrain.effects.flame",
                "FLAME engine total: bearings + valve trains + pistons + accessories, fmep and "
                "shares",
@@ -265,7 +265,7 @@ KINDS: dict[str, DeckKind] = {k.name: k for k in (
              title="JOURNAL BEARING UNDER A DYNAMIC LOAD"),
     DeckKind("engine", "camtrain.deck.schema_engine:EngineDeck", ENGINE,
              header="camtrain.report.engine_report:engine_header_rows",
-             geometry="camtrain.build.engine:check_geometry",
+             geometry="camtrain.assemble.engine:check_geometry",
              title="ENGINE BEARINGS AND FRICTION"),
 )}
 DEFAULT_KIND = "valve_train"

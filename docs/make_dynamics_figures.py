@@ -110,7 +110,7 @@ def stiff_limit_figure():
     import numpy as np
     from matplotlib.figure import Figure
 
-    from camtrain.build.dynamics import rigid_load, setup
+    from camtrain.assemble.dynamics import rigid_load, setup
     from camtrain.dynamics import march
     from camtrain.loads import contact_mask
     from tests.dynamics.conftest import SINGLE_RATE, deck_of, kinematics_of, zeta_raw

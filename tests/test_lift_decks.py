@@ -9,7 +9,7 @@ import pytest
 from click.testing import CliRunner
 
 from camtrain import api
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.cli import main
 from camtrain.deck.load import validate
 from camtrain.errors import InputError

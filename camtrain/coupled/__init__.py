@@ -2,7 +2,7 @@
 2005 §2.6, §4; docs/camshaft_dynamics.md).
 
 A :class:`~.problem.CoupledProblem` (plain data built from the deck by
-:func:`camtrain.build.coupled.coupled_problem`) goes to the solver the deck names
+:func:`camtrain.assemble.coupled.coupled_problem`) goes to the solver the deck names
 (``camshaft.flexibility.coupling_solver``), which returns a :class:`~.problem.CoupledResult`.
 The solvers, one module each, each owning its iteration:
 

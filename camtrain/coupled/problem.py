@@ -1,5 +1,5 @@
 """What a coupled shaft-and-trains solver is given and what it returns (:mod:`camtrain.coupled`):
-plain frozen data, built from the deck by :func:`camtrain.build.coupled.coupled_problem`, so no
+plain frozen data, built from the deck by :func:`camtrain.assemble.coupled.coupled_problem`, so no
 solver sees the deck."""
 from __future__ import annotations
 

@@ -30,7 +30,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from camtrain.build.coupled import coupled_problem
+    from camtrain.assemble.coupled import coupled_problem
     from camtrain.camshaft.product import CamshaftLoads
     from camtrain.coupled import solve
     from camtrain.loads import ContactLoad

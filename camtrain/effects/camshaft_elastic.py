@@ -32,7 +32,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, res):
-    from camtrain.build.shaft import answer, shaft_from_deck
+    from camtrain.assemble.shaft import answer, shaft_from_deck
     from camtrain.camshaft.product import CamshaftLoads
     from camtrain.tabulate.shaft import add_shaft
 

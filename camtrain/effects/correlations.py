@@ -35,7 +35,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, result):
-    from camtrain.build import correlations as build
+    from camtrain.assemble import correlations as build
     from camtrain.engine.correlations import (
         GROUPS,
         MODELS,

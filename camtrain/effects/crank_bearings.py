@@ -38,7 +38,7 @@ def reason(deck, planned) -> str:
 
 
 def run(deck, inputs, result):
-    from camtrain.build import engine as build
+    from camtrain.assemble import engine as build
     from camtrain.engine import CrankLoads, solve_crank_bearings
     from camtrain.errors import ConvergenceError
     from camtrain.tabulate.crank_bearing import add_bearing

@@ -32,7 +32,7 @@ def run(deck, inputs, result):
 
     import numpy as np
 
-    from camtrain.build import engine as build
+    from camtrain.assemble import engine as build
     from camtrain.engine import crank_train_loads
 
     for message in deck.advisories():

@@ -3,7 +3,7 @@ load replaces the rigid train's (rank 1 over ``loads``), so Hertz, film, frictio
 camshaft run unchanged on it.
 
 Physics in :mod:`camtrain.dynamics` (lumped train, integrators), the deck's [dynamics] section
-turned into it in :mod:`camtrain.build.dynamics`. Writes the dynamic load, follower and valve
+turned into it in :mod:`camtrain.assemble.dynamics`. Writes the dynamic load, follower and valve
 motion, spring and seat forces, contact status and the rigid load beside them; events for every
 separation and re-contact during the lift event and every seat impact; warnings for bounce.
 """
@@ -74,7 +74,7 @@ def run(deck, inputs, res):
 
     import numpy as np
 
-    from camtrain.build.dynamics import rigid_load, setup
+    from camtrain.assemble.dynamics import rigid_load, setup
     from camtrain.dynamics import StepTooLarge, march
     from camtrain.dynamics.findings import findings
     from camtrain.errors import field_error

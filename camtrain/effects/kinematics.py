@@ -26,7 +26,7 @@ def reason(deck, planned) -> str:
 # fit and noise estimate cost far more than the rest of a run).
 @lru_cache(maxsize=32)
 def _cached_law(lift_model):
-    from camtrain.build.lift_law import build_lift_law
+    from camtrain.assemble.lift_law import build_lift_law
 
     return build_lift_law(lift_model)
 
@@ -339,7 +339,7 @@ def _cached_valve_lift(lift_model, mechanism, base_radius: float, points: int):
     """Cam lift converted to valve lift: depends only on the lift, the pivot geometry and the
     grid, so a sweep over other parameters converts once (the conversion is a root search per
     angle). The arrays are made read-only because they are shared between runs."""
-    from camtrain.build.mechanism import valve_lift
+    from camtrain.assemble.mechanism import valve_lift
 
     curve = _cached_curve(lift_model, points)
     valve = valve_lift(lift_model, mechanism, base_radius, curve)
@@ -355,7 +355,7 @@ def _cached_kinematics(lift_model, mechanism, cam, speed, points: int):
     from, so a sweep over anything else (spring, masses, lubricant, materials) or a second run
     of a deck forms them once. Their arrays are read-only, shared between runs. A geometry
     error is not kept: it is raised again on every run."""
-    from camtrain.build.mechanism import train_kinematics
+    from camtrain.assemble.mechanism import train_kinematics
 
     valve = _cached_curve(lift_model, points) if lift_model.measured_at == "valve" else \
         _cached_valve_lift(lift_model, mechanism, cam.base_radius, points)

@@ -35,7 +35,7 @@ def _interp(speeds, values, rpm: float) -> float:
 
 def piston_case(deck):
     """The :class:`~camtrain.piston.cycle.PistonCase` of the deck at its run speed."""
-    from camtrain.build.oil import flame_oil_factor
+    from camtrain.assemble.oil import flame_oil_factor
     from camtrain.piston.cycle import CompressionRing, PistonCase
     from camtrain.piston.ring import Ring
     from camtrain.piston.thermal import ViscosityLaw
@@ -75,7 +75,7 @@ def piston_case(deck):
 
 def cylinder_pressure(deck):
     """Gauge cylinder pressure [Pa] of the run speed's table as a function of crank angle."""
-    from camtrain.build.engine import pressure_table
+    from camtrain.assemble.engine import pressure_table
 
     table = pressure_table(deck)   # the run speed's table, scaled to [load] when given
     how = getattr(getattr(deck, "solver", None), "pressure_interpolation", "periodic_cubic")

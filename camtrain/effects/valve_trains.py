@@ -1,6 +1,6 @@
 """Valve-train effect of an engine deck: each valve-train deck the engine includes by path
 ([[flame.valve_trains]]) runs through its own plan at the engine's camshaft speed (the scene
-composes them, camtrain.build.valve_trains makes the decks, the runner runs them before this
+composes them, camtrain.assemble.valve_trains makes the decks, the runner runs them before this
 effect: EffectSpec.includes); the cams, camshaft bearings and guides of every camshaft are
 summed (Yang 1992 Part IV, Fig. 4.7; :mod:`camtrain.engine.valve_trains`)."""
 from __future__ import annotations

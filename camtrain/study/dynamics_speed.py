@@ -13,9 +13,9 @@ def dynamics_speed(deck_path: str, *, rtol: float = 2e-3, start_rpm: float | Non
     """Search the first separation speed of DECK's elastic train (bracket, then bisection to
     ``rtol``). Returns speeds in rpm and angles in deg."""
     from camtrain import api
-    from camtrain.build.dynamics import separation_check
-    from camtrain.build.lift_law import build_lift_law
-    from camtrain.build.mechanism import kinematics
+    from camtrain.assemble.dynamics import separation_check
+    from camtrain.assemble.lift_law import build_lift_law
+    from camtrain.assemble.mechanism import kinematics
     from camtrain.dynamics.speed import first_separation_speed
     from camtrain.errors import field_error
     from camtrain.lift import angle_grid

@@ -87,8 +87,8 @@ def correlation_map(deck, speeds, loads, temperatures, measure: str | None = Non
     grid, vectorised: speeds [rpm], loads (the [load] value in bar, ``measure`` or the deck's
     [load] measure, on a deck with a pressure diagram; else the intake pressure ratio), oil
     temperatures [degC]."""
-    from camtrain.build import correlations as build
-    from camtrain.build.engine import load_factor, pressure_table
+    from camtrain.assemble import correlations as build
+    from camtrain.assemble.engine import load_factor, pressure_table
     from camtrain.engine.correlations import (
         GROUPS,
         MODELS,

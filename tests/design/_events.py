@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 import camtrain.api as ct
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.lift.base import DEG, MM
 from tests.conftest import DECKS
 

@@ -12,7 +12,7 @@ import pytest
 import tomli_w
 
 import camtrain.api as ct
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.lift.base import DEG, MM
 from tests.conftest import DECKS, ROOT
 from tests.design._events import read_events

@@ -34,8 +34,8 @@ def deck_of(raw: dict):
 
 
 def kinematics_of(deck):
-    from camtrain.build.lift_law import build_lift_law
-    from camtrain.build.mechanism import kinematics
+    from camtrain.assemble.lift_law import build_lift_law
+    from camtrain.assemble.mechanism import kinematics
     from camtrain.lift import angle_grid
 
     curve = build_lift_law(deck.lift).evaluate(angle_grid(deck.solver.angle_points))
@@ -53,7 +53,7 @@ def assert_integrators_agree(deck, kin, rpm: float, cycles: int) -> None:
 
     # imported under another name: a module-level function called setup is a nose-style setup
     # hook to pytest < 8 (the declared minimum is 7.4)
-    from camtrain.build.dynamics import setup as dynamic_setup
+    from camtrain.assemble.dynamics import setup as dynamic_setup
     from camtrain.dynamics import march
     from camtrain.dynamics.findings import findings
 

@@ -10,8 +10,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from camtrain.build.dynamics import rigid_load
-from camtrain.build.dynamics import setup as dynamic_setup
+from camtrain.assemble.dynamics import rigid_load
+from camtrain.assemble.dynamics import setup as dynamic_setup
 from camtrain.dynamics import march
 from camtrain.dynamics.contact_law import (
     HertzLineLaw,

@@ -13,7 +13,7 @@ import pytest
 
 # imported under another name: a module-level function called setup is a nose-style setup
 # hook to pytest < 8 (the declared minimum is 7.4)
-from camtrain.build.dynamics import setup as dynamic_setup
+from camtrain.assemble.dynamics import setup as dynamic_setup
 from camtrain.dynamics import march
 from camtrain.dynamics.integrators import _start_index
 from tests.dynamics.conftest import (

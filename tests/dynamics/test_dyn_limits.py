@@ -9,11 +9,11 @@ import math
 import numpy as np
 import pytest
 
-from camtrain.build.dynamics import rigid_load, separation_check
+from camtrain.assemble.dynamics import rigid_load, separation_check
 
 # imported under another name: a module-level function called setup is a nose-style setup
 # hook to pytest < 8 (the declared minimum is 7.4)
-from camtrain.build.dynamics import setup as dynamic_setup
+from camtrain.assemble.dynamics import setup as dynamic_setup
 from camtrain.dynamics import march
 from camtrain.dynamics.speed import first_separation_speed
 from camtrain.loads import bounce_speed, contact_mask

@@ -21,8 +21,8 @@ import math
 import numpy as np
 import pytest
 
-from camtrain.build.dynamics import rigid_load
-from camtrain.build.dynamics import setup as dynamic_setup
+from camtrain.assemble.dynamics import rigid_load
+from camtrain.assemble.dynamics import setup as dynamic_setup
 from camtrain.dynamics import march
 from camtrain.loads import contact_mask
 from tests.dynamics.conftest import SINGLE_RATE, deck_of, kinematics_of, zeta_raw

@@ -69,7 +69,7 @@ def test_default_step_resolves_the_first_mode_of_the_shipped_decks(deck):
     """The automatic step (the shortest period / 20) puts at least 58 steps in the period of
     the train's first mode (cam closed, valve off its seat), so that mode's frequency is within
     0.1 % by default: 420 steps (Zeta, 514 Hz surge mode), 180 (push rod, 1333 Hz)."""
-    from camtrain.build.dynamics import setup as dynamic_setup
+    from camtrain.assemble.dynamics import setup as dynamic_setup
     from camtrain.deck.load import load_deck
     from tests.conftest import DECKS
     from tests.dynamics.conftest import kinematics_of
@@ -197,7 +197,7 @@ def test_damping_given_as_values_equals_the_same_damping_given_as_ratios():
 
 
 def test_deck_damping_values_reach_the_model():
-    from camtrain.build.dynamics import build_model
+    from camtrain.assemble.dynamics import build_model
     from tests.dynamics.conftest import deck_of, zeta_raw
 
     deck = deck_of(zeta_raw({"dynamics": {"contact_damping": 150.0, "seat_damping": 300.0,

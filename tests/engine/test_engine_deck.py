@@ -168,7 +168,7 @@ def test_absolute_table_is_the_gauge_table_plus_the_crankcase():
 
 def test_viscosity_per_speed_is_interpolated_and_must_cover_the_speed():
     z = deck(ZETA)
-    from camtrain.build.engine import bearing
+    from camtrain.assemble.engine import bearing
 
     assert bearing(z, "big_end").viscosity == pytest.approx(2.90e-3, rel=1e-12)
     assert bearing(z, "main").viscosity == pytest.approx(2.57e-3, rel=1e-12)

@@ -108,7 +108,7 @@ def test_pnh_roller_valve_train_loses_less_than_flat_most_at_low_speed(layout):
     follower's boundary term becomes a rolling one): PNH's roller train is below its flat one
     at every speed, and the saving shrinks with speed (the boundary factor falls)."""
     bare = load_deck(str(BARE)).model
-    from camtrain.build.correlations import correlation_engine
+    from camtrain.assemble.correlations import correlation_engine
 
     flat = dataclasses.replace(correlation_engine(bare), layout=layout, follower="flat")
     roller = dataclasses.replace(flat, follower="roller")
@@ -168,7 +168,7 @@ def _raw_with_load(value):
 
 @pytest.mark.parametrize("measure,target", [("imep", 7.5), ("peak_pressure", 80.0)])
 def test_load_scales_the_diagram_to_the_asked_value(measure, target):
-    from camtrain.build.engine import pressure_table
+    from camtrain.assemble.engine import pressure_table
     from camtrain.engine.pressure import net_imep
 
     raw = _raw_with_load(target)
@@ -198,7 +198,7 @@ def test_net_imep_of_a_constant_pressure_is_zero_and_of_a_step_is_its_work():
 
 
 def test_oil_reference_temperature_moves_flames_viscosities_by_the_grade_ratio():
-    from camtrain.build.engine import bearing
+    from camtrain.assemble.engine import bearing
     from camtrain.formulas.engine_friction import oil_grade_viscosity
 
     base = zeta()
@@ -288,7 +288,7 @@ def test_sweep_route_writes_the_same_map_as_the_vectorised_one(tmp_path):
 def test_a_diagram_without_positive_imep_cannot_be_scaled_exit_3():
     """A motored-looking diagram (constant pressure: no net work) cannot be scaled to an IMEP:
     a physically impossible request (exit 3), not a number."""
-    from camtrain.build.engine import load_factor
+    from camtrain.assemble.engine import load_factor
     from camtrain.errors import GeometryError
 
     raw = _raw_with_load(8.0)

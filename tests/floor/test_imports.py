@@ -133,7 +133,7 @@ FLOORS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("physics", ("lift", "mechanisms", "loads", "dynamics", "contact", "camshaft", "bearings",
                  "engine", "lubrication", "piston", "coupled")),
     ("deck", ("deck",)),
-    ("build", ("build",)),
+    ("assemble", ("assemble",)),
     ("result", ("result", "tabulate")),
     ("effects", ("effects",)),
     ("run", ("scene", "runner")),

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from camtrain import mechanisms as M
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.contact.model import contact_film, contact_hertz
 from camtrain.deck.load import load_deck
 from camtrain.errors import GeometryError

@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from camtrain.build.lift_law import build_lift_law
-from camtrain.build.mechanism import closing_geometry, pivot_geometry
+from camtrain.assemble.lift_law import build_lift_law
+from camtrain.assemble.mechanism import closing_geometry, pivot_geometry
 from camtrain.deck.load import load_deck
 from camtrain.lift import LiftCurve, angle_grid
 from camtrain.mechanisms import desmodromic

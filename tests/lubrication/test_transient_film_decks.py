@@ -17,7 +17,7 @@ import pytest
 
 from camtrain import api
 from camtrain import mechanisms as M
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.contact.film import entrainment
 from camtrain.contact.model import CamContact
 from camtrain.deck.load import load_deck_text

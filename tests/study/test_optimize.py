@@ -11,7 +11,7 @@ import pytest
 from scipy.optimize import brentq
 
 import camtrain.api as ct
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.study import optimize as opt
 from tests.conftest import DECKS, ROOT
 
@@ -49,7 +49,7 @@ def test_preload_optimum_is_where_the_bounce_speed_equals_the_over_speed():
     preload where camtrain's bounce speed (camtrain.loads.bounce: min over angles of
     sqrt(-a/b), the rigid train's W = a + omega^2 b) equals the over-speed, found here by a
     root search on that formula alone."""
-    from camtrain.build.mechanism import kinematics
+    from camtrain.assemble.mechanism import kinematics
     from camtrain.effects.kinematics import _cached_curve
     from camtrain.loads.bounce import bounce_speed
     from camtrain.units import to_si

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from camtrain import mechanisms as M
-from camtrain.build.lift_law import build_lift_law
+from camtrain.assemble.lift_law import build_lift_law
 from camtrain.deck.load import load_deck
 from camtrain.lift import angle_grid
 

@@ -39,7 +39,7 @@ angle_deg,lift_mm
 def derive() -> tuple[np.ndarray, np.ndarray]:
     """(angles [deg], valve lift [mm]) at whole degrees, from one base-circle zero to the next."""
     from camtrain import mechanisms as M
-    from camtrain.build.lift_law import build_lift_law
+    from camtrain.assemble.lift_law import build_lift_law
     from camtrain.deck.load import load_deck
     from camtrain.lift import angle_grid
 

@@ -66,8 +66,8 @@ def test_no_bounce_for_a_desmodromic_train(result):
 
 
 def test_jam_is_reported(deck, result):
-    from camtrain.build import mechanism as ME
-    from camtrain.build.lift_law import build_lift_law
+    from camtrain.assemble import mechanism as ME
+    from camtrain.assemble.lift_law import build_lift_law
     from camtrain.lift import angle_grid
     curve = build_lift_law(deck.lift).evaluate(angle_grid(360))
     ko, kc = ME.kinematics(deck, curve)

@@ -10,8 +10,8 @@ def coupled_problem(deck, kin, rigid_load, lobe_positions, theta):
     """The coupled problem of the deck's bank-1 lobes (at ``lobe_positions`` [m]) on the main
     pair's kinematics ``kin`` and grid ``theta`` [rad], the rigid train's contact load
     ``rigid_load`` [N]."""
-    from camtrain.build.dynamics import setup
-    from camtrain.build.shaft import drive_of, shaft_from_deck
+    from camtrain.assemble.dynamics import setup
+    from camtrain.assemble.shaft import drive_of, shaft_from_deck
     from camtrain.contact.model import CamContact
     from camtrain.coupled.problem import CoupledProblem, Coupling, ShaftOptions
 

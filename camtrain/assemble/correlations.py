@@ -1,12 +1,12 @@
 """Build the friction correlations' inputs from an engine deck: the engine as the correlations
-see it, the oil viscosity (:mod:`camtrain.build.oil`), the intake pressure and peak pressure
-at the run's load (:func:`camtrain.build.engine.load_factor`)."""
+see it, the oil viscosity (:mod:`camtrain.assemble.oil`), the intake pressure and peak pressure
+at the run's load (:func:`camtrain.assemble.engine.load_factor`)."""
 from __future__ import annotations
 
 import math
 
-from camtrain.build.engine import load_factor, pressure_table
-from camtrain.build.oil import oil_viscosity  # noqa: F401  (the correlations' oil)
+from camtrain.assemble.engine import load_factor, pressure_table
+from camtrain.assemble.oil import oil_viscosity  # noqa: F401  (the correlations' oil)
 from camtrain.engine.correlations import ChenFlynnConstants, CorrelationEngine
 
 #: atmospheric pressure [Pa] (the absolute peak of a gauge diagram for Chen-Flynn)

@@ -63,7 +63,7 @@ def check_geometry(deck: EngineDeck) -> tuple[str, list[str]]:
 
 def bearing(deck: EngineDeck, which: str) -> BearingSpec:
     """``which`` = "big_end" or "main": the bearing with its viscosity at the run speed."""
-    from camtrain.build.oil import flame_oil_factor
+    from camtrain.assemble.oil import flame_oil_factor
 
     b = getattr(deck.bearings, which)
     eta = b.viscosity_at(deck.speed.omega) * flame_oil_factor(deck)

@@ -9,7 +9,7 @@ import dataclasses
 
 def included_valve_trains(deck) -> list[tuple[str, object]]:
     """(name, valve-train deck model as it runs) of every included valve train, in deck order."""
-    from camtrain.build.oil import flame_oil_factor
+    from camtrain.assemble.oil import flame_oil_factor
     from camtrain.deck.load import load_deck
 
     factor = flame_oil_factor(deck)
