@@ -97,18 +97,7 @@ def residual_rows(f: Fit) -> list[dict]:
 
 
 def write_tables(f: Fit, out_dir: Path) -> list[Path]:
-    import csv
-    import io
-
-    def text(rows: list[dict]) -> str:
-        cols: list[str] = []
-        for r in rows:
-            cols += [c for c in r if c not in cols]
-        buf = io.StringIO()
-        w = csv.writer(buf, lineterminator="\n")
-        w.writerow(cols)
-        w.writerows([[r.get(c, "") for c in cols] for r in rows])
-        return buf.getvalue()
+    from camtrain.study.sensitivity_output import rows_csv as text
 
     names = [c.name for c in f.constants]
     singular = [{"relative_singular_value": float(s), **{n: float(v) for n, v in zip(

@@ -13,7 +13,9 @@ from camtrain.report.tables import atomic_write
 PLOT_METRICS = 9
 
 
-def _csv(rows: list[dict]) -> str:
+def rows_csv(rows: list[dict]) -> str:
+    """Rows of dicts as CSV: the columns in order of first appearance, floats to full
+    precision, None as an empty cell."""
     columns: list[str] = []
     for row in rows:
         columns += [k for k in row if k not in columns]
@@ -80,7 +82,7 @@ def write_outputs(report, out_dir: Path, plots: bool = True) -> list[Path]:
     written = []
     for name, rows in (("indices.csv", report.indices), ("convergence.csv", report.convergence),
                        ("distribution.csv", report.distribution)):
-        atomic_write(out_dir / name, _csv(rows))
+        atomic_write(out_dir / name, rows_csv(rows))
         written.append(out_dir / name)
     atomic_write(out_dir / "indices.md", markdown(report))
     written.append(out_dir / "indices.md")
@@ -102,6 +104,14 @@ def _grid(plt, n: int, title: str):
         ax.set_visible(False)
     fig.suptitle(title, fontsize=10)
     return fig, list(axes.flat)
+
+
+def _saved(plt, fig, path: Path) -> Path:
+    """Lay the figure out, write it to ``path`` and free it."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
 
 
 def _pyplot():
@@ -137,10 +147,7 @@ def indices_plot(report, path: Path) -> Path:
         ax.set_yticks(list(y), names, fontsize=8)
         ax.set_title(f"{metric} [{rows[0]['unit']}]", fontsize=9)
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _saved(plt, fig, path)
 
 
 def convergence_plot(report, path: Path) -> Path:
@@ -169,10 +176,7 @@ def convergence_plot(report, path: Path) -> Path:
         ax.set_xlabel("cases run", fontsize=8)
         ax.set_title(f"{metric} [{rows[0]['unit']}]", fontsize=9)
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _saved(plt, fig, path)
 
 
 def distribution_plot(report, path: Path) -> Path:
@@ -198,7 +202,4 @@ def distribution_plot(report, path: Path) -> Path:
         for q in np.quantile(y, (0.05, 0.5, 0.95)):
             ax.axvline(q, color="k", lw=0.8, ls="--")
         ax.set_xlabel(f"{name} [{unit}]", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _saved(plt, fig, path)
