@@ -158,7 +158,8 @@ def arm_contacts(k: Kinematics, g: PivotGeometry, load, *, mu=None, follower_ine
     [N] (friction coefficient ``mu`` of the cam contact as the load was solved, or None)."""
     rate = k.omega * k.gamma_d1
     slide = pad_sliding_speed(rate, k.gamma, g.B, g.kappa, pad_radius)
-    force = np.where(load > 0.0, pad_load(k, load, mu, follower_inertia), 0.0)
+    # the pad only pushes: a negative balance means the arm would leave the valve tip there
+    force = np.where(load > 0.0, np.maximum(pad_load(k, load, mu, follower_inertia), 0.0), 0.0)
     p_max, half = pad_hertz(force, pad_radius, reduced_modulus, shape=pad_shape, width=pad_width)
     reaction = np.where(load > 0.0, pivot_reaction(k, g, np.maximum(load, 0.0), force), 0.0)
     torque = pivot_friction * pivot_radius * reaction

@@ -31,8 +31,9 @@ RFF = dict(A=30 * MM, B=45 * MM, D=40 * MM, follower_radius=9 * MM, base_radius=
 
 def rff_geometry(kappa=None) -> PivotGeometry:
     g = PivotGeometry(kappa=0.0, **RFF)
-    # kappa such that the valve arm is perpendicular to the valve axis on the base circle
-    return PivotGeometry(kappa=np.pi / 2 - g.gamma_b if kappa is None else kappa, **RFF)
+    # kappa such that the valve arm is perpendicular to the valve axis on the base circle and
+    # the cam pushing the roller opens the valve (gamma_B + kappa = -90 deg)
+    return PivotGeometry(kappa=-np.pi / 2 - g.gamma_b if kappa is None else kappa, **RFF)
 
 
 def rff(rotation="clockwise", points=3600, kappa=None):
