@@ -138,7 +138,8 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "valve pad (sliding, load, Hertz, friction) and pivot friction of a finger "
                "follower or rocker",
                needs=("TrainKinematics", "ContactLoad"), produces=("ArmContacts",),
-               key_metrics=("arm_power_mean",)),
+               key_metrics=("arm_power_mean",),
+               accuracy_metrics=("arm_power_mean", "pad_pressure_max")),
     EffectSpec("camshaft_torque", "camtrain.effects.camshaft",
                "camshaft: lobe torques phased and summed, drive power, harmonic orders, second "
                "bank, pendulum dampers",

@@ -47,14 +47,14 @@ class Layout:
 
     pivot: tuple[float, ...] = quantity(
         "Pivot centre U [x, y]: the lash adjuster's ball (finger follower) or the rocker shaft",
-        "mm", min_items=2, max_items=2, example=[40.0, 0.0])
+        "mm", min_items=2, max_items=2, example=[-32.0, -29.0])
     roller_centre: tuple[float, ...] = quantity(
         "Roller centre (centre of curvature of the face on the cam) Q [x, y]; it must lie at "
         "cam.base_radius + mechanism.follower_radius from the cam centre", "mm",
-        min_items=2, max_items=2, example=[17.2, 19.4977])
+        min_items=2, max_items=2, example=[0.0, -25.75])
     pad_centre: tuple[float, ...] = quantity(
         "Centre of curvature of the valve pad V [x, y]", "mm", min_items=2, max_items=2,
-        example=[0.0, 40.0])
+        example=[20.0, -28.0])
     valve_direction: float = quantity(
         "Direction in which the valve opens, counterclockwise from the +x axis", "deg",
         gt=-360, lt=360, example=-90.0)
@@ -74,7 +74,7 @@ class ArmContacts:
         "contact)", default="cylindrical")
     pad_width: float | None = quantity(
         "Width of a cylindrical pad on the valve tip (line-contact length)", "mm", default=None,
-        gt=0, example=6.0, applies="pad_shape = cylindrical")
+        gt=0, example=5.5, applies="pad_shape = cylindrical")
     pad_friction: float = quantity(
         "Friction coefficient at the valve pad (boundary/mixed sliding on the valve tip)", "-",
         ge=0, lt=1, example=0.1)
