@@ -191,3 +191,43 @@ def test_bad_roller_inputs_exit_2_naming_the_field(tmp_path):
     at_pivot = copy.deepcopy(raw)
     at_pivot["mechanism"]["layout"]["pad_centre"] = [-32.0, -29.0]
     _exit_2(tmp_path, at_pivot, "mechanism.layout.pad_centre")
+
+
+@pytest.mark.derived
+def test_pad_load_and_pivot_reaction_by_hand():
+    """The deck's layout on the base circle, 100 N on the roller, no friction: the normal
+    through the roller centre is vertical (x = 0), 32 mm from the pivot; the valve axis through
+    the pad contact is vertical (x = 20 mm), 52 mm from it. So F_pad = 100 x 32/52 = 61.5385 N
+    and, both forces vertical, the pivot reaction is 100 - 61.5385 = 38.4615 N; the ball socket
+    (4 mm, 0.1) carries 0.1 x 4 mm x 38.4615 N = 0.0153846 N m."""
+    from camtrain.assemble.lift_law import build_lift_law
+    from camtrain.assemble.mechanism import kinematics, pivot_geometry
+    from camtrain.lift import angle_grid
+    from camtrain.mechanisms.arm_contacts import arm_contacts
+
+    deck = validate(_raw())
+    k, _ = kinematics(deck, build_lift_law(deck.lift).evaluate(angle_grid(720)))
+    g = pivot_geometry(deck.mechanism, deck.cam.base_radius, "end")
+    out = arm_contacts(k, g, np.full(k.theta.shape, 100.0), pad_radius=12e-3, pad_width=5.5e-3,
+                       pivot_radius=4e-3, pivot_friction=0.1, pad_friction=0.1,
+                       reduced_modulus=2.3e11)
+    base = 0                                       # theta = -180 deg, on the base circle
+    assert out.pad_load[base] == pytest.approx(100 * 32 / 52, rel=1e-9)
+    assert out.pivot_reaction[base] == pytest.approx(100 - 100 * 32 / 52, rel=1e-9)
+    assert out.pivot_friction_torque[base] == pytest.approx(0.1 * 4e-3 * 38.461538, rel=1e-7)
+    assert out.pad_sliding_speed[base] == 0.0 and out.pad_travel[base] == 0.0
+
+
+def test_push_rod_roller_lifter_is_a_line_contact():
+    from camtrain import api as _api
+    from camtrain.deck.templates import render_template
+
+    loaded = _api.loads(render_template("pushrod_roller"), "pushrod_roller.toml")
+    from camtrain.assemble.lift_law import build_lift_law
+    from camtrain.assemble.mechanism import kinematics
+    from camtrain.lift import angle_grid
+
+    deck = loaded.model
+    k, _ = kinematics(deck, build_lift_law(deck.lift).evaluate(angle_grid(720)))
+    assert k.mechanism == "roller simple push rod" and k.line_contact
+    assert np.all(k.follower_radius == 12e-3)
