@@ -231,3 +231,29 @@ def test_push_rod_roller_lifter_is_a_line_contact():
     k, _ = kinematics(deck, build_lift_law(deck.lift).evaluate(angle_grid(720)))
     assert k.mechanism == "roller simple push rod" and k.line_contact
     assert np.all(k.follower_radius == 12e-3)
+
+
+@pytest.mark.derived
+def test_roller_rocker_by_hand():
+    """The roller rocker template on its base circle: pivot (25, 32), roller (0, 25.75), pad
+    centre (62, 27) mm, valve opening down. The normal through the roller is the line x = 0,
+    25 mm from the pivot; the valve axis through the pad contact is x = 62 mm, 37 mm from it:
+    load ratio W/F = 37/25 = 1.48. A centre pivot carries both forces, cam up and valve up on
+    the arm: reaction W + F = 100 (1 + 25/37) = 167.5676 N for 100 N on the roller."""
+    from camtrain import api as _api
+    from camtrain.assemble.lift_law import build_lift_law
+    from camtrain.assemble.mechanism import kinematics, pivot_geometry
+    from camtrain.deck.templates import render_template
+    from camtrain.lift import angle_grid
+    from camtrain.mechanisms.arm_contacts import arm_contacts
+
+    deck = _api.loads(render_template("roller_rocker"), "roller_rocker.toml").model
+    k, _ = kinematics(deck, build_lift_law(deck.lift).evaluate(angle_grid(720)))
+    assert k.mechanism == "roller central-pivoted follower"
+    assert k.rocker_ratio[0] == pytest.approx(37 / 25, rel=1e-9)
+    g = pivot_geometry(deck.mechanism, deck.cam.base_radius, "central")
+    out = arm_contacts(k, g, np.full(k.theta.shape, 100.0), pad_radius=12e-3,
+                       pad_shape="spherical", reduced_modulus=2.3e11)
+    assert out.pad_load[0] == pytest.approx(100 * 25 / 37, rel=1e-9)
+    assert out.pivot_reaction[0] == pytest.approx(100 * (1 + 25 / 37), rel=1e-9)
+    assert out.pad_max_pressure[0] > 0 and np.all(out.pivot_friction_torque == 0)
