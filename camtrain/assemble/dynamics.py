@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from camtrain.assemble.mechanism import body_inertia, roller_inertia, valve_arm_length
 from camtrain.dynamics import (
     CamInput,
     Settings,
@@ -20,7 +21,6 @@ from camtrain.dynamics import (
     cam_input,
     rocker_equivalent_mass,
 )
-from camtrain.assemble.mechanism import body_inertia, roller_inertia, valve_arm_length
 from camtrain.loads.forces import BASE_CIRCLE_TOLERANCE
 
 

@@ -21,14 +21,6 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
 )
 from camtrain.deck.schema_design import Design
 from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
-from camtrain.deck.schema_roller import (
-    ArmContacts,
-    Dyson,
-    Layout,
-    Roller,
-    dyson_from_layout,
-    layout_problems,
-)
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -43,6 +35,14 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     Table,
     WilliamsElementary,
     WilliamsLowJerk,
+)
+from camtrain.deck.schema_roller import (
+    ArmContacts,
+    Dyson,
+    Layout,
+    Roller,
+    dyson_from_layout,
+    layout_problems,
 )
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,

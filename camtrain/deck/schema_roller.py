@@ -85,6 +85,9 @@ class ArmContacts:
         "Friction coefficient of the pivot: torque = coefficient x pivot reaction x radius",
         "-", ge=0, lt=1, example=0.1)
 
+    schema_rules = (When("pad_shape", ("cylindrical",), require=("pad_width",)),
+                    When("pad_shape", ("spherical",), forbid=("pad_width",)))
+
     def problems(self, path: str) -> list[Problem]:
         if self.pad_shape == "cylindrical" and self.pad_width is None:
             return [Problem(f"{path}.pad_width", "is required for a cylindrical pad", None,

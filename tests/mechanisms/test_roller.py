@@ -80,7 +80,7 @@ def test_roller_centre_on_offset_curve(rotation):
     ratio 4.0 per halving of the step)."""
     coarse, fine = _normal_cosines(rotation, 1800), _normal_cosines(rotation, 3600)
     assert fine[0] < 1e-12
-    for c, f in zip(coarse[1:], fine[1:]):
+    for c, f in zip(coarse[1:], fine[1:], strict=True):
         assert f < 1e-4
         assert c / f > 3.5
 
