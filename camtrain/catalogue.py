@@ -70,6 +70,7 @@ PRODUCTS: dict[str, str] = {
     "ContactFriction": "camtrain.contact.products:ContactFriction",
     "CamTorque": "camtrain.contact.products:CamTorque",
     "GuideLosses": "camtrain.contact.guides:GuideLosses",
+    "ArmContacts": "camtrain.mechanisms.arm_contacts:ArmContacts",
     "CamshaftLoads": "camtrain.camshaft.product:CamshaftLoads",
     "ElasticCamshaft": "camtrain.camshaft.product:ElasticCamshaft",
     "BearingOrbits": "camtrain.bearings.product:BearingOrbits",
@@ -133,6 +134,12 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
     EffectSpec("guides", "camtrain.effects.guides",
                "follower/guide and valve/guide Couette shear losses (Yang 1992 eq. 3.29)",
                needs=("TrainKinematics",), produces=("GuideLosses",)),
+    EffectSpec("arm_contacts", "camtrain.effects.arm_contacts",
+               "valve pad (sliding, load, Hertz, friction) and pivot friction of a finger "
+               "follower or rocker",
+               needs=("TrainKinematics", "ContactLoad"), produces=("ArmContacts",),
+               key_metrics=("arm_power_mean",),
+               accuracy_metrics=("arm_power_mean", "pad_pressure_max")),
     EffectSpec("camshaft_torque", "camtrain.effects.camshaft",
                "camshaft: lobe torques phased and summed, drive power, harmonic orders, second "
                "bank, pendulum dampers",

@@ -21,6 +21,7 @@ UNITS_OPTION = dict(type=click.Choice(["deck", "si"]), default="deck", show_defa
                          "with its unit) or si (m, rad, Pa, ... for machine pipelines).")
 
 MECHANISM_CHOICES = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic",
+                     "roller_finger", "roller_rocker", "roller_tappet", "pushrod_roller",
                      "journal_bearing", "engine")
 
 

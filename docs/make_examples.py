@@ -131,6 +131,13 @@ PUBLISHED = {
                              "against the rigid one, spring surge (8-element chain), valve "
                              "seating. No source prints this train's dynamics; see "
                              "docs/dynamics.md.", []),
+    "roller_finger": ("A roller finger follower of current dimensions on a hydraulic lash "
+                      "adjuster, drawn by positions ([mechanism.layout]), with its valve pad and "
+                      "ball-socket pivot ([mechanism.arm]). No source prints a complete RFF "
+                      "geometry: every value is assumed (flagged in the deck), so there is no "
+                      "published number to compare. The roller does not turn here (its rotation "
+                      "is a contact effect of its own), so power_loss_mean is a sliding loss; "
+                      "see docs/mechanism_roller.md.", []),
     "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
                          "flagged in the deck): the valve clearance taken up on the ramp, "
                          "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),

@@ -20,6 +20,8 @@ DECKS = Path(__file__).resolve().parent.parent / "decks"
 SOURCE_DECK = {
     "flat": "harrison_flat", "domed": "harrison_flat", "pushrod": "harrison_flat",
     "finger": "pinto_finger", "rocker": "rover_2300_rocker", "desmodromic": "desmo_rig",
+    "roller_finger": "roller_finger", "roller_rocker": "roller_finger",
+    "roller_tappet": "roller_finger", "pushrod_roller": "roller_finger",
     "journal_bearing": "bearing_ocvirk_check", "engine": "ruston_6veb",
 }
 

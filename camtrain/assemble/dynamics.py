@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from camtrain.assemble.mechanism import body_inertia, roller_inertia, valve_arm_length
 from camtrain.dynamics import (
     CamInput,
     Settings,
@@ -40,7 +41,7 @@ def valve_arm(deck) -> float | None:
     """Rocker arm on the valve side [m] (finger/rocker: B; push rod: D2), None without one."""
     mech = deck.mechanism
     if mech.type in ("finger", "rocker"):
-        return mech.B
+        return valve_arm_length(mech)
     if mech.type == "pushrod":
         return mech.pushrod.rocker_valve_arm
     return None
@@ -67,7 +68,7 @@ def build_model(deck, *, stiffness_scale: float = 1.0, kin=None) -> TrainModel:
     arm = valve_arm(deck)
     body = 0.0
     if arm is not None:
-        body = rocker_equivalent_mass(m.rocker_inertia, arm)
+        body = rocker_equivalent_mass(m.rocker_inertia + roller_inertia(deck.mechanism), arm)
         if deck.mechanism.type in ("finger", "rocker"):
             body += m.follower
     third = d.spring_mass / 3.0 if d.spring_elements > 0 else 0.0
@@ -217,9 +218,7 @@ def rigid_load(deck, kin, omega: float | None = None):
     from camtrain.loads import contact_load
 
     m, s = deck.masses, deck.spring
-    B = deck.mechanism.B or 0.0
-    body = {"follower_mass": m.follower, "follower_inertia": m.rocker_inertia + m.follower * B * B,
-            "rocker_inertia": m.rocker_inertia}
+    body = body_inertia(deck)
     c = deck.clearance
     lash = c is not None and c.lash_adjuster
     return contact_load(kin, np.full(kin.theta.shape, deck.tribology.boundary_friction),

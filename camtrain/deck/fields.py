@@ -121,6 +121,9 @@ class When:
     equal: tuple[tuple[str, Any], ...] = ()
     negate: bool = False
     reject: bool = False    # the value itself is not allowed (e.g. a speed of 0)
+    #: ``require`` is met as well by giving any one of these keys instead (a section that
+    #: states the same data another way, e.g. a pivoted follower's drawn layout)
+    or_given: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

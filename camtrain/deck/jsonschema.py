@@ -115,7 +115,9 @@ def _rule(rule, defaults: dict) -> dict:
     if rule.reject:
         return {"if": cond, "then": False}
     then: dict = {}
-    if rule.require:
+    if rule.require and rule.or_given:
+        then["anyOf"] = [{"required": list(rule.require)}] + [_given(k) for k in rule.or_given]
+    elif rule.require:
         then["required"] = list(rule.require)
     if rule.forbid:
         then["not"] = {"anyOf": [_given(k) for k in rule.forbid]}

@@ -36,6 +36,14 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     WilliamsElementary,
     WilliamsLowJerk,
 )
+from camtrain.deck.schema_roller import (
+    ArmContacts,
+    Dyson,
+    Layout,
+    Roller,
+    dyson_from_layout,
+    layout_problems,
+)
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
     Guides,
@@ -52,6 +60,9 @@ from camtrain.units import from_si, mm_text
 
 MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
 PIVOTED = ("finger", "rocker")
+#: mechanisms whose follower on the cam may be a roller
+ROLLER_CARRIERS = ("domed", "finger", "rocker", "pushrod")
+DYSON_KEYS = ("A", "B", "D", "kappa", "lambda_")
 
 
 # --------------------------------------------------------------------------- speed
@@ -175,9 +186,15 @@ class Mechanism:
     offset: float = quantity(
         "Offset of the follower axis from the cam centre (domed follower)", "mm", default=0.0,
         applies="domed")
+    follower: Literal["sliding", "roller"] = option(
+        "Face on the cam: sliding (a pad or dome) or roller (a roller of radius "
+        "follower_radius: roller tappet, roller finger follower, roller rocker, push-rod roller "
+        "lifter; a straight roller is a line contact, [mechanism.roller] crowns it)",
+        default="sliding", applies="domed, finger, rocker, pushrod")
     follower_shape: Literal["spherical", "cylindrical"] = option(
-        "Face of a domed follower: spherical (point contact) or cylindrical (line contact: a "
-        "pad, or a roller that does not rotate)", default="spherical", applies="domed")
+        "Face of a domed sliding follower: spherical (point contact) or cylindrical (line "
+        "contact); a roller is cylindrical whatever this says", default="spherical",
+        applies="domed")
     face_length: float | None = quantity(
         "Usable length (flat: diameter) of the follower face; contact must stay on it", "mm",
         default=None, gt=0)
@@ -203,6 +220,15 @@ class Mechanism:
     closing: ClosingPair | None = section(
         "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
         "(centrally pivoted)", applies="desmodromic")
+    roller: Roller | None = section(
+        "The roller of a roller follower (follower = \"roller\"): crown, mass",
+        applies="follower = roller")
+    layout: Layout | None = section(
+        "A finger follower or rocker drawn by positions (pivot, roller centre, pad centre, "
+        "valve direction) instead of A, B, D, kappa, lambda", applies="finger, rocker")
+    arm: ArmContacts | None = section(
+        "Valve pad and pivot of a finger follower or rocker: pad sliding, load, Hertz stress "
+        "and friction, pivot friction torque", applies="finger, rocker")
 
     schema_rules = (
         When("type", ("domed", "finger", "rocker", "desmodromic"), require=("follower_radius",)),
@@ -211,8 +237,20 @@ class Mechanism:
         When("type", ("pushrod",), negate=True, forbid=("pushrod",)),
         When("type", ("desmodromic",), require=("closing",)),
         When("type", ("desmodromic",), negate=True, forbid=("closing",)),
-        When("type", PIVOTED + ("desmodromic",), require=("A", "B", "D", "kappa", "lambda")),
+        When("type", ("desmodromic",), require=("A", "B", "D", "kappa", "lambda")),
+        When("type", PIVOTED, require=("A", "B", "D", "kappa", "lambda"), or_given=("layout",)),
+        When("type", PIVOTED, negate=True, forbid=("layout", "arm")),
+        When("type", ROLLER_CARRIERS, negate=True, equal=(("follower", "sliding"),)),
+        When("follower", ("sliding",), forbid=("roller",)),
         When("type", ("domed",), negate=True, equal=(("offset", 0),)))
+
+    def dyson(self) -> Dyson | None:
+        """Dyson's A, B, D, kappa, lambda of a pivoted follower [m, rad]: from the fields, or
+        from [mechanism.layout]; None when neither is complete."""
+        if self.layout is not None:
+            return dyson_from_layout(self.layout)
+        values = [getattr(self, k) for k in DYSON_KEYS]
+        return None if any(v is None for v in values) else Dyson(*values)
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -239,6 +277,13 @@ class Mechanism:
             if self.type != needed and getattr(self, name) is not None:
                 out.append(Problem(f"{path}.{name}", f"applies to a {needed} mechanism only",
                                    None, "no such section", f"remove it or set type = {needed!r}"))
+        out.extend(self._roller_problems(path))
+        if self.layout is not None and self.type in PIVOTED:
+            needs_pivot = ()
+            out.extend(Problem(f"{path}.{'lambda' if k == 'lambda_' else k}",
+                               "is given by [mechanism.layout]: give the positions or A, B, D, "
+                               "kappa and lambda, not both", None, "no value")
+                       for k in DYSON_KEYS if getattr(self, k) is not None)
         if self.type in needs_pivot:
             for name in ("A", "D") if self.type == "pushrod" else \
                     ("A", "B", "D", "kappa", "lambda_"):
@@ -250,6 +295,30 @@ class Mechanism:
         if self.offset != 0.0 and self.type != "domed":
             out.append(Problem(f"{path}.offset", "applies to a domed follower only",
                                mm_text(self.offset), "0 or no value"))
+        return out
+
+    def _roller_problems(self, path: str) -> list[Problem]:
+        """A roller only on a follower that can carry one, its section only with it; the
+        layout and arm sections only on finger followers and rockers."""
+        out = []
+        if self.follower == "roller" and self.type not in ROLLER_CARRIERS:
+            out.append(Problem(f"{path}.follower", f"a {self.type} follower cannot carry a "
+                               "roller", "roller", "\"sliding\"",
+                               "roller followers: " + ", ".join(ROLLER_CARRIERS)))
+        if self.follower == "roller" and self.follower_radius is None:
+            out.append(Problem(f"{path}.follower_radius", "is required for a roller follower "
+                               "(the roller radius)", None, "a radius > 0 in mm"))
+        if self.roller is not None and self.follower != "roller":
+            out.append(Problem(f"{path}.roller", "applies to a roller follower only", None,
+                               "no such section", "remove it or set follower = \"roller\""))
+        if self.roller is not None and self.roller.mass > 0.0 and self.type not in PIVOTED:
+            out.append(Problem(f"{path}.roller.mass", "applies to a finger follower or rocker "
+                               "only", f"{self.roller.mass:g} kg", "0 or no value",
+                               "put a tappet's roller in masses.valve_side"))
+        for name in ("layout", "arm"):
+            if getattr(self, name) is not None and self.type not in PIVOTED:
+                out.append(Problem(f"{path}.{name}", "applies to a finger follower or rocker "
+                                   "only", None, "no such section"))
         return out
 
 
@@ -322,5 +391,13 @@ class Deck:
         if self.cam.taper_angle and self.mechanism.type != "domed":
             out.append(Problem("cam.taper_angle", "applies to a domed follower only",
                                f"{from_si(self.cam.taper_angle, 'deg'):g} deg", "0"))
+        mech = self.mechanism
+        if self.cam.taper_angle and mech.follower == "roller":
+            out.append(Problem("cam.taper_angle", "a tapered cam runs on a spherical dome, not "
+                               "on a roller", f"{from_si(self.cam.taper_angle, 'deg'):g} deg",
+                               "0 with mechanism.follower = \"roller\""))
+        if mech.layout is not None and mech.type in PIVOTED:
+            out.extend(layout_problems(mech.layout, "mechanism.layout", self.cam.base_radius,
+                                       mech.follower_radius))
         out.extend(dynamics_problems(self))
         return out

@@ -97,6 +97,56 @@ EXAMPLES: dict[str, dict[str, object]] = {
                     "lubricant.pressure_viscosity": 15.0},
 }
 
+#: A roller finger follower of assumed, typical current dimensions (decks/roller_finger.toml)
+_RFF_LOADS = {
+    "lift.form": "polynomial", "lift.polynomial.half_period": 62.0,
+    "lift.polynomial.max_lift": 9.0, "lift.polynomial.exponents": [2, 8, 14, 20, 26],
+    "spring.rate": 28.0, "spring.preload_compression": 8.0, "masses.valve_side": 0.075,
+    "masses.rocker_inertia": 2.5e-5, "clearance.lash_adjuster": True,
+    "clearance.adjuster_load": 20.0, "lubricant.viscosity": 0.0099,
+    "lubricant.pressure_viscosity": 22.0,
+}
+_ARM = {"mechanism.arm.pad_radius": 12.0, "mechanism.arm.pad_width": 5.5,
+        "mechanism.arm.pad_friction": 0.1, "mechanism.arm.pivot_radius": 4.0,
+        "mechanism.arm.pivot_friction": 0.1}
+#: Roller followers: template names beyond the mechanism types (each names its type)
+EXAMPLES.update({
+    "roller_finger": {
+        "title": "Roller finger follower on a lash adjuster (assumed current dimensions)",
+        "speed.camshaft": 1500.0, "mechanism.type": "finger", "mechanism.follower": "roller",
+        "mechanism.follower_radius": 8.75, "mechanism.layout.pivot": [-32.0, -29.0],
+        "mechanism.layout.roller_centre": [0.0, -25.75],
+        "mechanism.layout.pad_centre": [20.0, -28.0], "mechanism.layout.valve_direction": -90.0,
+        "mechanism.roller.mass": 0.012, **_ARM, "cam.base_radius": 17.0, "cam.width": 9.0,
+        **_RFF_LOADS},
+    "roller_rocker": {
+        "title": "Centre-pivot roller rocker (assumed dimensions)",
+        "speed.camshaft": 1500.0, "mechanism.type": "rocker", "mechanism.follower": "roller",
+        "mechanism.follower_radius": 8.75, "mechanism.layout.pivot": [25.0, 32.0],
+        "mechanism.layout.roller_centre": [0.0, 25.75],
+        "mechanism.layout.pad_centre": [62.0, 27.0], "mechanism.layout.valve_direction": -90.0,
+        "mechanism.roller.mass": 0.012, **_ARM, "mechanism.arm.pad_shape": "spherical",
+        "mechanism.arm.pad_width": None, "cam.base_radius": 17.0, "cam.width": 9.0,
+        **_RFF_LOADS, "masses.rocker_inertia": 6.0e-5},
+    "roller_tappet": {
+        "title": "Roller tappet (direct-acting translating roller; Harrison lift)",
+        "speed.camshaft": 1500.0, "mechanism.type": "domed", "mechanism.follower": "roller",
+        "mechanism.follower_radius": 12.0, "cam.base_radius": 18.0, "cam.width": 12.0,
+        **_HARRISON_LIFT, **_HARRISON_LOADS},
+    "pushrod_roller": {
+        "title": "Push rod, rocker and roller lifter (Harrison lift)",
+        "speed.camshaft": 1500.0, "mechanism.type": "pushrod", "mechanism.follower": "roller",
+        "mechanism.follower_radius": 12.0, "mechanism.pushrod.layout": "simple",
+        "mechanism.pushrod.rocker_pushrod_arm": 35.0,
+        "mechanism.pushrod.rocker_valve_arm": 50.0,
+        "mechanism.pushrod.rocker_arm_angle": 10.0,
+        "mechanism.pushrod.valve_axis_angle": 15.0,
+        "mechanism.pushrod.pushrod_length": 200.0,
+        "mechanism.pushrod.tappet_axis_distance": 40.66,
+        "cam.base_radius": 20.0, "cam.width": 12.0, **_HARRISON_LIFT, **_HARRISON_LOADS},
+})
+EXAMPLES["roller_rocker"] = {k: v for k, v in EXAMPLES["roller_rocker"].items() if v is not None}
+
 
 def _fmt(value: object) -> str:
     if isinstance(value, bool):
@@ -253,7 +303,7 @@ def _render_template(mechanism: str) -> str:
         "# Check it with `camtrain check FILE`, run it with `camtrain run FILE --out DIR`.",
         "",
     ]
-    _render_section(Deck, "", ex, mechanism, lines, active=True)
+    _render_section(Deck, "", ex, str(ex["mechanism.type"]), lines, active=True)
     return "\n".join(lines).rstrip() + "\n"
 
 

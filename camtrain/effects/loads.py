@@ -31,12 +31,11 @@ def reason(deck, planned) -> str:
 
 
 def body_inertia(deck) -> dict[str, float]:
-    """J_b for the inertia keys of the mechanisms, from the deck's masses (Ball Table 3.1)."""
-    m = deck.masses
-    B = deck.mechanism.B or 0.0
-    return {"follower_mass": m.follower,
-            "follower_inertia": m.rocker_inertia + m.follower * B * B,
-            "rocker_inertia": m.rocker_inertia}
+    """J_b for the inertia keys of the mechanisms, from the deck's masses (Ball Table 3.1; the
+    roller of a roller finger follower or rocker included: assemble.mechanism.body_inertia)."""
+    from camtrain.assemble.mechanism import body_inertia as of_deck
+
+    return of_deck(deck)
 
 
 def load_inputs(deck) -> dict:

@@ -168,16 +168,17 @@ def pushrod_simple(lift: LiftCurve, rocker: RockerGeometry, *, tappet_axis_dista
                    base_radius: float, omega: float, tappet_radius: float = np.inf,
                    tappet_offset: float = 0.0, rotation: str | int = "clockwise",
                    min_concave_radius: float | None = None,
-                   face_length: float | None = None) -> Kinematics:
+                   face_length: float | None = None, tappet_shape: str = "spherical") -> Kinematics:
     """Valve lift law -> rocker -> push rod -> translating tappet on the cam (Williams §11.2-11.5).
 
     tappet_axis_distance: x_bar, rocker pivot to tappet axis [m] (mechanism.tappet_axis_distance);
     tappet_radius: inf for a flat tappet, else the dome radius (mechanism.follower_radius);
-    tappet_offset: tappet axis offset from the cam centre (mechanism.offset).
+    tappet_offset: tappet axis offset from the cam centre (mechanism.offset);
+    tappet_shape: 'spherical' dome or 'cylindrical' face (a roller lifter, line contact).
     q is the tappet lift; inertia keys: tappet_mass, rocker_inertia (about its pivot),
     pushrod_mass, pushrod_inertia (about its centre of mass).
     """
-    check_translating_inputs(base_radius, tappet_radius, tappet_offset, omega)
+    check_translating_inputs(base_radius, tappet_radius, tappet_offset, omega, tappet_shape)
     r, xb = rocker, float(tappet_axis_distance)
     max_lift = lift.max_lift
     f = r.pushrod_cg_fraction
@@ -208,7 +209,7 @@ def pushrod_simple(lift: LiftCurve, rocker: RockerGeometry, *, tappet_axis_dista
         gx, gy = f * gx, f * gy + (1.0 - f) * ks            # d(centre of mass)/d eps
         contact = translating_contact(lc.theta, s, s1, s2, base_radius=base_radius,
                                       follower_radius=tappet_radius, offset=tappet_offset,
-                                      omega=omega)
+                                      omega=omega, shape=tappet_shape)
         inertia = {"tappet_mass": s2, "rocker_inertia": e2 / ks,
                    "pushrod_mass": (ax * gx + ay * gy) / ks, "pushrod_inertia": psi2 * dpsi / ks}
         q_fields = dict(cam_lift=s, cam_d1=s1, cam_d2=s2, q=s.copy(), q_d1=s1.copy(),

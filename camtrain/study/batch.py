@@ -90,6 +90,8 @@ def route(raw: dict, params: list[Parameter], name: str, base_dir: str, key: str
     if mech.type not in ("flat", "domed"):
         return Route(False, f"a {mech.type} follower: its kinematics are solved case by case "
                      "(the batch covers translating flat-faced and domed followers)")
+    if mech.roller is not None and mech.roller.crown_radius is not None:
+        return Route(False, "a crowned roller: its elliptical contact is solved case by case")
     from camtrain.mechanisms.base import CLOCKWISE, normalise_rotation
 
     if normalise_rotation(mech.rotation) != CLOCKWISE:

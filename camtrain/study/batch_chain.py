@@ -63,7 +63,14 @@ def translating_kinematics(datum, valve, scal: dict, n: int):
     return build(valve, mech.type, base_radius=scal["base_radius"],
                  follower_radius=np.inf if flat else scal["follower_radius"],
                  offset=0.0 if flat or taper is not None else mech.offset, omega=scal["omega"],
-                 taper_angle=taper, shape="spherical" if flat else mech.follower_shape, cases=n)
+                 taper_angle=taper, shape=_face_shape(mech), cases=n)
+
+
+def _face_shape(mech) -> str:
+    """The face shape of a single run: a roller is cylindrical (camtrain.assemble.mechanism)."""
+    if mech.type == "flat":
+        return "spherical"
+    return "cylindrical" if mech.follower == "roller" else mech.follower_shape
 
 
 def geometry_ok(datum, kin) -> np.ndarray:

@@ -105,6 +105,9 @@ GOCMEN_STEADY = {'film_model = "averaged_reynolds"': 'film_model = "steady"'}
                               ("follower_radius", "values", "25,40")]),
     ("zeta_intake.toml", {"_": '\n[tribology]\nfriction_model = "lambda"\n'},
      [("viscosity", "values", "0.005,0.02"), ("base_radius", "values", "15,17")]),
+    # a roller tappet (mechanism.follower = "roller"): the cylindrical face of a single run
+    ("harrison_roller.toml", {'follower_shape = "cylindrical"': 'follower = "roller"'},
+     [("speed", "values", "1500,2500"), ("follower_radius", "values", "10,12")]),
 ])
 def test_batch_metrics_equal_the_case_by_case_metrics(tmp_path, monkeypatch, deck, replace,
                                                        specs):
@@ -141,6 +144,9 @@ def test_fallback_cases_are_the_single_runs_and_kept_curves_the_rows(tmp_path, m
     ("pinto_finger.toml", {}, [("base_radius", "values", "14,16")],
      "on a finger follower cam.base_radius moves other fields with it"),
     ("zeta_intake_camshaft.toml", {}, [("speed", "values", "2000")], "camshaft_torque"),
+    ("harrison_roller.toml", {'rotation = "clockwise"': 'rotation = "clockwise"\n'
+                              'follower = "roller"\n[mechanism.roller]\ncrown_radius = 300.0'},
+     [("speed", "values", "2000")], "crowned roller"),
 ])
 def test_route_falls_back_where_the_physics_branches_per_case(tmp_path, deck, replace, specs,
                                                                 why):
