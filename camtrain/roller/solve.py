@@ -1,0 +1,146 @@
+"""The roller's speed through the cycle: quasi-static (J = 0) or inertial (periodic march).
+
+Torque balance of the roller on its pin (Chiu 1992, Tribol. Trans. 35:261; Alakhramsing et al.
+2018, Proc. IMechE J 232; Li et al. 2023, Lubricants 11:361):
+
+    J dw_r/dt = F_t(u_s) r_r - T_pin(w_r, W),   u_s = V_s0 - w_r r_r.
+
+``quasi_static`` drops the inertia and solves F_t r_r = T_pin per angle (bisection on
+w_r in [0, V_s0/r_r]: the traction falls and the pin torque rises with w_r, so the root is
+unique; where the traction at w_r = 0 cannot beat the pin's breakaway torque the roller stands).
+``inertial`` marches the equation over revolutions to a periodic state
+(:mod:`._kernel`, implicit Euler, first order in the step), started from the quasi-static speed.
+The pin carries the normal load W (the traction's share of the pin load is left out).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from camtrain.roller import speeds
+from camtrain.roller.pin import Pin
+from camtrain.roller.product import RollerField
+from camtrain.roller.traction import Traction
+
+SOLVERS = ("quasi_static", "inertial")
+#: bisection halvings of the quasi-static speed (|error| < 2^-60 of the rolling speed)
+HALVINGS = 60
+#: clustering of the tables' normalised grid (finest step near 0 about this/sinh(this) x 2/n)
+CLUSTER = 8.0
+
+
+@dataclass(frozen=True)
+class RollerSettings:
+    """Solver knobs: ``solver`` (quasi_static | inertial), periodic ``tolerance`` (relative to
+    the largest rolling speed), most ``revolutions``, ``substeps`` per grid step, table points,
+    the slip above which the roller counts as skidding."""
+
+    solver: str = "quasi_static"
+    tolerance: float = 1e-6
+    revolutions: int = 50
+    substeps: int = 4
+    table_points: int = 401
+    skid_slip: float = 0.05
+
+
+def quasi_static_speed(traction: Traction, pin: Pin, radius: float) -> np.ndarray:
+    """w_r [rad/s] per angle with F_t r = T_pin (J = 0); see the module docstring."""
+    v0 = traction.v_s0
+    w_star = v0 / radius
+    if pin.kind == "locked":
+        return np.zeros(v0.shape)
+    if pin.kind == "frictionless":
+        return w_star.copy()
+    s = np.sign(v0)
+    load = traction.load
+
+    def balance(x):   # decreasing in x, w = x w*
+        return s * (radius * traction.force(v0 * (1.0 - x)) - pin.torque(x * w_star, load))
+
+    # a pin without torque at the rolling speed lets the roller roll (also unloaded: J = 0)
+    free = pin.torque(w_star, load) == 0.0
+    stands = (s * radius * traction.force(v0) <= pin.breakaway(load)) & ~free
+    lo, hi = np.zeros(v0.shape), np.ones(v0.shape)
+    for _ in range(HALVINGS):
+        mid = 0.5 * (lo + hi)
+        up = balance(mid) > 0.0
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+    x = np.where(free, 1.0, np.where(stands | (s == 0.0), 0.0, 0.5 * (lo + hi)))
+    return x * w_star
+
+
+def clustered_grid(points: int) -> np.ndarray:
+    """Normalised abscissae in [-1, 1], clustered at 0 (sinh spacing), 0 included."""
+    x = np.linspace(-1.0, 1.0, 2 * (points // 2) + 1)
+    return np.sinh(CLUSTER * x) / math.sinh(CLUSTER)
+
+
+def inertial_speed(traction: Traction, pin: Pin, radius: float, inertia: float, omega: float,
+                   settings: RollerSettings) -> tuple[np.ndarray, int, float]:
+    """w_r per angle of the periodic state, revolutions marched, last relative change."""
+    from camtrain.roller._kernel import Scheme, Tables, march
+
+    v0 = np.ascontiguousarray(traction.v_s0, dtype=float)
+    grid = clustered_grid(settings.table_points)
+    vmax = float(np.max(np.abs(v0)))
+    scale = np.abs(v0) + vmax + 1e-12
+    table = np.empty((v0.size, grid.size))
+    for k, x in enumerate(grid):
+        table[:, k] = traction.force(scale * x)
+    w_ref = vmax / radius + 1e-12
+    speed_scale = 2.0 * w_ref
+    w = np.broadcast_to(speed_scale * grid, table.shape)
+    pin_table = np.ascontiguousarray(pin.torque(w, np.broadcast_to(traction.load[:, None],
+                                                                     table.shape)))
+    tab = Tables(grid, table, scale, pin_table, speed_scale, v0)
+    dt = 2.0 * math.pi / v0.size / abs(omega)
+    sch = Scheme(float(radius), float(inertia), dt, int(settings.substeps),
+                 float(settings.tolerance), int(settings.revolutions), w_ref)
+    start = float(quasi_static_speed(traction, pin, radius)[0])
+    out, revs, change = march(tab, sch, start)
+    return out, int(revs), float(change)
+
+
+def solve_roller(traction: Traction, pin: Pin, radius: float, inertia: float,
+                 settings: RollerSettings = RollerSettings()) -> RollerField:
+    """The roller's motion and losses over the cycle (one pair)."""
+    kin = traction.kin
+    revs, change = 0, 0.0
+    if settings.solver == "inertial" and inertia > 0.0 and pin.kind != "locked":
+        w, revs, change = inertial_speed(traction, pin, radius, inertia, kin.omega, settings)
+        label = (f"inertial: periodic implicit-Euler march, {settings.substeps} substeps per "
+                 f"grid step, {revs} revolutions")
+    elif settings.solver in SOLVERS:
+        w = quasi_static_speed(traction, pin, radius)
+        label = "quasi_static: J = 0, traction x radius = pin torque per angle"
+    else:
+        raise ValueError(f"roller solver {settings.solver!r}: expected one of {SOLVERS}")
+    return motion_of(traction, pin, radius, inertia, w, label, revs, change, settings.skid_slip)
+
+
+def motion_of(traction: Traction, pin: Pin, radius, inertia, w, label, revs, change,
+              skid_slip) -> RollerField:
+    """Every per-angle quantity of the roller at speeds ``w`` [rad/s]."""
+    kin = traction.kin
+    u_s = speeds.sliding_speed(kin.v_cam, kin.v_follower, w, radius)
+    if pin.kind == "frictionless":
+        u_s = np.where(traction.load > 0.0, 0.0, u_s)   # exact rolling, no round-off
+    u_e = speeds.entrainment_speed(kin.v_cam, u_s)
+    slip = speeds.slip(u_s, traction.v_s0)
+    f_t = traction.force(u_s)
+    f_r = traction.rolling_force(u_s)
+    t_pin = pin.torque(w, traction.load)
+    dtheta = 2.0 * math.pi / w.size
+    dw = (np.roll(w, -1) - np.roll(w, 1)) / (2.0 * dtheta) * abs(kin.omega)
+    loaded = traction.load > 0.0
+    return RollerField(
+        omega_roller=w, sliding=u_s, entrainment=u_e, slip=slip,
+        slide_roll_ratio=speeds.slide_roll_ratio(u_s, u_e),
+        rolls=loaded & (np.abs(np.nan_to_num(slip, nan=0.0)) <= skid_slip),
+        traction=f_t, rolling_force=f_r, pin_torque=t_pin,
+        sliding_power=np.abs(f_t * u_s), rolling_power=f_r * np.abs(u_e),
+        pin_power=t_pin * w, kinetic_power=inertia * w * dw if inertia else np.zeros(w.shape),
+        solver=label, revolutions=revs, periodic_change=change, radius=float(radius),
+        inertia=float(inertia), skid_slip=float(skid_slip))

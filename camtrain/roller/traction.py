@@ -1,0 +1,158 @@
+"""Traction and rolling resistance of the cam-roller line contact at a given roller speed.
+
+The contact (:class:`camtrain.contact.model.CamContact`: materials, cam width, lubricant,
+tribology options, steady film law) is evaluated on the **roller's kinematics**: the chain's
+:class:`~camtrain.mechanisms.base.Kinematics` with the follower surface speed V_f replaced by
+the roller's V_roll = V_f + w_r r_r (:mod:`.speeds`), so the film sees the roller's entrainment
+and the shear its sliding. The Hertz field does not depend on the speeds and is the chain's.
+
+Traction laws (``law``, the deck's ``roller.traction``):
+
+* ``limiting_shear`` (default): Newtonian Barus shear over the Hertz zone (Ball 1988 eq. 4.7,
+  :func:`camtrain.formulas.ball_1988_shear_force`) on the fluid share of the area, limited by the
+  limiting shear stress tau_L = tau_0 + gamma p (Teodorescu et al. 2005 eq. 12, as
+  tau_0 (A - A_a) + gamma (W - W_a)), plus the asperity (boundary) friction of the
+  Greenwood-Tripp mixed film tau_0 A_a + m W_a (Teodorescu eqs. 8-15,
+  :func:`camtrain.formulas.teodorescu_2005_friction`); the sum capped at mu_b W.
+* ``eyring``: as above with the zone-mean Newtonian stress passed through the Eyring law
+  tau_0 asinh(tau_N / tau_0) (Johnson & Tevaarwerk 1977), still below the limiting shear.
+* ``contact``: the deck's own friction law (``tribology.friction_model``) on the roller's
+  kinematics: with a locked roller this is exactly the non-rotating follower's friction.
+
+Every law is odd in the sliding speed: the traction on the roller has the sign of u_s (it drives
+the roller towards rolling), and the asperity part is Coulomb-like (0 at u_s = 0 exactly).
+
+Rolling resistance (``rolling``): the hydrodynamic rolling force of an EHL line contact,
+Goksem & Hargreaves (1978, ASME J. Lubr. Technol. 100:346), in the form used for cam-roller slip
+by Chiu (1992) and Alakhramsing et al. (2018):
+
+    F_R = 4.318 (G U)^0.658 W^0.0126 R L / alpha,  G = alpha E', U = eta_0 |u_e| / (E' R),
+    W = w / (E' R L)
+
+(constant and exponents as those papers quote them; not checked against the 1978 original
+here). camtrain charges the rolling loss F_R |u_e| to the cam's drive and keeps it out of the
+roller's torque balance (a named choice: the pressure-centre shift it stands for acts on both
+bodies, and its moment on the roller is small beside the pin's); ``none`` leaves it out.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from camtrain.contact._points import at
+from camtrain.contact.products import FilmField, HertzField
+
+TRACTION_LAWS = ("limiting_shear", "eyring", "contact")
+ROLLING_LAWS = ("goksem_hargreaves", "none")
+#: Teodorescu et al. (2005) §2.4: asperity contact counted only below this film parameter
+LAMBDA_LIMIT = 3.0
+
+
+@dataclass(frozen=True)
+class Traction:
+    """The cam-roller contact of one pair on the cycle grid: the contact model, the chain's
+    kinematics (non-rotating follower), load [N] and Hertz field, the traction law and the
+    rolling-resistance law."""
+
+    contact: object            # camtrain.contact.model.CamContact
+    kin: object                # camtrain.mechanisms.base.Kinematics (non-rotating follower)
+    load: np.ndarray
+    hertz: HertzField
+    law: str = "limiting_shear"
+    rolling: str = "goksem_hargreaves"
+
+    def __post_init__(self):
+        if self.law not in TRACTION_LAWS:
+            raise ValueError(f"traction law {self.law!r}: expected one of {TRACTION_LAWS}")
+        if self.rolling not in ROLLING_LAWS:
+            raise ValueError(f"rolling law {self.rolling!r}: expected one of {ROLLING_LAWS}")
+
+    @property
+    def v_s0(self) -> np.ndarray:
+        """Sliding speed of the non-rotating follower V_c - V_f [m/s]."""
+        return self.kin.sliding
+
+    def kinematics(self, sliding) -> object:
+        """The roller's kinematics at sliding speed u_s: V_f replaced by V_roll = V_c - u_s."""
+        return replace(self.kin, v_follower=self.kin.v_cam - np.asarray(sliding, dtype=float))
+
+    def film(self, sliding) -> FilmField:
+        return self.contact.film(self.kinematics(sliding), self.load)
+
+    def force(self, sliding, film: FilmField | None = None) -> np.ndarray:
+        """Traction on the roller [N] at sliding speeds u_s (one per angle), signed as u_s."""
+        u_s = np.asarray(sliding, dtype=float)
+        rk = self.kinematics(u_s)
+        film = self.contact.film(rk, self.load) if film is None else film
+        h = film.for_shear
+        use = (self.load > 0.0) & np.isfinite(h) & np.isfinite(self.hertz.pmax)
+        out = np.zeros(u_s.shape)
+        if np.count_nonzero(use):
+            if self.law == "contact":
+                from camtrain.contact.model import FRICTION_LAWS
+
+                mag = FRICTION_LAWS[self.contact.friction_law](self.contact, rk, self.load,
+                                                               self.hertz, h, use)
+            else:
+                mag = mixed_traction(self.contact, self.hertz, self.load, h, u_s, use, self.law)
+            out[use] = np.sign(u_s[use]) * mag
+        return out
+
+    def rolling_force(self, sliding) -> np.ndarray:
+        """Hydrodynamic rolling resistance F_R >= 0 [N] at sliding speeds u_s (0 unloaded)."""
+        out = np.zeros(np.shape(self.load))
+        if self.rolling == "none":
+            return out
+        u_e = self.kin.v_cam - 0.5 * np.asarray(sliding, dtype=float)
+        lub, c = self.contact.lubricant, self.contact
+        R = self.kin.radius_x
+        use = (self.load > 0.0) & (R > 0.0) & np.isfinite(R)
+        if np.count_nonzero(use):
+            out[use] = goksem_hargreaves_rolling(
+                u_e[use], at(lub.viscosity, use), at(lub.pressure_viscosity, use),
+                at(c.reduced_modulus, use), R[use], at(c.width, use), self.load[use])
+        return out
+
+
+def goksem_hargreaves_rolling(u_e, eta0, alpha, E_r, R, L, W):
+    """Hydrodynamic rolling force of an EHL line contact [N] (Goksem & Hargreaves 1978; see the
+    module docstring): 4.318 (G U)^0.658 W^0.0126 R L / alpha; 0 for alpha = 0 or u_e = 0."""
+    alpha = np.asarray(alpha, dtype=float)
+    safe = np.where(alpha > 0.0, alpha, 1.0)
+    U = eta0 * np.abs(u_e) / (E_r * R)
+    Wd = W / (E_r * R * L)
+    F = 4.318 * (safe * E_r * U) ** 0.658 * Wd ** 0.0126 * R * L / safe
+    return np.where(alpha > 0.0, F, 0.0)
+
+
+def mixed_traction(contact, hz: HertzField, load, h, sliding, use, law: str) -> np.ndarray:
+    """|F| [N] on the angles ``use``: fluid shear (Newtonian or Eyring, below the limiting
+    shear) on the fluid share plus Greenwood-Tripp asperity friction, capped at mu_b W."""
+    from camtrain.formulas import ball_1988_shear_force, teodorescu_2005_friction
+
+    lub, trib = contact.lubricant, contact.tribology
+    sigma = at(lub.roughness, use)
+    beta = sigma / trib.roughness_slope
+    zeta = trib.asperity_density_product / (beta * sigma)
+    b, W, hu = hz.half_width[use], load[use], h[use]
+    L = at(contact.width, use)
+    area = 2.0 * b * L
+    t = teodorescu_2005_friction(W, area, hu / sigma, trib.eyring_stress,
+                                 trib.shear_pressure_coefficient, trib.boundary_shear_coefficient,
+                                 contact.reduced_modulus, sigma, beta, zeta,
+                                 lambda_limit=LAMBDA_LIMIT)
+    fluid_area = np.maximum(area - np.asarray(t.asperity_area, dtype=float), 0.0)
+    share = np.divide(fluid_area, area, out=np.zeros(area.shape), where=area > 0.0)
+    limit = np.asarray(t.viscous, dtype=float)           # tau_0 (A - A_a) + gamma (W - W_a)
+    newton = share * np.asarray(ball_1988_shear_force(
+        np.abs(sliding[use]), hu, at(lub.viscosity, use), at(lub.pressure_viscosity, use),
+        hz.pmax[use], b, L, viscosity_law=trib.viscosity_law), dtype=float)
+    if law == "eyring":
+        tau0 = trib.eyring_stress
+        if tau0 > 0.0:
+            mean = np.divide(newton, fluid_area, out=np.zeros(area.shape), where=fluid_area > 0)
+            newton = fluid_area * tau0 * np.arcsinh(mean / tau0)
+    fluid = np.minimum(newton, limit)
+    total = np.asarray(t.boundary, dtype=float) + fluid
+    return np.minimum(total, at(trib.boundary_friction, use) * W)
