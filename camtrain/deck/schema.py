@@ -21,6 +21,7 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
 )
 from camtrain.deck.schema_design import Design
 from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
+from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -303,6 +304,9 @@ class Deck:
         "contact load replaces the rigid train's)")
     design: Design | None = section(
         "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
+    roller: Roller | None = section(
+        "The follower's roller turning on its pin: inertia, pin bearing, traction, solver "
+        "(radius: mechanism.follower_radius)")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -323,4 +327,5 @@ class Deck:
             out.append(Problem("cam.taper_angle", "applies to a domed follower only",
                                f"{from_si(self.cam.taper_angle, 'deg'):g} deg", "0"))
         out.extend(dynamics_problems(self))
+        out.extend(roller_problems(self))
         return out
