@@ -190,5 +190,9 @@ def write_columns(res, kin, load, field, film, force, contact) -> None:
     i = int(np.where(fin, film.min, np.inf).argmin()) if np.any(fin) else 0
     res.add_metric("film_min", float(film.min[i]), "m", "smallest minimum film over the cycle "
                    "(roller's entrainment)", float(kin.theta[i]))
+    mu_b = contact.tribology.boundary_friction
+    capped = pos & (np.abs(force) >= mu_b * load * (1.0 - 1e-12))
+    res.add_metric("boundary_fraction", np.count_nonzero(capped) / max(np.count_nonzero(pos), 1),
+                   "-", "share of loaded angles at the boundary friction limit")
     res.add_metric("film_min_at_max_lift", float(film.min[k]), "m", "minimum film at the "
                    "maximum-lift position (roller's entrainment)", float(kin.theta[k]))

@@ -25,8 +25,11 @@ from camtrain.roller.product import RollerField
 from camtrain.roller.traction import Traction
 
 SOLVERS = ("quasi_static", "inertial")
-#: bisection halvings of the quasi-static speed (|error| < 2^-60 of the rolling speed)
-HALVINGS = 60
+#: most evaluations of the quasi-static balance per angle (regula falsi with bisection's
+#: bracket: BRACKET is reached well before)
+HALVINGS = 80
+#: bracket on x = w_r / w* at which the quasi-static speed counts as solved
+BRACKET = 1e-11
 #: clustering of the tables' normalised grid (finest step near 0 about this/sinh(this) x 2/n)
 CLUSTER = 8.0
 
@@ -53,22 +56,54 @@ def quasi_static_speed(traction: Traction, pin: Pin, radius: float) -> np.ndarra
         return np.zeros(v0.shape)
     if pin.kind == "frictionless":
         return w_star.copy()
-    s = np.sign(v0)
     load = traction.load
-
-    def balance(x):   # decreasing in x, w = x w*
-        return s * (radius * traction.force(v0 * (1.0 - x)) - pin.torque(x * w_star, load))
-
     # a pin without torque at the rolling speed lets the roller roll (also unloaded: J = 0)
     free = pin.torque(w_star, load) == 0.0
-    stands = (s * radius * traction.force(v0) <= pin.breakaway(load)) & ~free
-    lo, hi = np.zeros(v0.shape), np.ones(v0.shape)
-    for _ in range(HALVINGS):
-        mid = 0.5 * (lo + hi)
-        up = balance(mid) > 0.0
-        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
-    x = np.where(free, 1.0, np.where(stands | (s == 0.0), 0.0, 0.5 * (lo + hi)))
+    x = np.where(free, 1.0, 0.0)
+    loaded = np.flatnonzero(~free & (load > 0.0) & (v0 != 0.0))
+    if loaded.size:
+        x[loaded] = _balance_roots(traction, pin, radius, loaded)
     return x * w_star
+
+
+def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
+    """x = w_r / w* in [0, 1] at the angles ``idx`` where s (r F_t - T_pin) = 0 (decreasing in
+    x): 0 where the roller stands, else the Illinois regula falsi on the bracket [0, 1]
+    (Dowell & Jarratt 1971), each angle to a bracket of BRACKET or HALVINGS evaluations."""
+    v0 = traction.v_s0[idx]
+    s, w_star, load = np.sign(v0), v0 / radius, traction.load[idx]
+
+    def balance(x, k):   # at the angles idx[k]
+        return s[k] * (radius * traction.force(v0[k] * (1.0 - x), idx[k])
+                       - pin.torque(x * w_star[k], load[k]))
+
+    lo, hi = np.zeros(idx.size), np.ones(idx.size)
+    g_lo = s * radius * traction.force(v0, idx) - pin.breakaway(load)
+    g_hi = balance(hi, np.arange(idx.size))
+    stands = g_lo <= 0.0
+    g_lo = np.where(stands, 0.0, g_lo)
+    active = np.flatnonzero(~stands & (g_hi < 0.0))
+    side = np.zeros(idx.size, dtype=int)
+    for _ in range(HALVINGS):
+        if not active.size:
+            break
+        a, b, ga, gb = lo[active], hi[active], g_lo[active], g_hi[active]
+        x = np.clip(a - ga * (b - a) / (gb - ga), a, b)
+        x = np.where((x <= a) | (x >= b), 0.5 * (a + b), x)
+        g = balance(x, active)
+        up = g > 0.0
+        # Illinois: halve the kept end's value when the same end is kept twice
+        keep_hi = up & (side[active] == 1)
+        keep_lo = ~up & (side[active] == -1)
+        lo[active] = np.where(up, x, a)
+        g_lo[active] = np.where(up, g, np.where(keep_lo, 0.5 * ga, ga))
+        hi[active] = np.where(up, b, x)
+        g_hi[active] = np.where(up, np.where(keep_hi, 0.5 * gb, gb), g)
+        side[active] = np.where(up, 1, -1)
+        done = (hi[active] - lo[active] <= BRACKET) | (g == 0.0)
+        active = active[~done]
+    x = np.where(stands, 0.0, np.where(g_hi >= 0.0, hi, 0.5 * (lo + hi)))
+    return x
 
 
 def clustered_grid(points: int) -> np.ndarray:

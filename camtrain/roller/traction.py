@@ -80,22 +80,25 @@ class Traction:
     def film(self, sliding) -> FilmField:
         return self.contact.film(self.kinematics(sliding), self.load)
 
-    def force(self, sliding, film: FilmField | None = None) -> np.ndarray:
-        """Traction on the roller [N] at sliding speeds u_s (one per angle), signed as u_s."""
+    def force(self, sliding, at_angles=None) -> np.ndarray:
+        """Traction on the roller [N] at sliding speeds u_s, signed as u_s: at every angle, or
+        at the angles ``at_angles`` (an index array; ``sliding`` then has one value each)."""
         u_s = np.asarray(sliding, dtype=float)
-        rk = self.kinematics(u_s)
-        film = self.contact.film(rk, self.load) if film is None else film
-        h = film.for_shear
-        use = (self.load > 0.0) & np.isfinite(h) & np.isfinite(self.hertz.pmax)
+        idx = np.arange(u_s.size) if at_angles is None else np.asarray(at_angles)
+        view = _RollerView(self.kin, idx, u_s)
+        load = self.load[idx]
+        hz = _hertz_at(self.hertz, idx)
+        h = self.contact.film(view, load).for_shear
+        use = (load > 0.0) & np.isfinite(h) & np.isfinite(hz.pmax)
         out = np.zeros(u_s.shape)
         if np.count_nonzero(use):
             if self.law == "contact":
                 from camtrain.contact.model import FRICTION_LAWS
 
-                mag = FRICTION_LAWS[self.contact.friction_law](self.contact, rk, self.load,
-                                                               self.hertz, h, use)
+                mag = FRICTION_LAWS[self.contact.friction_law](self.contact, view, load, hz, h,
+                                                               use)
             else:
-                mag = mixed_traction(self.contact, self.hertz, self.load, h, u_s, use, self.law)
+                mag = mixed_traction(self.contact, hz, load, h, u_s, use, self.law)
             out[use] = np.sign(u_s[use]) * mag
         return out
 
@@ -113,6 +116,27 @@ class Traction:
                 u_e[use], at(lub.viscosity, use), at(lub.pressure_viscosity, use),
                 at(c.reduced_modulus, use), R[use], at(c.width, use), self.load[use])
         return out
+
+
+class _RollerView:
+    """The speeds and radii the film and friction laws read, at some angles, with the roller's
+    surface speed: a light stand-in for the roller's Kinematics inside the speed solvers."""
+
+    line_contact = True
+
+    def __init__(self, kin, idx, sliding):
+        self.v_cam = kin.v_cam[idx]
+        self.sliding = sliding
+        self.v_follower = self.v_cam - sliding
+        self.entrainment = self.v_cam - 0.5 * sliding
+        self.entrainment_sum = 2.0 * self.entrainment
+        self.radius_x = kin.radius_x[idx]
+        self.radius_y = kin.radius_y[idx]
+
+
+def _hertz_at(hz: HertzField, idx) -> HertzField:
+    return HertzField(pmax=hz.pmax[idx], half_width=hz.half_width[idx],
+                      half_length=hz.half_length[idx], bad=hz.bad[idx], line=hz.line)
 
 
 def goksem_hargreaves_rolling(u_e, eta0, alpha, E_r, R, L, W):
@@ -138,13 +162,28 @@ def mixed_traction(contact, hz: HertzField, load, h, sliding, use, law: str) -> 
     b, W, hu = hz.half_width[use], load[use], h[use]
     L = at(contact.width, use)
     area = 2.0 * b * L
-    t = teodorescu_2005_friction(W, area, hu / sigma, trib.eyring_stress,
-                                 trib.shear_pressure_coefficient, trib.boundary_shear_coefficient,
-                                 contact.reduced_modulus, sigma, beta, zeta,
-                                 lambda_limit=LAMBDA_LIMIT)
-    fluid_area = np.maximum(area - np.asarray(t.asperity_area, dtype=float), 0.0)
+    lam = hu / sigma
+    # Greenwood-Tripp asperities only below the limit (the integrals are the costly part)
+    mixed = lam < LAMBDA_LIMIT
+    boundary = np.zeros(area.shape)
+    asperity_area = np.zeros(area.shape)
+    asperity_load = np.zeros(area.shape)
+    if np.count_nonzero(mixed):
+        t = teodorescu_2005_friction(W[mixed], area[mixed], lam[mixed], trib.eyring_stress,
+                                     trib.shear_pressure_coefficient,
+                                     trib.boundary_shear_coefficient, contact.reduced_modulus,
+                                     np.broadcast_to(sigma, area.shape)[mixed],
+                                     np.broadcast_to(beta, area.shape)[mixed],
+                                     np.broadcast_to(zeta, area.shape)[mixed],
+                                     lambda_limit=LAMBDA_LIMIT)
+        boundary[mixed] = t.boundary
+        asperity_area[mixed] = t.asperity_area
+        asperity_load[mixed] = t.asperity_load
+    fluid_area = np.maximum(area - asperity_area, 0.0)
     share = np.divide(fluid_area, area, out=np.zeros(area.shape), where=area > 0.0)
-    limit = np.asarray(t.viscous, dtype=float)           # tau_0 (A - A_a) + gamma (W - W_a)
+    # the limiting shear tau_0 (A - A_a) + gamma (W - W_a) (Teodorescu eq. 12)
+    limit = (trib.eyring_stress * (area - asperity_area)
+             + trib.shear_pressure_coefficient * (W - asperity_load))
     newton = share * np.asarray(ball_1988_shear_force(
         np.abs(sliding[use]), hu, at(lub.viscosity, use), at(lub.pressure_viscosity, use),
         hz.pmax[use], b, L, viscosity_law=trib.viscosity_law), dtype=float)
@@ -154,5 +193,5 @@ def mixed_traction(contact, hz: HertzField, load, h, sliding, use, law: str) -> 
             mean = np.divide(newton, fluid_area, out=np.zeros(area.shape), where=fluid_area > 0)
             newton = fluid_area * tau0 * np.arcsinh(mean / tau0)
     fluid = np.minimum(newton, limit)
-    total = np.asarray(t.boundary, dtype=float) + fluid
+    total = boundary + fluid
     return np.minimum(total, at(trib.boundary_friction, use) * W)
