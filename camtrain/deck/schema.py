@@ -306,7 +306,8 @@ class Deck:
         "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
     roller: Roller | None = section(
         "The follower's roller turning on its pin: inertia, pin bearing, traction, solver "
-        "(radius: mechanism.follower_radius)")
+        "(radius: mechanism.follower_radius)",
+        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod")
 
     def problems(self, path: str) -> list[Problem]:
         out = []

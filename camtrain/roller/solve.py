@@ -29,7 +29,9 @@ SOLVERS = ("quasi_static", "inertial")
 #: bracket: BRACKET is reached well before)
 HALVINGS = 80
 #: bracket on x = w_r / w* at which the quasi-static speed counts as solved
-BRACKET = 1e-11
+BRACKET = 1e-10
+#: smallest slip the quasi-static solver resolves: below it the roller rolls
+SLIP_MIN = 1e-12
 #: clustering of the tables' normalised grid (finest step near 0 about this/sinh(this) x 2/n)
 CLUSTER = 8.0
 
@@ -79,10 +81,31 @@ def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
 
     lo, hi = np.zeros(idx.size), np.ones(idx.size)
     g_lo = s * radius * traction.force(v0, idx) - pin.breakaway(load)
-    g_hi = balance(hi, np.arange(idx.size))
+    g_hi = -s * pin.torque(w_star, load)          # rolling: no traction at u_s = 0
     stands = g_lo <= 0.0
     g_lo = np.where(stands, 0.0, g_lo)
     active = np.flatnonzero(~stands & (g_hi < 0.0))
+    # the asperity traction is Coulomb-like: where it beats the pin at the smallest slip the
+    # roller rolls (the root is the jump at u_s = 0)
+    rolls = np.zeros(idx.size, dtype=bool)
+    if active.size:
+        rolls[active] = balance(np.full(active.size, 1.0 - SLIP_MIN), active) >= 0.0
+        active = active[~rolls[active]]
+    # shrink the bracket around the Newtonian estimate of the slip, r k u_s = T (one probe on
+    # each side), so that the regula falsi starts where the traction is nearly linear
+    if active.size:
+        k = traction.rolling_slope(idx[active])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            guess = -g_hi[active] / (radius * k * np.abs(v0[active]))
+        guess = np.clip(np.nan_to_num(guess, nan=0.5, posinf=0.5), 1e-15, 0.25)
+        for factor in (4.0, 0.25):
+            x = 1.0 - factor * guess
+            g = balance(x, active)
+            up = g > 0.0
+            lo[active] = np.where(up, np.maximum(lo[active], x), lo[active])
+            g_lo[active] = np.where(up & (x >= lo[active]), g, g_lo[active])
+            hi[active] = np.where(~up, np.minimum(hi[active], x), hi[active])
+            g_hi[active] = np.where(~up & (x <= hi[active]), g, g_hi[active])
     side = np.zeros(idx.size, dtype=int)
     for _ in range(HALVINGS):
         if not active.size:
@@ -102,7 +125,7 @@ def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
         side[active] = np.where(up, 1, -1)
         done = (hi[active] - lo[active] <= BRACKET) | (g == 0.0)
         active = active[~done]
-    x = np.where(stands, 0.0, np.where(g_hi >= 0.0, hi, 0.5 * (lo + hi)))
+    x = np.where(stands, 0.0, np.where(rolls | (g_hi >= 0.0), hi, 0.5 * (lo + hi)))
     return x
 
 

@@ -37,6 +37,7 @@ bodies, and its moment on the roller is small beside the pin's); ``none`` leaves
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -68,6 +69,32 @@ class Traction:
         if self.rolling not in ROLLING_LAWS:
             raise ValueError(f"rolling law {self.rolling!r}: expected one of {ROLLING_LAWS}")
 
+    @cached_property
+    def unit_shear(self) -> np.ndarray:
+        """Newtonian Barus shear over the Hertz zone per unit shear rate u_s/h [N s/m * m] at
+        every loaded angle (Ball 1988 eq. 4.7 is linear in u_s/h; the zone integral is the
+        costly part and does not change with the roller's speed): F_N = this x |u_s| / h."""
+        from camtrain.formulas import ball_1988_shear_force
+
+        c, lub, hz = self.contact, self.contact.lubricant, self.hertz
+        use = (self.load > 0.0) & np.isfinite(hz.pmax)
+        out = np.zeros(self.load.shape)
+        if np.count_nonzero(use):
+            out[use] = ball_1988_shear_force(
+                1.0, 1.0, at(lub.viscosity, use), at(lub.pressure_viscosity, use), hz.pmax[use],
+                hz.half_width[use], at(c.width, use),
+                viscosity_law=c.tribology.viscosity_law)
+        return out
+
+    def rolling_slope(self, at_angles) -> np.ndarray:
+        """dF_N/du_s at zero sliding [N s/m] at the angles ``at_angles``: the Newtonian shear's
+        slope with the film of pure rolling (a first guess of the slip for the solvers)."""
+        idx = np.asarray(at_angles)
+        view = _RollerView(self.kin, idx, np.zeros(idx.size))
+        h = self.contact.film(view, self.load[idx]).for_shear
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(h > 0.0, self.unit_shear[idx] / h, np.inf)
+
     @property
     def v_s0(self) -> np.ndarray:
         """Sliding speed of the non-rotating follower V_c - V_f [m/s]."""
@@ -98,7 +125,12 @@ class Traction:
                 mag = FRICTION_LAWS[self.contact.friction_law](self.contact, view, load, hz, h,
                                                                use)
             else:
-                mag = mixed_traction(self.contact, hz, load, h, u_s, use, self.law)
+                rate = np.abs(u_s[use])
+                hu = h[use]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    rate = np.where(hu > 0.0, rate / hu, np.where(rate > 0.0, np.inf, 0.0))
+                newton = self.unit_shear[idx][use] * rate
+                mag = mixed_traction(self.contact, hz, load, h, newton, use, self.law)
             out[use] = np.sign(u_s[use]) * mag
         return out
 
@@ -150,10 +182,11 @@ def goksem_hargreaves_rolling(u_e, eta0, alpha, E_r, R, L, W):
     return np.where(alpha > 0.0, F, 0.0)
 
 
-def mixed_traction(contact, hz: HertzField, load, h, sliding, use, law: str) -> np.ndarray:
-    """|F| [N] on the angles ``use``: fluid shear (Newtonian or Eyring, below the limiting
-    shear) on the fluid share plus Greenwood-Tripp asperity friction, capped at mu_b W."""
-    from camtrain.formulas import ball_1988_shear_force, teodorescu_2005_friction
+def mixed_traction(contact, hz: HertzField, load, h, newtonian, use, law: str) -> np.ndarray:
+    """|F| [N] on the angles ``use``: fluid shear (Newtonian ``newtonian`` [N] over the whole
+    zone, or its Eyring form, below the limiting shear) on the fluid share plus Greenwood-Tripp
+    asperity friction, capped at mu_b W."""
+    from camtrain.formulas import teodorescu_2005_friction
 
     lub, trib = contact.lubricant, contact.tribology
     sigma = at(lub.roughness, use)
@@ -184,9 +217,7 @@ def mixed_traction(contact, hz: HertzField, load, h, sliding, use, law: str) -> 
     # the limiting shear tau_0 (A - A_a) + gamma (W - W_a) (Teodorescu eq. 12)
     limit = (trib.eyring_stress * (area - asperity_area)
              + trib.shear_pressure_coefficient * (W - asperity_load))
-    newton = share * np.asarray(ball_1988_shear_force(
-        np.abs(sliding[use]), hu, at(lub.viscosity, use), at(lub.pressure_viscosity, use),
-        hz.pmax[use], b, L, viscosity_law=trib.viscosity_law), dtype=float)
+    newton = share * newtonian
     if law == "eyring":
         tau0 = trib.eyring_stress
         if tau0 > 0.0:

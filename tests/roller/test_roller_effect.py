@@ -65,3 +65,11 @@ def test_bad_roller_input_names_the_field(sets, field):
     with pytest.raises(InputError) as exc:
         api.load(NEEDLE, sets)
     assert field in str(exc.value)
+
+
+@pytest.mark.derived
+def test_the_losses_by_part_sum_to_the_contact_dissipation():
+    """Quasi-static: the traction's power F_t V_s0 goes to sliding and to the pin, the rolling
+    force's to rolling, so sliding + rolling + pin = F |V_s| (the power effect's dissipation)."""
+    m = api.run(api.load(NEEDLE, ("roller.solver=quasi_static",))).metrics
+    assert m["roller_power_total"].value == pytest.approx(m["dissipation_mean"].value, rel=1e-8)
