@@ -21,7 +21,6 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
 )
 from camtrain.deck.schema_design import Design
 from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
-from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -37,6 +36,7 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     WilliamsElementary,
     WilliamsLowJerk,
 )
+from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
     Guides,

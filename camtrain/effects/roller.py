@@ -110,8 +110,7 @@ def run(deck, inputs, res):
     from camtrain.components import MAIN
     from camtrain.contact.hertz import is_line
     from camtrain.contact.model import CamContact
-    from camtrain.contact.products import (ContactFilm, ContactFriction, ContactHertz,
-                                           FrictionField)
+    from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz, FrictionField
     from camtrain.errors import field_error
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics

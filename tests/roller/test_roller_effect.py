@@ -73,3 +73,17 @@ def test_the_losses_by_part_sum_to_the_contact_dissipation():
     force's to rolling, so sliding + rolling + pin = F |V_s| (the power effect's dissipation)."""
     m = api.run(api.load(NEEDLE, ("roller.solver=quasi_static",))).metrics
     assert m["roller_power_total"].value == pytest.approx(m["dissipation_mean"].value, rel=1e-8)
+
+
+@pytest.mark.parametrize("deck", ["pinto_finger", "rover_2300_rocker"])
+def test_a_pivoted_curved_follower_carries_a_roller(deck):
+    """The roller reads only the kinematics' speeds and radius: an end-pivoted finger and a
+    centre-pivoted rocker with a curved face turn it as well, and it saves most of the sliding
+    friction of the same follower."""
+    sets = ("roller.pin=needle", "roller.needle_pitch_diameter=8")
+    rolling = api.run(api.load(DECKS / f"{deck}.toml", sets))
+    sliding = api.run(api.load(DECKS / f"{deck}.toml"))
+    assert "roller" in rolling.plan.chosen
+    assert rolling.metrics["roller_slip_max"].value < 0.2
+    assert rolling.metrics["power_loss_mean"].value < 0.1 * sliding.metrics[
+        "power_loss_mean"].value
