@@ -54,6 +54,10 @@ class Roller:
     pin_clearance: float | None = quantity(
         "Radial clearance of the plain bushing", "µm", default=None, gt=0,
         applies="pin = bushing")
+    pin_model: Literal["short", "finite"] = option(
+        "Film model of the plain bushing: short (Ocvirk, closed form) or finite (the finite-length "
+        "Reynolds film's steady curve, solved once per length/diameter)", default="short",
+        applies="pin = bushing")
     pin_viscosity: float | None = quantity(
         "Oil viscosity in the pin bearing; omit for lubricant.viscosity", "Pa·s", default=None,
         gt=0, applies="pin = needle, bushing")

@@ -48,7 +48,8 @@ def pin_of(deck):
                    kinematic_viscosity=eta / r.oil_density, f0=r.needle_f0, f1=r.needle_f1)
     if r.pin == "bushing":
         return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
-                                                     r.pin_clearance, eta, name="roller"))
+                                                     r.pin_clearance, eta, name="roller"),
+                   model=r.pin_model)
     return Pin(r.pin)
 
 

@@ -16,9 +16,11 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
   f_1 = 0.0005 are typical catalogue values for needle roller and cage assemblies under oil
   that this work could NOT check against a published table: a deck should give its bearing's.
 * ``bushing``: a plain journal bearing between pin and roller bore under the roller's load at the
-  roller's speed: the Ocvirk short bearing's steady eccentricity
+  roller's speed: the steady eccentricity of the Ocvirk short bearing
   (:func:`camtrain.bearings.steady.steady_eccentricity`, mean speed w_r/2 with the pin at rest)
-  and its Couette shear power over the complete film
+  or of the finite-length Reynolds film (``model = "finite"``,
+  :func:`camtrain.bearings.models.finite_steady_eccentricity`, held at eps 0.99 beyond its
+  curve), and its Couette shear power over the complete film
   (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r.
   Hydrodynamic only: no mixed friction at very low speed.
 """
@@ -45,6 +47,7 @@ class Pin:
     f0: float = 3.0
     f1: float = 0.0005
     bearing: object = None
+    model: str = "short"
 
     def __post_init__(self):
         if self.kind not in PIN_KINDS:
@@ -61,7 +64,7 @@ class Pin:
         if self.kind == "needle":
             return np.sign(w) * needle_torque(np.abs(w), F, self.pitch_diameter,
                                               self.kinematic_viscosity, self.f0, self.f1)
-        return bushing_torque(self.bearing, w, F)
+        return bushing_torque(self.bearing, w, F, self.model)
 
     def breakaway(self, load) -> np.ndarray:
         """Torque [N m] the pin holds at rest (the limit of |T| as w_r -> 0+)."""
@@ -83,8 +86,10 @@ def needle_torque(speed, load, pitch_diameter, kinematic_viscosity, f0, f1):
     return (m0 + m1) * 1e-3                                             # N mm -> N m
 
 
-def bushing_torque(bearing, omega_roller, load) -> np.ndarray:
-    """Hydrodynamic friction torque [N m] of a plain bushing (see the module docstring)."""
+def bushing_torque(bearing, omega_roller, load, model: str = "short") -> np.ndarray:
+    """Hydrodynamic friction torque [N m] of a plain bushing (see the module docstring);
+    ``model`` short (Ocvirk) or finite (the finite-length Reynolds film's steady curve)."""
+    from camtrain.bearings.models import finite_steady_eccentricity
     from camtrain.bearings.power import shear_power
     from camtrain.bearings.steady import steady_eccentricity
 
@@ -93,7 +98,11 @@ def bushing_torque(bearing, omega_roller, load) -> np.ndarray:
     turning = w != 0.0
     if np.count_nonzero(turning):
         ww = w[turning]
-        eps = np.atleast_1d(steady_eccentricity(bearing, np.asarray(load)[turning], 0.5 * ww))
+        F = np.asarray(load)[turning]
+        if model == "finite":
+            eps = np.atleast_1d(finite_steady_eccentricity(bearing, F, 0.5 * ww))
+        else:
+            eps = np.atleast_1d(steady_eccentricity(bearing, F, 0.5 * ww))
         power = shear_power(bearing, eps, -0.5 * np.pi, ww, film="2pi")
         out[turning] = power / ww
     return out
