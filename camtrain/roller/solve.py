@@ -30,6 +30,8 @@ SOLVERS = ("quasi_static", "inertial")
 HALVINGS = 80
 #: bracket on x = w_r / w* at which the quasi-static speed counts as solved
 BRACKET = 1e-10
+#: balance residual, relative to the pin torque at rolling, at which the speed counts as solved
+RESIDUAL = 1e-10
 #: smallest slip the quasi-static solver resolves: below it the roller rolls
 SLIP_MIN = 1e-12
 #: clustering of the tables' normalised grid (finest step near 0 about this/sinh(this) x 2/n)
@@ -82,6 +84,8 @@ def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
     lo, hi = np.zeros(idx.size), np.ones(idx.size)
     g_lo = s * radius * traction.force(v0, idx) - pin.breakaway(load)
     g_hi = -s * pin.torque(w_star, load)          # rolling: no traction at u_s = 0
+    scale = np.abs(g_hi) * RESIDUAL               # a balance this small counts as solved
+    found = np.full(idx.size, np.nan)
     stands = g_lo <= 0.0
     g_lo = np.where(stands, 0.0, g_lo)
     active = np.flatnonzero(~stands & (g_hi < 0.0))
@@ -123,9 +127,12 @@ def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
         hi[active] = np.where(up, b, x)
         g_hi[active] = np.where(up, np.where(keep_hi, 0.5 * gb, gb), g)
         side[active] = np.where(up, 1, -1)
-        done = (hi[active] - lo[active] <= BRACKET) | (g == 0.0)
+        close = np.abs(g) <= scale[active]
+        found[active[close]] = x[close]
+        done = (hi[active] - lo[active] <= BRACKET) | close
         active = active[~done]
-    x = np.where(stands, 0.0, np.where(rolls | (g_hi >= 0.0), hi, 0.5 * (lo + hi)))
+    x = np.where(np.isnan(found), 0.5 * (lo + hi), found)
+    x = np.where(stands, 0.0, np.where(rolls | (g_hi >= 0.0), hi, x))
     return x
 
 
@@ -144,9 +151,11 @@ def inertial_speed(traction: Traction, pin: Pin, radius: float, inertia: float, 
     grid = clustered_grid(settings.table_points)
     vmax = float(np.max(np.abs(v0)))
     scale = np.abs(v0) + vmax + 1e-12
-    table = np.empty((v0.size, grid.size))
-    for k, x in enumerate(grid):
-        table[:, k] = traction.force(scale * x)
+    table = np.zeros((v0.size, grid.size))       # no traction where unloaded
+    loaded = np.flatnonzero(traction.load > 0.0)
+    if loaded.size:
+        for k, x in enumerate(grid):
+            table[loaded, k] = traction.force(scale[loaded] * x, loaded)
     w_ref = vmax / radius + 1e-12
     speed_scale = 2.0 * w_ref
     w = np.broadcast_to(speed_scale * grid, table.shape)
