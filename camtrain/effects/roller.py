@@ -62,7 +62,7 @@ def settings_of(deck):
                           table_points=r.table_points, skid_slip=r.skid_slip)
 
 
-def cam_force(field, v_s0, traction_law_force=None):
+def cam_force(field, v_s0):
     """Tangential force on the cam [N], positive against V_s0 (see the module docstring)."""
     import numpy as np
 
