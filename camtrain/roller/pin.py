@@ -15,6 +15,10 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
   Kotzalas, *Rolling Bearing Analysis*, 2006, ch. 9). The default factors f_0 = 3 and
   f_1 = 0.0005 are typical catalogue values for needle roller and cage assemblies under oil
   that this work could NOT check against a published table: a deck should give its bearing's.
+  A cross-check of the order of magnitude: JTEKT/Koyo's technical page "Friction coefficient
+  of bearings" (koyousa.com, catalogue section 5) gives the lumped M = mu P d/2 with
+  mu = 0.0020-0.0030 for needle roller and cage assemblies, i.e. 0.0010-0.0015 in the form
+  f_1 F d_m if all the torque were load-dependent (d ~ d_m).
 * ``bushing``: a plain journal bearing between pin and roller bore under the roller's load at the
   roller's speed: the steady eccentricity of the Ocvirk short bearing
   (:func:`camtrain.bearings.steady.steady_eccentricity`, mean speed w_r/2 with the pin at rest)
