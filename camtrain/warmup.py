@@ -66,6 +66,7 @@ CASES = (
     WarmupCase("shaft-and-trains", "zeta_intake_camshaft_coupled",
                deck="zeta_intake_camshaft_coupled"),
     WarmupCase("ring-film", "zeta_engine", deck="zeta_engine"),
+    WarmupCase("roller", "harrison_roller_needle", deck="harrison_roller_needle"),
 )
 
 

@@ -74,6 +74,25 @@ def _steady_curve(b_over_d: float, cavitation: str, n_theta: int, n_z: int):
     return eps, np.array(force), np.array(att)
 
 
+def finite_steady_eccentricity(bearing: JournalBearing, load, wbar, *,
+                               cavitation: str = "reynolds", n_theta: int = 120,
+                               n_z: int = 12) -> np.ndarray:
+    """Eccentricity ratio of the finite-length film under a steady load magnitude ``load`` [N]
+    at mean speed ``wbar`` [rad/s] (no groove), from the cached steady curve F(eps) of
+    :func:`finite_steady_orbit`; loads beyond the curve's last point (eps 0.99) are held there
+    (the film below 1 % of the clearance is outside the curve)."""
+    eps_t, force_t, _ = _steady_curve(round(bearing.land / bearing.diameter, 12), cavitation,
+                                      int(n_theta), int(n_z))
+    w = np.abs(np.asarray(wbar, dtype=float))
+    target = np.abs(np.asarray(load, dtype=float)) * bearing.clearance ** 2 / (
+        12.0 * bearing.viscosity * np.where(w > 0.0, w, 1.0) * bearing.radius ** 4)
+    target = np.where(w > 0.0, np.minimum(target, force_t[-1]), force_t[-1])
+    lf = np.log(np.maximum(target, 1e-300))
+    gap = np.exp(np.interp(lf, np.log(force_t[1:]), np.log(1.0 - eps_t[1:]),
+                           left=math.log(1.0 - eps_t[1])))
+    return np.where(target < force_t[1], target / force_t[1] * eps_t[1], 1.0 - gap)
+
+
 def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_journal,
                         omega_bearing=0.0, *, angle_rate=None, period: float = 2.0 * math.pi,
                         film: str = "2pi", terms: str = "shear", cavitation: str = "reynolds",

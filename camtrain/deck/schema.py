@@ -36,14 +36,15 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     WilliamsElementary,
     WilliamsLowJerk,
 )
-from camtrain.deck.schema_roller import (
+from camtrain.deck.schema_follower import (
     ArmContacts,
     Dyson,
     Layout,
-    Roller,
+    RollerFace,
     dyson_from_layout,
     layout_problems,
 )
+from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
     Guides,
@@ -220,7 +221,7 @@ class Mechanism:
     closing: ClosingPair | None = section(
         "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
         "(centrally pivoted)", applies="desmodromic")
-    roller: Roller | None = section(
+    roller: RollerFace | None = section(
         "The roller of a roller follower (follower = \"roller\"): crown, mass",
         applies="follower = roller")
     layout: Layout | None = section(
@@ -372,6 +373,10 @@ class Deck:
         "contact load replaces the rigid train's)")
     design: Design | None = section(
         "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
+    roller: Roller | None = section(
+        "The follower's roller turning on its pin: inertia, pin bearing, traction, solver "
+        "(radius: mechanism.follower_radius)",
+        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -400,4 +405,5 @@ class Deck:
             out.extend(layout_problems(mech.layout, "mechanism.layout", self.cam.base_radius,
                                        mech.follower_radius))
         out.extend(dynamics_problems(self))
+        out.extend(roller_problems(self))
         return out

@@ -1,156 +1,160 @@
-"""Deck sections of roller followers and of the arms of pivoted followers (docs/mechanism_roller.md).
+"""Deck section [roller]: the follower's roller turns on its pin (docs/rollers.md).
 
-* ``[mechanism.roller]``: a follower whose face is a roller (``mechanism.follower = "roller"``;
-  its radius is ``mechanism.follower_radius``): crown radius, roller mass.
-* ``[mechanism.layout]``: a finger follower or rocker drawn by positions (pivot, roller centre,
-  valve-pad centre, valve direction) instead of Dyson's A, B, D, kappa, lambda.
-* ``[mechanism.arm]``: the valve pad and the pivot of a finger follower or rocker (pad radius
-  and shape, friction coefficients, pivot radius).
-
-Part of the valve-train deck schema (camtrain.deck.schema); no physics imported.
+The roller is the curved follower face of the mechanism: its radius is the mechanism's
+``follower_radius`` (the kinematics' contact radius, so the contact geometry and the roller
+cannot disagree) and the contact length stays ``cam.width``. This section adds what makes it
+turn: its inertia, the pin (frictionless, locked, needle bearing or plain bushing), the traction
+law of the cam contact and the solver of its speed.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
-from typing import Literal, NamedTuple
+from typing import Literal
 
-from camtrain.deck.fields import When, option, quantity
+from camtrain.deck.fields import option, quantity
 from camtrain.errors import Problem
 
-#: |roller centre| may differ from base radius + roller radius by this much [m] (the print
-#: precision of a drawing in mm to three decimals)
-LAYOUT_TOLERANCE = 1.0e-6
+#: density of a steel roller [kg/m^3] (the inertia from the width when no mass is given)
+STEEL_DENSITY = 7850.0
 
 
 @dataclass(frozen=True, kw_only=True)
 class Roller:
-    """The follower face is a roller (mechanism.follower = "roller"); its radius is
-    mechanism.follower_radius. The kinematics are those of the non-rotating roller (the roller
-    centre follows the cam's offset curve); the roller's rotation is a contact effect."""
+    """A roller on the follower: inertia, pin, traction and solver. Radius: mechanism.follower_radius."""
 
-    crown_radius: float | None = quantity(
-        "Crown radius of a crowned roller, the transverse radius R_y of an elliptical contact; "
-        "omit for a straight roller (line contact)", "mm", default=None, gt=0)
-    mass: float = quantity(
-        "Roller mass with its share of the pin, carried at the roller centre: a finger's or "
-        "rocker's moment of inertia about its pivot gains mass x A^2 (a roller tappet's or "
-        "lifter's roller belongs in masses.valve_side)", "kg", default=0.0, ge=0,
-        applies="finger, rocker")
-
-
-@dataclass(frozen=True, kw_only=True)
-class Layout:
-    """A finger follower or rocker drawn by positions, valve closed (follower on the base
-    circle), cam centre at the origin, any fixed x-y axes in the plane of the cam; replaces
-    mechanism.A, B, D, kappa and lambda."""
-
-    pivot: tuple[float, ...] = quantity(
-        "Pivot centre U [x, y]: the lash adjuster's ball (finger follower) or the rocker shaft",
-        "mm", min_items=2, max_items=2, example=[-32.0, -29.0])
-    roller_centre: tuple[float, ...] = quantity(
-        "Roller centre (centre of curvature of the face on the cam) Q [x, y]; it must lie at "
-        "cam.base_radius + mechanism.follower_radius from the cam centre", "mm",
-        min_items=2, max_items=2, example=[0.0, -25.75])
-    pad_centre: tuple[float, ...] = quantity(
-        "Centre of curvature of the valve pad V [x, y]", "mm", min_items=2, max_items=2,
-        example=[20.0, -28.0])
-    valve_direction: float = quantity(
-        "Direction in which the valve opens, counterclockwise from the +x axis", "deg",
-        gt=-360, lt=360, example=-90.0)
-
-
-@dataclass(frozen=True, kw_only=True)
-class ArmContacts:
-    """The valve pad and the pivot of a finger follower or rocker: sliding, load, Hertz stress
-    and friction at the pad (a second contact, on the flat valve tip), friction torque at the
-    pivot (a ball socket or the rocker shaft)."""
-
-    pad_radius: float = quantity(
-        "Radius of the valve pad (finger pad or rocker's elephant foot) on the flat valve tip; "
-        "its centre is the pad centre (B from the pivot)", "mm", gt=0, example=12.0)
-    pad_shape: Literal["cylindrical", "spherical"] = option(
-        "cylindrical pad (line contact of pad_width) or spherical (elephant foot: point "
-        "contact)", default="cylindrical")
-    pad_width: float | None = quantity(
-        "Width of a cylindrical pad on the valve tip (line-contact length)", "mm", default=None,
-        gt=0, example=5.5, applies="pad_shape = cylindrical")
-    pad_friction: float = quantity(
-        "Friction coefficient at the valve pad (boundary/mixed sliding on the valve tip)", "-",
-        ge=0, lt=1, example=0.1)
-    pivot_radius: float = quantity(
-        "Pivot friction radius: ball-socket radius of a finger follower, shaft radius of a "
-        "rocker", "mm", gt=0, example=4.0)
-    pivot_friction: float = quantity(
-        "Friction coefficient of the pivot: torque = coefficient x pivot reaction x radius",
-        "-", ge=0, lt=1, example=0.1)
-
-    schema_rules = (When("pad_shape", ("cylindrical",), require=("pad_width",)),
-                    When("pad_shape", ("spherical",), forbid=("pad_width",)))
+    width: float | None = quantity(
+        "Roller width, for its inertia as a solid steel disc when neither mass nor inertia is "
+        "given (the contact length stays cam.width)", "mm", default=None, gt=0, example=10.0)
+    mass: float | None = quantity(
+        "Roller mass (inertia m r^2 / 2 of a solid disc of the follower radius)", "kg",
+        default=None, gt=0)
+    inertia: float | None = quantity(
+        "Roller moment of inertia about its pin; overrides mass and width", "kg·m²",
+        default=None, gt=0)
+    pin: Literal["needle", "bushing", "frictionless", "locked"] = option(
+        "The roller's bearing on its pin: needle (catalogue friction torque M0 + M1), bushing "
+        "(plain journal bearing, Ocvirk short bearing), frictionless, or locked (the roller "
+        "does not turn: camtrain's non-rotating curved follower)", default="needle")
+    needle_pitch_diameter: float | None = quantity(
+        "Pitch diameter d_m of the needle bearing (pin diameter + needle diameter)", "mm",
+        default=None, gt=0, example=8.0, applies="pin = needle")
+    needle_f0: float = quantity(
+        "Load-independent factor f0 of the needle bearing's friction torque (catalogue value "
+        "for your bearing and lubrication; the default is a typical value, not checked against "
+        "a published table)", "-", default=3.0, ge=0, le=100, applies="pin = needle")
+    needle_f1: float = quantity(
+        "Load factor f1 of the needle bearing's friction torque M1 = f1 F d_m (default a typical "
+        "catalogue value, not checked against a published table)", "-", default=0.0005, ge=0,
+        le=0.1, applies="pin = needle")
+    pin_diameter: float | None = quantity(
+        "Pin (journal) diameter of the plain bushing", "mm", default=None, gt=0,
+        applies="pin = bushing")
+    pin_length: float | None = quantity(
+        "Length of the plain bushing", "mm", default=None, gt=0, applies="pin = bushing")
+    pin_clearance: float | None = quantity(
+        "Radial clearance of the plain bushing", "µm", default=None, gt=0,
+        applies="pin = bushing")
+    pin_model: Literal["short", "finite"] = option(
+        "Film model of the plain bushing: short (Ocvirk, closed form) or finite (the finite-length "
+        "Reynolds film's steady curve, solved once per length/diameter)", default="short",
+        applies="pin = bushing")
+    pin_viscosity: float | None = quantity(
+        "Oil viscosity in the pin bearing; omit for lubricant.viscosity", "Pa·s", default=None,
+        gt=0, applies="pin = needle, bushing")
+    oil_density: float = quantity(
+        "Oil density, for the needle bearing's kinematic viscosity", "kg/m³", default=850.0,
+        gt=0, applies="pin = needle")
+    traction: Literal["limiting_shear", "eyring", "contact"] = option(
+        "Cam-roller traction: limiting_shear (Newtonian shear below tau_0 + gamma p, plus "
+        "Greenwood-Tripp asperity friction, capped at the boundary coefficient), eyring (Eyring "
+        "shear below the same limit), or contact (the deck's tribology.friction_model)",
+        default="limiting_shear")
+    rolling_resistance: Literal["goksem_hargreaves", "none"] = option(
+        "Hydrodynamic rolling resistance of the cam-roller contact charged to the cam "
+        "(Goksem & Hargreaves 1978), or none", default="goksem_hargreaves")
+    solver: Literal["quasi_static", "inertial"] = option(
+        "Roller speed: quasi_static (no inertia: traction x radius = pin torque per angle) or "
+        "inertial (the equation of motion marched over revolutions to a periodic state)",
+        default="quasi_static")
+    periodic_tolerance: float = quantity(
+        "Periodic state: change of the roller speed over a revolution, relative to the largest "
+        "rolling speed", "-", default=1e-6, gt=0, lt=0.1, applies="solver = inertial")
+    revolutions: int = quantity("Most revolutions marched to the periodic state", "-",
+                                default=50, ge=1, le=10000, applies="solver = inertial")
+    substeps: int = quantity("Implicit-Euler time steps per step of the cam-angle grid", "-",
+                             default=4, ge=1, le=1000, applies="solver = inertial")
+    table_points: int = quantity(
+        "Points of the traction and pin-torque tables of the inertial march (clustered at zero "
+        "sliding)", "-", default=401, ge=21, le=100001, applies="solver = inertial")
+    skid_slip: float = quantity(
+        "Slip above which the roller counts as skidding (the rolls/skids column)", "-",
+        default=0.05, gt=0, lt=1)
 
     def problems(self, path: str) -> list[Problem]:
-        if self.pad_shape == "cylindrical" and self.pad_width is None:
-            return [Problem(f"{path}.pad_width", "is required for a cylindrical pad", None,
-                            "the pad width in mm", "or set pad_shape = \"spherical\"")]
-        if self.pad_shape == "spherical" and self.pad_width is not None:
-            return [Problem(f"{path}.pad_width", "applies to a cylindrical pad only",
-                            f"{self.pad_width * 1e3:g} mm", "no value")]
+        out = []
+        if self.pin == "needle" and self.needle_pitch_diameter is None:
+            out.append(Problem(f"{path}.needle_pitch_diameter", "is required with pin = needle",
+                               None, "the needle bearing's pitch diameter in mm"))
+        if self.pin == "bushing":
+            for name, what in (("pin_diameter", "the pin diameter in mm"),
+                               ("pin_length", "the bushing length in mm"),
+                               ("pin_clearance", "the radial clearance in µm")):
+                if getattr(self, name) is None:
+                    out.append(Problem(f"{path}.{name}", "is required with pin = bushing", None,
+                                       what))
+            if None not in (self.pin_diameter, self.pin_clearance) \
+                    and self.pin_clearance >= 0.5 * self.pin_diameter:
+                out.append(Problem(f"{path}.pin_clearance", "is larger than the pin radius",
+                                   f"{self.pin_clearance * 1e6:g} µm", "a few µm to tens of µm"))
+        return out
+
+    def moment_of_inertia(self, radius: float, face_mass: float = 0.0) -> float:
+        """J [kg m^2]: given, or m r^2/2 (m this section's mass, else face_mass, the
+        mechanism.roller.mass a finger's inertia already counts), or a solid steel disc of the
+        width; 0 without data."""
+        if self.inertia is not None:
+            return self.inertia
+        mass = self.mass if self.mass is not None else (face_mass or None)
+        if mass is not None:
+            return 0.5 * mass * radius ** 2
+        if self.width is not None:
+            return 0.5 * STEEL_DENSITY * 3.141592653589793 * radius ** 4 * self.width
+        return 0.0
+
+
+#: mechanisms whose follower face can be a roller (a curved face with a line contact)
+ROLLER_MECHANISMS = ("domed", "finger", "rocker", "pushrod")
+
+
+def roller_problems(deck) -> list[Problem]:
+    """Checks of [roller] against the rest of a valve-train deck."""
+    r = deck.roller
+    if r is None:
         return []
-
-
-class Dyson(NamedTuple):
-    """Dyson's pivot geometry (Ball 1988 App A) in SI units and radians."""
-
-    A: float
-    B: float
-    D: float
-    kappa: float
-    lam: float
-    branch: int | None = None   # sign of gamma_B + lambda (None: Ball's choice)
-
-
-def _wrapped(angle: float) -> float:
-    return math.pi - (math.pi - angle) % (2.0 * math.pi)
-
-
-def dyson_from_layout(layout: Layout) -> Dyson:
-    """A, B, D, kappa, lambda from the drawn positions: axes turned so that the pivot lies on
-    +x (Dyson's frame), then Q = U + A e(pi + lambda + gamma_B), V = U + B e(pi + gamma_B) and
-    the valve opening along (cos kappa, -sin kappa) (camtrain.mechanisms.pivot_geometry)."""
-    ux, uy = layout.pivot
-    turn = math.atan2(uy, ux)
-    qx, qy = layout.roller_centre
-    vx, vy = layout.pad_centre
-    to_q = math.atan2(qy - uy, qx - ux)
-    to_v = math.atan2(vy - uy, vx - ux)
-    base_angle = _wrapped(to_q - turn - math.pi)       # gamma_B + lambda, drawn
-    return Dyson(A=math.hypot(qx - ux, qy - uy), B=math.hypot(vx - ux, vy - uy),
-                 D=math.hypot(ux, uy), kappa=_wrapped(turn - layout.valve_direction),
-                 lam=_wrapped(to_q - to_v), branch=1 if base_angle >= 0.0 else -1)
-
-
-def layout_problems(layout: Layout, path: str, base_radius: float,
-                    roller_radius: float | None) -> list[Problem]:
-    """The drawn positions must be distinct and the roller must touch the base circle."""
-    points = {"pivot": layout.pivot, "roller_centre": layout.roller_centre,
-              "pad_centre": layout.pad_centre}
-    if math.hypot(*layout.pivot) == 0.0:
-        return [Problem(f"{path}.pivot", "is at the cam centre", [0.0, 0.0],
-                        "a pivot away from the cam centre")]
-    for name in ("roller_centre", "pad_centre"):
-        p = points[name]
-        if math.hypot(p[0] - layout.pivot[0], p[1] - layout.pivot[1]) == 0.0:
-            return [Problem(f"{path}.{name}", "coincides with the pivot",
-                            [v * 1e3 for v in p], "a point away from the pivot")]
-    if roller_radius is None:
-        return []
-    reach = math.hypot(*layout.roller_centre)
-    expected = base_radius + roller_radius
-    if abs(reach - expected) > LAYOUT_TOLERANCE:
-        return [Problem(f"{path}.roller_centre",
-                        f"is {reach * 1e3:.4f} mm from the cam centre: the roller (radius "
-                        f"{roller_radius * 1e3:g} mm) must touch the base circle (radius "
-                        f"{base_radius * 1e3:g} mm) with the valve closed",
-                        [round(v * 1e3, 6) for v in layout.roller_centre],
-                        f"{expected * 1e3:.4f} mm from the cam centre (within 0.001 mm)")]
-    return []
+    out = []
+    m = deck.mechanism
+    if m.type not in ROLLER_MECHANISMS or m.follower_radius is None:
+        out.append(Problem("mechanism.type", "a roller needs a curved follower face", m.type,
+                           "domed (follower_shape = cylindrical), finger, rocker or pushrod "
+                           "with mechanism.follower_radius"))
+    elif m.type == "domed" and m.follower_shape != "cylindrical" and m.follower != "roller":
+        out.append(Problem("mechanism.follower_shape", "a roller makes a line contact",
+                           m.follower_shape, "cylindrical"))
+    face = getattr(m, "roller", None)
+    if face is not None and face.crown_radius is not None:
+        out.append(Problem("mechanism.roller.crown_radius", "a turning roller is modelled as a "
+                           "straight roller (line contact)", f"{face.crown_radius * 1e3:g} mm",
+                           "no crown radius with a [roller] section"))
+    face_mass = face.mass if face is not None else 0.0
+    if r.solver == "inertial" and r.pin != "locked" and not face_mass \
+            and (r.inertia, r.mass, r.width) == (None, None, None):
+        out.append(Problem("roller.inertia", "the inertial solver needs the roller's inertia",
+                           None, "roller.inertia, roller.mass, roller.width or "
+                           "mechanism.roller.mass"))
+    if deck.tribology.film_model != "steady":
+        out.append(Problem("tribology.film_model", "the roller's traction uses the steady film",
+                           deck.tribology.film_model, "steady (with a [roller] section)"))
+    if deck.lubricant is None or deck.cam.width is None:
+        out.append(Problem("roller", "needs the lubricant and the contact length", None,
+                           "[lubricant] and cam.width"))
+    return out

@@ -163,6 +163,7 @@ OTHER_SHEETS = {
     "engine_loads": "camtrain.report.engine_plots:load_sheet",
     "piston": "camtrain.report.piston_plots:piston_sheet",
     "correlations": "camtrain.report.correlation_plots:correlation_sheet",
+    "roller": "camtrain.report.roller_plots:roller_sheet",
 }
 
 

@@ -164,6 +164,11 @@ def _adaptive(raw: dict) -> bool:
     return raw.get("dynamics", {}).get("integrator") in ("lsoda", "radau")
 
 
+def _roller_march(raw: dict) -> bool:
+    """The roller's speed is marched (roller.solver = inertial)."""
+    return raw.get("roller", {}).get("solver", "quasi_static") == "inertial"
+
+
 KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("angle_points", "solver.angle_points", (180, 360, 720, 1440, 2880, 5760),
          lambda v: 1.0 / v, _always,
@@ -230,6 +235,16 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
     Knob("gas_tolerance", "piston.solver.gas_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
          lambda v: v, _always,
          "iteration and cyclic tolerance of the inter-ring gas march"),
+    # roller rotation (docs/rollers.md)
+    Knob("roller_substeps", "roller.substeps", (1, 2, 4, 8, 16), lambda v: 1.0 / v,
+         _roller_march, "implicit-Euler steps of the roller's speed per cam-angle grid step",
+         integer=True),
+    Knob("roller_table_points", "roller.table_points", (51, 101, 201, 401, 801),
+         lambda v: 1.0 / (v - 1), _roller_march,
+         "points of the roller's traction and pin-torque tables", integer=True),
+    Knob("roller_tolerance", "roller.periodic_tolerance", (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, _roller_march,
+         "change of the roller speed over a revolution that counts as periodic"),
     Knob("steps_per_degree", "dynamics.steps_per_degree", (2.0, 4.0, 8.0, 16.0, 32.0, 64.0),
          lambda v: 1.0 / v, lambda raw: not _adaptive(raw),
          "time steps per degree of cam of the valve-train dynamics",

@@ -131,7 +131,7 @@ FLOORS: tuple[tuple[str, tuple[str, ...]], ...] = (
               "components", "identity_cache", "output_lock", "data", "catalogue", "plan",
               "display_units", "metric_rows")),
     ("physics", ("lift", "mechanisms", "loads", "dynamics", "contact", "camshaft", "bearings",
-                 "engine", "lubrication", "piston", "coupled")),
+                 "engine", "lubrication", "piston", "coupled", "roller")),
     ("deck", ("deck",)),
     ("assemble", ("assemble",)),
     ("result", ("result", "tabulate")),

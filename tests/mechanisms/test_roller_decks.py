@@ -15,7 +15,7 @@ from click.testing import CliRunner
 from camtrain import api
 from camtrain.cli import main
 from camtrain.deck.load import validate
-from camtrain.deck.schema_roller import dyson_from_layout
+from camtrain.deck.schema_follower import dyson_from_layout
 
 DECK = Path(__file__).resolve().parents[2] / "decks" / "roller_finger.toml"
 

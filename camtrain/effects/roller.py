@@ -1,0 +1,204 @@
+"""Roller effect: the follower's roller turning on its pin, and the film and friction it makes.
+
+Physics in :mod:`camtrain.roller`: the roller's speed from its torque balance (quasi-static or
+marched to a periodic state), slip and slide-roll ratio, cam-roller traction and rolling
+resistance, pin friction. The effect reads only the chain's kinematics (cam and follower surface
+speeds, follower radius, line contact), the contact load and the Hertz field, so any mechanism
+whose kinematics describe a line contact on a curved face carries a roller.
+
+It offers the film and the friction of the cam contact at the roller's speed as rank-1
+alternatives of ``ContactFilm`` and ``ContactFriction``: the power, camshaft and bearing effects
+downstream run on them unchanged. The friction force handed on is the tangential force on the
+cam, positive against the non-rotating follower's sliding V_s0 (as the chain's): the traction,
+plus the rolling resistance as the force that dissipates F_R |u_e| at the sliding speed V_s0.
+"""
+from __future__ import annotations
+
+from camtrain.metric_rows import CaseMetric, anywhere, at, one_case
+
+
+def missing(deck) -> list[str]:
+    if deck.roller is None:
+        return ["roller (the roller's pin and solver)"]
+    if deck.lubricant is None:
+        return ["lubricant (the cam-roller film)"]
+    if deck.cam.width is None:
+        return ["cam.width (the cam-roller contact length)"]
+    return []
+
+
+def reason(deck, planned) -> str:
+    r = deck.roller
+    solver = ("quasi-static (no inertia)" if r.solver == "quasi_static"
+              else f"inertial, periodic march ({r.substeps} substeps per grid step)")
+    return (f"[roller] given: the roller turns on a {r.pin} pin, {r.traction} traction, "
+            f"{r.rolling_resistance} rolling resistance, speed {solver}; film and friction "
+            "at the roller's speed")
+
+
+def face_mass(deck) -> float:
+    """mechanism.roller.mass [kg] (a roller finger's or rocker's roller), 0 without it."""
+    face = deck.mechanism.roller
+    return face.mass if face is not None else 0.0
+
+
+def pin_of(deck):
+    """The deck's pin as physics (:class:`camtrain.roller.pin.Pin`)."""
+    from camtrain.bearings import JournalBearing
+    from camtrain.roller.pin import Pin
+
+    r = deck.roller
+    eta = r.pin_viscosity if r.pin_viscosity is not None else deck.lubricant.viscosity
+    if r.pin == "needle":
+        return Pin("needle", pitch_diameter=r.needle_pitch_diameter,
+                   kinematic_viscosity=eta / r.oil_density, f0=r.needle_f0, f1=r.needle_f1)
+    if r.pin == "bushing":
+        return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
+                                                     r.pin_clearance, eta, name="roller"),
+                   model=r.pin_model)
+    return Pin(r.pin)
+
+
+def settings_of(deck):
+    from camtrain.roller.solve import RollerSettings
+
+    r = deck.roller
+    return RollerSettings(solver=r.solver, tolerance=r.periodic_tolerance,
+                          revolutions=r.revolutions, substeps=r.substeps,
+                          table_points=r.table_points, skid_slip=r.skid_slip)
+
+
+def cam_force(field, v_s0):
+    """Tangential force on the cam [N], positive against V_s0 (see the module docstring)."""
+    import numpy as np
+
+    s = np.sign(v_s0)
+    mag_v = np.abs(v_s0)
+    rolling = np.divide(field.rolling_power, mag_v, out=np.zeros(mag_v.shape), where=mag_v > 0)
+    return field.traction * s + rolling
+
+
+def roller_metrics(theta, field, loaded) -> list:
+    """The roller's metrics (:class:`camtrain.metric_rows.CaseMetric`)."""
+    import numpy as np
+
+    from camtrain.formulas.cycle import cycle_mean
+
+    slip = np.where(loaded, np.abs(np.nan_to_num(field.slip, nan=0.0)), 0.0)
+    srr = np.where(loaded, np.nan_to_num(field.slide_roll_ratio, nan=0.0), 0.0)
+    i, j, k = int(slip.argmax()), int(srr.argmin()), int(srr.argmax())
+    n = max(int(np.count_nonzero(loaded)), 1)
+    parts = (field.sliding_power, field.rolling_power, field.pin_power)
+    means = [float(cycle_mean(p)) for p in parts]
+    return [
+        CaseMetric("roller_slip_max", at(slip, i), "-", "largest slip of the loaded roller "
+                   "1 - w_r r_r / (V_c - V_f)", at(theta, i)),
+        CaseMetric("roller_srr_min", at(srr, j), "-", "smallest slide-roll ratio (loaded)",
+                   at(theta, j)),
+        CaseMetric("roller_srr_max", at(srr, k), "-", "largest slide-roll ratio (loaded)",
+                   at(theta, k)),
+        CaseMetric("roller_skid_fraction", np.count_nonzero(loaded & ~field.rolls) / n, "-",
+                   f"share of loaded angles where the roller skids (slip > "
+                   f"{field.skid_slip:g})", None, anywhere(loaded)),
+        CaseMetric("roller_power_sliding", means[0], "W",
+                   "cycle-mean cam-roller sliding loss |F_t u_s|"),
+        CaseMetric("roller_power_rolling", means[1], "W",
+                   "cycle-mean cam-roller hydrodynamic rolling loss F_R |u_e|"),
+        CaseMetric("roller_power_pin", means[2], "W", "cycle-mean pin (bearing) loss T w_r"),
+        CaseMetric("roller_power_total", sum(means), "W",
+                   "cycle-mean roller loss: cam-roller sliding + rolling + pin"),
+        CaseMetric("roller_revolutions", field.revolutions, "-",
+                   "revolutions marched to the roller's periodic speed (0: quasi-static)")]
+
+
+def run(deck, inputs, res):
+    import numpy as np
+
+    from camtrain.components import MAIN
+    from camtrain.contact.hertz import is_line
+    from camtrain.contact.model import CamContact
+    from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz, FrictionField
+    from camtrain.errors import field_error
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
+    from camtrain.roller.product import RollerMotion
+    from camtrain.roller.solve import solve_roller
+    from camtrain.roller.traction import Traction
+
+    kin = inputs[TrainKinematics].main
+    load = np.maximum(inputs[ContactLoad].load, 0.0)
+    hz = inputs[ContactHertz].main
+    radius = float(np.max(kin.follower_radius))
+    if not (is_line(kin) and np.isfinite(radius)):
+        raise field_error("roller", "the mechanism's contact is not a line contact on a "
+                          "curved follower", deck.mechanism.type,
+                          "a cylindrical follower face (roller)")
+    r = deck.roller
+    contact = CamContact.from_deck(deck)
+    traction = Traction(contact, kin, load, hz, r.traction, r.rolling_resistance)
+    field = solve_roller(traction, pin_of(deck), radius, r.moment_of_inertia(radius, face_mass(deck)),
+                         settings_of(deck))
+    film = contact.film(traction.kinematics(field.sliding), load)
+    force = cam_force(field, traction.v_s0)
+    used = (load > 0.0) & np.isfinite(film.for_shear) & np.isfinite(hz.pmax)
+    force = np.where(used, force, 0.0)
+    write_columns(res, kin, load, field, film, force, contact)
+    res.add_metrics(one_case(roller_metrics(kin.theta, field, load > 0.0)))
+    if field.revolutions and field.periodic_change > r.periodic_tolerance:
+        res.warn(f"roller speed not periodic after {field.revolutions} revolutions (change "
+                 f"{field.periodic_change:.3g} > roller.periodic_tolerance): raise "
+                 "roller.revolutions")
+    return (RollerMotion(((MAIN, field),)), ContactFilm(((MAIN, film),), with_load=True),
+            ContactFriction(((MAIN, FrictionField(force=force, hertz=hz, film=film, used=used)),),
+                            model=f"roller ({r.traction})"))
+
+
+def write_columns(res, kin, load, field, film, force, contact) -> None:
+    """The film and friction columns the chain's film and friction effects write, at the
+    roller's speed, and the roller's own."""
+    import numpy as np
+
+    from camtrain.formulas.friction import film_parameter
+
+    lam = np.full(film.min.shape, np.nan)
+    fin = np.isfinite(film.min)
+    lam[fin] = film_parameter(film.min[fin], contact.lubricant.roughness)
+    pos = load > 0.0
+    mu = np.divide(force, load, out=np.zeros(load.shape), where=pos)
+    rows = [("film_min", film.min, "m", f"minimum film thickness at the roller's entrainment, "
+             f"{film.method} (NaN: out of contact)")]
+    if film.central is not None:
+        rows.append(("film_central", film.central, "m", "central film thickness at the "
+                     f"roller's entrainment, {film.central_method}"))
+    rows += [
+        ("lambda", lam, "-", "film parameter h_min / sigma (< 1: boundary regime)"),
+        ("friction_force", force, "N", "tangential force on the cam against V_c - V_f: roller "
+         "traction plus rolling resistance"),
+        ("friction_coefficient", mu, "-", "friction coefficient F/W (0 unloaded)"),
+        ("roller_speed", field.omega_roller, "rad/s", "roller speed on its pin w_r"),
+        ("roller_speed_rolling", (kin.v_cam - kin.v_follower) / field.radius, "rad/s",
+         "roller speed of pure rolling (V_c - V_f) / r_r"),
+        ("roller_slip", field.slip, "-", "slip 1 - w_r r_r / (V_c - V_f) (0 rolling, 1 locked)"),
+        ("slide_roll_ratio", field.slide_roll_ratio, "-",
+         "slide-roll ratio u_s / u_e = 2 (V_c - V_roll)/(V_c + V_roll)"),
+        ("roller_sliding", field.sliding, "m/s", "cam-roller sliding speed u_s = V_c - V_roll"),
+        ("roller_entrainment", field.entrainment, "m/s", "cam-roller entrainment (V_c + V_roll)/2"),
+        ("roller_rolls", field.rolls.astype(float), "-",
+         f"1 where the loaded roller rolls (|slip| <= {field.skid_slip:g}), 0 skids or unloaded"),
+        ("roller_traction", field.traction, "N", "traction on the roller (signed as u_s)"),
+        ("rolling_resistance", field.rolling_force, "N", "hydrodynamic rolling force F_R"),
+        ("pin_torque", field.pin_torque, "N*m", "pin friction torque (signed as w_r)"),
+        ("power_roller_sliding", field.sliding_power, "W", "cam-roller sliding loss |F_t u_s|"),
+        ("power_roller_rolling", field.rolling_power, "W", "cam-roller rolling loss F_R |u_e|"),
+        ("power_pin", field.pin_power, "W", "pin (bearing) loss T w_r")]
+    res.add_columns(rows)
+    k = kin.nose
+    i = int(np.where(fin, film.min, np.inf).argmin()) if np.any(fin) else 0
+    res.add_metric("film_min", float(film.min[i]), "m", "smallest minimum film over the cycle "
+                   "(roller's entrainment)", float(kin.theta[i]))
+    mu_b = contact.tribology.boundary_friction
+    capped = pos & (np.abs(force) >= mu_b * load * (1.0 - 1e-12))
+    res.add_metric("boundary_fraction", np.count_nonzero(capped) / max(np.count_nonzero(pos), 1),
+                   "-", "share of loaded angles at the boundary friction limit")
+    res.add_metric("film_min_at_max_lift", float(film.min[k]), "m", "minimum film at the "
+                   "maximum-lift position (roller's entrainment)", float(kin.theta[k]))

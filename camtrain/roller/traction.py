@@ -1,0 +1,228 @@
+"""Traction and rolling resistance of the cam-roller line contact at a given roller speed.
+
+The contact (:class:`camtrain.contact.model.CamContact`: materials, cam width, lubricant,
+tribology options, steady film law) is evaluated on the **roller's kinematics**: the chain's
+:class:`~camtrain.mechanisms.base.Kinematics` with the follower surface speed V_f replaced by
+the roller's V_roll = V_f + w_r r_r (:mod:`.speeds`), so the film sees the roller's entrainment
+and the shear its sliding. The Hertz field does not depend on the speeds and is the chain's.
+
+Traction laws (``law``, the deck's ``roller.traction``):
+
+* ``limiting_shear`` (default): Newtonian Barus shear over the Hertz zone (Ball 1988 eq. 4.7,
+  :func:`camtrain.formulas.ball_1988_shear_force`) on the fluid share of the area, limited by the
+  limiting shear stress tau_L = tau_0 + gamma p (Teodorescu et al. 2005 eq. 12, as
+  tau_0 (A - A_a) + gamma (W - W_a)), plus the asperity (boundary) friction of the
+  Greenwood-Tripp mixed film tau_0 A_a + m W_a (Teodorescu eqs. 8-15,
+  :func:`camtrain.formulas.teodorescu_2005_friction`); the sum capped at mu_b W.
+* ``eyring``: as above with the zone-mean Newtonian stress passed through the Eyring law
+  tau_0 asinh(tau_N / tau_0) (Johnson & Tevaarwerk 1977), still below the limiting shear.
+* ``contact``: the deck's own friction law (``tribology.friction_model``) on the roller's
+  kinematics: with a locked roller this is exactly the non-rotating follower's friction.
+
+Every law is odd in the sliding speed: the traction on the roller has the sign of u_s (it drives
+the roller towards rolling), and the asperity part is Coulomb-like (0 at u_s = 0 exactly).
+
+Rolling resistance (``rolling``): the hydrodynamic rolling force of an EHL line contact,
+Goksem & Hargreaves (1978, ASME J. Lubr. Technol. 100:346), in the form used for cam-roller slip
+by Chiu (1992) and Alakhramsing et al. (2018):
+
+    F_R = 4.318 (G U)^0.658 W^0.0126 R L / alpha,  G = alpha E', U = eta_0 |u_e| / (E' R),
+    W = w / (E' R L)
+
+(constant and exponents as those papers quote them; not checked against the 1978 original
+here). camtrain charges the rolling loss F_R |u_e| to the cam's drive and keeps it out of the
+roller's torque balance (a named choice: the pressure-centre shift it stands for acts on both
+bodies, and its moment on the roller is small beside the pin's); ``none`` leaves it out.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from functools import cached_property
+
+import numpy as np
+
+from camtrain.contact._points import at
+from camtrain.contact.products import FilmField, HertzField
+
+TRACTION_LAWS = ("limiting_shear", "eyring", "contact")
+ROLLING_LAWS = ("goksem_hargreaves", "none")
+#: Teodorescu et al. (2005) §2.4: asperity contact counted only below this film parameter
+LAMBDA_LIMIT = 3.0
+
+
+@dataclass(frozen=True)
+class Traction:
+    """The cam-roller contact of one pair on the cycle grid: the contact model, the chain's
+    kinematics (non-rotating follower), load [N] and Hertz field, the traction law and the
+    rolling-resistance law."""
+
+    contact: object            # camtrain.contact.model.CamContact
+    kin: object                # camtrain.mechanisms.base.Kinematics (non-rotating follower)
+    load: np.ndarray
+    hertz: HertzField
+    law: str = "limiting_shear"
+    rolling: str = "goksem_hargreaves"
+
+    def __post_init__(self):
+        if self.law not in TRACTION_LAWS:
+            raise ValueError(f"traction law {self.law!r}: expected one of {TRACTION_LAWS}")
+        if self.rolling not in ROLLING_LAWS:
+            raise ValueError(f"rolling law {self.rolling!r}: expected one of {ROLLING_LAWS}")
+
+    @cached_property
+    def unit_shear(self) -> np.ndarray:
+        """Newtonian Barus shear over the Hertz zone per unit shear rate u_s/h [N s/m * m] at
+        every loaded angle (Ball 1988 eq. 4.7 is linear in u_s/h; the zone integral is the
+        costly part and does not change with the roller's speed): F_N = this x |u_s| / h."""
+        from camtrain.formulas import ball_1988_shear_force
+
+        c, lub, hz = self.contact, self.contact.lubricant, self.hertz
+        use = (self.load > 0.0) & np.isfinite(hz.pmax)
+        out = np.zeros(self.load.shape)
+        if np.count_nonzero(use):
+            out[use] = ball_1988_shear_force(
+                1.0, 1.0, at(lub.viscosity, use), at(lub.pressure_viscosity, use), hz.pmax[use],
+                hz.half_width[use], at(c.width, use),
+                viscosity_law=c.tribology.viscosity_law)
+        return out
+
+    def rolling_slope(self, at_angles) -> np.ndarray:
+        """dF_N/du_s at zero sliding [N s/m] at the angles ``at_angles``: the Newtonian shear's
+        slope with the film of pure rolling (a first guess of the slip for the solvers)."""
+        idx = np.asarray(at_angles)
+        view = _RollerView(self.kin, idx, np.zeros(idx.size))
+        h = self.contact.film(view, self.load[idx]).for_shear
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(h > 0.0, self.unit_shear[idx] / h, np.inf)
+
+    @property
+    def v_s0(self) -> np.ndarray:
+        """Sliding speed of the non-rotating follower V_c - V_f [m/s]."""
+        return self.kin.sliding
+
+    def kinematics(self, sliding) -> object:
+        """The roller's kinematics at sliding speed u_s: V_f replaced by V_roll = V_c - u_s."""
+        return replace(self.kin, v_follower=self.kin.v_cam - np.asarray(sliding, dtype=float))
+
+    def film(self, sliding) -> FilmField:
+        return self.contact.film(self.kinematics(sliding), self.load)
+
+    def force(self, sliding, at_angles=None) -> np.ndarray:
+        """Traction on the roller [N] at sliding speeds u_s, signed as u_s: at every angle, or
+        at the angles ``at_angles`` (an index array; ``sliding`` then has one value each)."""
+        u_s = np.asarray(sliding, dtype=float)
+        idx = np.arange(u_s.size) if at_angles is None else np.asarray(at_angles)
+        view = _RollerView(self.kin, idx, u_s)
+        load = self.load[idx]
+        hz = _hertz_at(self.hertz, idx)
+        h = self.contact.film(view, load).for_shear
+        use = (load > 0.0) & np.isfinite(h) & np.isfinite(hz.pmax)
+        out = np.zeros(u_s.shape)
+        if np.count_nonzero(use):
+            if self.law == "contact":
+                from camtrain.contact.model import FRICTION_LAWS
+
+                mag = FRICTION_LAWS[self.contact.friction_law](self.contact, view, load, hz, h,
+                                                               use)
+            else:
+                rate = np.abs(u_s[use])
+                hu = h[use]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    rate = np.where(hu > 0.0, rate / hu, np.where(rate > 0.0, np.inf, 0.0))
+                newton = self.unit_shear[idx][use] * rate
+                mag = mixed_traction(self.contact, hz, load, h, newton, use, self.law)
+            out[use] = np.sign(u_s[use]) * mag
+        return out
+
+    def rolling_force(self, sliding) -> np.ndarray:
+        """Hydrodynamic rolling resistance F_R >= 0 [N] at sliding speeds u_s (0 unloaded)."""
+        out = np.zeros(np.shape(self.load))
+        if self.rolling == "none":
+            return out
+        u_e = self.kin.v_cam - 0.5 * np.asarray(sliding, dtype=float)
+        lub, c = self.contact.lubricant, self.contact
+        R = self.kin.radius_x
+        use = (self.load > 0.0) & (R > 0.0) & np.isfinite(R)
+        if np.count_nonzero(use):
+            out[use] = goksem_hargreaves_rolling(
+                u_e[use], at(lub.viscosity, use), at(lub.pressure_viscosity, use),
+                at(c.reduced_modulus, use), R[use], at(c.width, use), self.load[use])
+        return out
+
+
+class _RollerView:
+    """The speeds and radii the film and friction laws read, at some angles, with the roller's
+    surface speed: a light stand-in for the roller's Kinematics inside the speed solvers."""
+
+    line_contact = True
+
+    def __init__(self, kin, idx, sliding):
+        self.v_cam = kin.v_cam[idx]
+        self.sliding = sliding
+        self.v_follower = self.v_cam - sliding
+        self.entrainment = self.v_cam - 0.5 * sliding
+        self.entrainment_sum = 2.0 * self.entrainment
+        self.radius_x = kin.radius_x[idx]
+        self.radius_y = kin.radius_y[idx]
+
+
+def _hertz_at(hz: HertzField, idx) -> HertzField:
+    return HertzField(pmax=hz.pmax[idx], half_width=hz.half_width[idx],
+                      half_length=hz.half_length[idx], bad=hz.bad[idx], line=hz.line)
+
+
+def goksem_hargreaves_rolling(u_e, eta0, alpha, E_r, R, L, W):
+    """Hydrodynamic rolling force of an EHL line contact [N] (Goksem & Hargreaves 1978; see the
+    module docstring): 4.318 (G U)^0.658 W^0.0126 R L / alpha; 0 for alpha = 0 or u_e = 0."""
+    alpha = np.asarray(alpha, dtype=float)
+    safe = np.where(alpha > 0.0, alpha, 1.0)
+    U = eta0 * np.abs(u_e) / (E_r * R)
+    Wd = W / (E_r * R * L)
+    F = 4.318 * (safe * E_r * U) ** 0.658 * Wd ** 0.0126 * R * L / safe
+    return np.where(alpha > 0.0, F, 0.0)
+
+
+def mixed_traction(contact, hz: HertzField, load, h, newtonian, use, law: str) -> np.ndarray:
+    """|F| [N] on the angles ``use``: fluid shear (Newtonian ``newtonian`` [N] over the whole
+    zone, or its Eyring form, below the limiting shear) on the fluid share plus Greenwood-Tripp
+    asperity friction, capped at mu_b W."""
+    from camtrain.formulas import teodorescu_2005_friction
+
+    lub, trib = contact.lubricant, contact.tribology
+    sigma = at(lub.roughness, use)
+    beta = sigma / trib.roughness_slope
+    zeta = trib.asperity_density_product / (beta * sigma)
+    b, W, hu = hz.half_width[use], load[use], h[use]
+    L = at(contact.width, use)
+    area = 2.0 * b * L
+    lam = hu / sigma
+    # Greenwood-Tripp asperities only below the limit (the integrals are the costly part)
+    mixed = lam < LAMBDA_LIMIT
+    boundary = np.zeros(area.shape)
+    asperity_area = np.zeros(area.shape)
+    asperity_load = np.zeros(area.shape)
+    if np.count_nonzero(mixed):
+        t = teodorescu_2005_friction(W[mixed], area[mixed], lam[mixed], trib.eyring_stress,
+                                     trib.shear_pressure_coefficient,
+                                     trib.boundary_shear_coefficient, contact.reduced_modulus,
+                                     np.broadcast_to(sigma, area.shape)[mixed],
+                                     np.broadcast_to(beta, area.shape)[mixed],
+                                     np.broadcast_to(zeta, area.shape)[mixed],
+                                     lambda_limit=LAMBDA_LIMIT)
+        boundary[mixed] = t.boundary
+        asperity_area[mixed] = t.asperity_area
+        asperity_load[mixed] = t.asperity_load
+    fluid_area = np.maximum(area - asperity_area, 0.0)
+    share = np.divide(fluid_area, area, out=np.zeros(area.shape), where=area > 0.0)
+    # the limiting shear tau_0 (A - A_a) + gamma (W - W_a) (Teodorescu eq. 12)
+    limit = (trib.eyring_stress * (area - asperity_area)
+             + trib.shear_pressure_coefficient * (W - asperity_load))
+    newton = share * newtonian
+    if law == "eyring":
+        tau0 = trib.eyring_stress
+        if tau0 > 0.0:
+            mean = np.divide(newton, fluid_area, out=np.zeros(area.shape), where=fluid_area > 0)
+            newton = fluid_area * tau0 * np.arcsinh(mean / tau0)
+    fluid = np.minimum(newton, limit)
+    total = boundary + fluid
+    return np.minimum(total, at(trib.boundary_friction, use) * W)
