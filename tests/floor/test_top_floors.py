@@ -33,7 +33,7 @@ FOR_IN = re.compile(r"\bfor\s+[\w\s,()*]+?\s+in\b")
 #: study)
 ALLOWED: dict[str, tuple[int, str]] = {
     # inside a sheet or table an effect declared: which optional curves or rows it holds
-    "camtrain/report/panels.py": (17, "a panel of a declared sheet draws the curves the run "
+    "camtrain/report/panels.py": (13, "a panel of a declared sheet draws the curves the run "
                                   "has and gives its axes back when it has none"),
     "camtrain/report/profile.py": (3, "the profile panel lays the film around the contact "
                                    "locus when the run has them"),
