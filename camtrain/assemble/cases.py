@@ -15,19 +15,29 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass, field
 
-#: scalars read from every case's model: name -> getter of the validated model (SI units)
+
+def _field(section: str, name: str):
+    """Getter of ``model.<section>.<name>``; None when the deck has no such section."""
+    def get(model):
+        part = getattr(model, section)
+        return None if part is None else getattr(part, name)
+    return get
+
+
+#: scalars read from every case's model: name -> getter of the validated model (SI units; None
+#: where the deck lacks the section, and then no planned effect reads it)
 SCALARS = {
-    "omega": lambda m: m.speed.omega,
-    "base_radius": lambda m: m.cam.base_radius,
-    "width": lambda m: m.cam.width,
-    "rate": lambda m: m.spring.rate,
-    "preload_compression": lambda m: m.spring.preload_compression,
-    "valve_mass": lambda m: m.masses.valve_side,
-    "viscosity": lambda m: m.lubricant.viscosity,
-    "pressure_viscosity": lambda m: m.lubricant.pressure_viscosity,
-    "roughness": lambda m: m.lubricant.roughness,
-    "boundary_friction": lambda m: m.tribology.boundary_friction,
-    "follower_radius": lambda m: m.mechanism.follower_radius,
+    "omega": _field("speed", "omega"),
+    "base_radius": _field("cam", "base_radius"),
+    "width": _field("cam", "width"),
+    "rate": _field("spring", "rate"),
+    "preload_compression": _field("spring", "preload_compression"),
+    "valve_mass": _field("masses", "valve_side"),
+    "viscosity": _field("lubricant", "viscosity"),
+    "pressure_viscosity": _field("lubricant", "pressure_viscosity"),
+    "roughness": _field("lubricant", "roughness"),
+    "boundary_friction": _field("tribology", "boundary_friction"),
+    "follower_radius": _field("mechanism", "follower_radius"),
 }
 
 #: swept deck fields that only move the scalars above (deck paths); a sweep of anything else

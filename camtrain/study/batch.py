@@ -124,14 +124,24 @@ def run_batch(job: BatchJob) -> list[dict]:
     return sorted(records, key=lambda r: r["index"])
 
 
+#: the overlay curves a batch row gives: column -> (product, how to read its row, unit)
+_OVERLAYS = {
+    "film_min": ("ContactFilm", lambda p: p.main.min, "m"),
+    "load": ("ContactLoad", lambda p: p.load, "N"),
+    "hertz_pmax": ("ContactHertz", lambda p: p.main.pmax, "Pa"),
+}
+
+
 def _curves(degrees: list[float], valve, products: dict, row: int) -> dict:
     """The overlay curves of one case (:data:`camtrain.study.executors.OVERLAY_COLUMNS`, with
-    the units of the result's columns), from its row of the batch."""
-    return {"cam_angle": ("deg", degrees),
-            "film_min": ("m", products["ContactFilm"].main.min[row].tolist()),
-            "load": ("N", products["ContactLoad"].load[row].tolist()),
-            "hertz_pmax": ("Pa", products["ContactHertz"].main.pmax[row].tolist()),
-            "lift": ("m", valve.lift.tolist())}
+    the units of the result's columns, of the products the plan made), from its row of the
+    batch."""
+    curves = {"cam_angle": ("deg", degrees)}
+    for name, (product, rows, unit) in _OVERLAYS.items():
+        if product in products:
+            curves[name] = (unit, rows(products[product])[row].tolist())
+    curves["lift"] = ("m", valve.lift.tolist())
+    return curves
 
 
 def _batched(job: BatchJob, models: list, cases: list[Case]) -> tuple[list[dict], list[Case]]:
