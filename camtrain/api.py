@@ -78,7 +78,7 @@ def run(deck: LoadedDeck | Deck | str | Path, progress=None) -> Result:
 
 def lift(deck: LoadedDeck | Deck | str | Path, points: int | None = None) -> Result:
     """Only the lift law of a deck on its angle grid: lift, velocity, acceleration, jerk."""
-    from camtrain.effects.kinematics import lift_columns
+    from camtrain.tabulate.lift import lift_columns
 
     if isinstance(deck, str | Path):
         deck = load(deck)

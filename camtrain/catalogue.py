@@ -307,6 +307,14 @@ def declared_effects(plan) -> tuple[EffectSpec, ...]:
     return tuple(spec for spec in specs if spec is not None)   # an effect since renamed: none
 
 
+def planned_products(plan) -> frozenset[str]:
+    """The products the effects of a plan made (their ``produces``); none without a plan (a
+    lift-only run, which has the lift law's columns alone)."""
+    if plan is None:
+        return frozenset()
+    return frozenset(p for spec in declared_effects(plan) for p in spec.produces)
+
+
 def kind_of(deck) -> DeckKind:
     """The deck kind whose schema class ``deck`` is (or derives from)."""
     for cls in type(deck).__mro__:

@@ -96,8 +96,8 @@ def optimize(deck: str, variables, objective: str, constraints, method: str, ste
     """
     from pathlib import Path
 
-    from camtrain.cli_sweep import _terminate_as_interrupt
     from camtrain.errors import CamtrainError
+    from camtrain.interrupts import terminable
     from camtrain.study.optimize import optimize as run
     from camtrain.study.optimize_output import report_text, write_optimize
 
@@ -114,7 +114,7 @@ def optimize(deck: str, variables, objective: str, constraints, method: str, ste
         click.echo(f"error: --jobs: {jobs} is not a number of processes (>= 1)", err=True)
         sys.exit(2)
     try:
-        with _terminate_as_interrupt():
+        with terminable():
             outcome = run(deck, list(variables), objective, list(constraints), method=method,
                           step=step, maxiter=maxiter, jobs=jobs, scheduler=scheduler,
                           sets=list(sets), popsize=popsize, seed=seed,

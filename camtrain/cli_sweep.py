@@ -6,7 +6,6 @@ imported when the command runs.
 from __future__ import annotations
 
 import sys
-from contextlib import contextmanager
 
 import click
 
@@ -140,9 +139,10 @@ def run_resumable(study):
     """Run ``study()``, a study that keeps its finished cases in sweep.csv: an input error
     exits with its code, Ctrl-C (130) and SIGTERM (143) say how to continue."""
     from camtrain.errors import CamtrainError
+    from camtrain.interrupts import Terminated, terminable
 
     try:
-        with _terminate_as_interrupt():
+        with terminable():   # the workers are stopped and the finished cases kept
             return study()
     except CamtrainError as exc:
         click.echo(f"error: {exc}", err=True)
@@ -151,35 +151,6 @@ def run_resumable(study):
         click.echo("interrupted: finished cases are in sweep.csv; continue with --resume",
                    err=True)
         sys.exit(143 if isinstance(exc, Terminated) else 130)
-
-
-class Terminated(KeyboardInterrupt):
-    """SIGTERM received: handled as Ctrl-C, exit 143."""
-
-
-@contextmanager
-def _terminate_as_interrupt():
-    """SIGTERM (CI cancellation, `timeout`) ends a sweep as Ctrl-C does: the workers are stopped
-    and the finished cases kept, instead of this process dying and leaving its workers running."""
-    import os
-    import signal
-    import threading
-
-    pid = os.getpid()
-
-    def interrupt(signum, frame):
-        if os.getpid() != pid:   # a forked worker that has not yet reset the handler
-            os._exit(128 + signum)
-        raise Terminated
-
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
 
 
 def _run(ctx, deck, zipped, sets, out, jobs, scheduler, resume, no_plots, overlay_max, quiet,

@@ -62,15 +62,48 @@ def run_plan(deck, plan: Plan | None = None, progress=None) -> Result:
             if progress is not None:
                 progress(spec.name, done, len(effects))
             start = time.perf_counter()
-            with _details(progress, spec.name, done, len(effects)):
-                included = _run_included(deck, spec)
-                out = effect_module(spec).run(deck, Inputs(spec, products, included), result)
+            if progress is None and not spec.includes:   # a run's usual step: nothing around it
+                out = effect_module(spec).run(deck, Inputs(spec, products), result)
+            else:
+                with _details(progress, spec.name, done, len(effects)):
+                    included = _run_included(deck, spec)
+                    out = effect_module(spec).run(deck, Inputs(spec, products, included),
+                                                  result)
             result.timings[spec.name] = time.perf_counter() - start
             products.update(_checked(spec, out))
     if progress is not None:
         progress("done", len(effects), len(effects))
     warn_non_finite(result)
     return result
+
+
+def cases_refusal(deck, plan: Plan, swept: tuple[str, ...]) -> str:
+    """Why the plan's effects cannot run this deck's cases over a leading case axis ("" when
+    they can): an effect joins by defining ``run_cases(deck, inputs, cases)`` in its module,
+    and may refuse a deck with ``cases_refused(deck, swept) -> str`` (``swept``: the deck
+    paths the cases vary)."""
+    for spec in plan.effects:
+        module = effect_module(spec)
+        if not hasattr(module, "run_cases"):
+            return f"the {spec.name} effect runs case by case (it has no run over a case axis)"
+        refused = getattr(module, "cases_refused", None)
+        why = refused(deck, swept) if refused is not None else ""
+        if why:
+            return why
+    return ""
+
+
+def run_cases(deck, plan: Plan, cases) -> dict[str, object]:
+    """Every chosen effect of the plan over a leading case axis: each effect's ``run_cases``
+    with the products it declared, checked as :func:`run_plan` checks a run's, on the
+    :class:`camtrain.assemble.cases.Cases` it reads its per-case deck data from and adds its
+    metrics to. Returns the products by name."""
+    products: dict[str, object] = {}
+    with trusted_inputs():
+        for spec in plan.effects:
+            out = effect_module(spec).run_cases(deck, Inputs(spec, products), cases)
+            products.update(_checked(spec, out))
+    return products
 
 
 def _run_included(deck, spec: EffectSpec) -> dict:

@@ -228,3 +228,30 @@ def _zero_entrainment_angles(theta, u) -> list[float]:
                                                                                - theta[i])
         out.append(float(a))
     return out
+
+
+def cases_refused(deck, swept: tuple[str, ...]) -> str:
+    """Why :func:`run_cases` cannot take this deck's cases ("" when it can): it computes the
+    steady EHL film under a contact load of a contact with a width."""
+    model = deck.tribology.film_model
+    if model != "steady":
+        return f"the {model} film is marched over the cycle case by case"
+    if deck.spring is None or deck.masses is None or deck.cam.width is None:
+        return "the load-free Blok film (no contact load or no cam.width) runs case by case"
+    return ""
+
+
+def run_cases(deck, inputs, cases):
+    """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
+    pair's steady film of every case by its contact model, and the metrics."""
+    import numpy as np
+
+    from camtrain.components import MAIN
+    from camtrain.contact.products import ContactFilm
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
+
+    kin = inputs[TrainKinematics].main
+    film = cases.contact.film(kin, np.maximum(inputs.get(ContactLoad).load, 0.0))
+    cases.add_metrics(film_metrics(kin.theta, film.min, kin.nose))
+    return ContactFilm(((MAIN, film),), with_load=True)

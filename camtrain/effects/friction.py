@@ -70,3 +70,33 @@ def run(deck, inputs, res):
         if np.count_nonzero(np.isfinite(force)) != force.size:
             res.warn(f"friction force not finite at some angles{tag} (uncapped lambda model)")
     return ContactFriction(tuple(fields), model=CamContact.from_deck(deck).friction_law)
+
+
+#: deck fields the contact model holds (the Greenwood-Tripp law reads them unselected)
+_CONTACT_FIELDS = ("cam.width", "lubricant.", "tribology.", "materials.")
+
+
+def cases_refused(deck, swept: tuple[str, ...]) -> str:
+    """Why :func:`run_cases` cannot take this deck's cases ("" when it can)."""
+    if deck.tribology.friction_model == "greenwood_tripp" and any(
+            p.startswith(_CONTACT_FIELDS) for p in swept):
+        return "the greenwood_tripp friction law with a swept contact parameter"
+    return ""
+
+
+def run_cases(deck, inputs, cases):
+    """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
+    pair's friction of every case by its contact model, and the metrics."""
+    import numpy as np
+
+    from camtrain.components import MAIN
+    from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
+
+    load = np.maximum(inputs[ContactLoad].load, 0.0)
+    contact = cases.contact
+    field = contact.friction(inputs[TrainKinematics].main, load, inputs[ContactHertz].main,
+                             inputs[ContactFilm].main)
+    cases.add_metrics(friction_metrics(load, field.force, cases.scalars["boundary_friction"]))
+    return ContactFriction(((MAIN, field),), model=contact.friction_law)

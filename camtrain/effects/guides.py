@@ -57,3 +57,18 @@ def run(deck, inputs, res):
         res.warn("guides.follower_*: a pivoted follower has no guide; follower/guide friction "
                  "skipped")
     return losses
+
+
+def run_cases(deck, inputs, cases):
+    """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the
+    guides' losses of every case with its lubricant, and the metrics."""
+    from types import SimpleNamespace
+
+    from camtrain.contact.guides import guide_losses
+    from camtrain.mechanisms import TrainKinematics
+
+    case_deck = SimpleNamespace(guides=deck.guides, lubricant=cases.contact.lubricant,
+                                mechanism=deck.mechanism)
+    losses = guide_losses(case_deck, inputs[TrainKinematics].main)
+    cases.add_metrics(guide_metrics(losses))
+    return losses

@@ -211,3 +211,46 @@ def run(deck, inputs, res):
                  f"boundary coefficient {deck.tribology.boundary_friction:g} everywhere")
     return ContactLoad(load=load, in_contact=inside, model=RIGID,
                        friction=sol.friction, mu=sol.mu, iterations=sol.iterations)
+
+
+def run_cases(deck, inputs, cases):
+    """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the
+    rigid train's load of every case by :func:`camtrain.loads.contact_load` and Ball's
+    friction/load iteration (:func:`camtrain.loads.iteration.iterate_cases`, each case held at
+    its own convergence; one pass at the boundary coefficient without a friction arm), the load
+    metrics and the bounce speeds. A case that does not converge or loses contact is set aside:
+    alone, it reports the error or the lost contact."""
+    import numpy as np
+
+    from camtrain.loads import contact_load, contact_mask
+    from camtrain.loads.bounce import bounce_speeds
+    from camtrain.loads.iteration import iterate_cases
+    from camtrain.loads.product import ContactLoad
+    from camtrain.mechanisms.base import TrainKinematics
+
+    kin = inputs[TrainKinematics].main
+    scal = cases.scalars
+    kw = dict(load_inputs(deck), rate=scal["rate"], valve_mass=scal["valve_mass"],
+              preload_compression=scal["preload_compression"])
+    spring = {k: v for k, v in kw.items() if k not in ("clearance", "base_load")}
+    mu_b = scal["boundary_friction"]
+    depends = np.any(kin.arm_friction != 0.0, axis=1)
+    if np.any(depends) and not np.all(depends):
+        raise ValueError("cases with and without a friction arm")   # run them alone
+    with_friction = deck.lubricant is not None and deck.cam.width is not None   # as run's
+    contact = cases.contact
+    solver = deck.solver
+    sol = iterate_cases(
+        lambda mu: np.broadcast_to(contact_load(kin, mu, **kw), kin.theta.shape),
+        (lambda w: contact.solve(kin, w).force) if with_friction and np.all(depends)
+        else None,
+        mu0=mu_b, tolerance=solver.friction_tolerance,
+        max_iterations=solver.friction_max_iterations)
+    inside = contact_mask(kin.valve_lift, kw["clearance"])
+    mu = sol.mu if sol.friction is not None else mu_b   # as a single run takes it
+    speeds = bounce_speeds(kin, mu, clearance=kw["clearance"], **spring)
+    cases.add_metrics(load_metrics(kin.theta, sol.load, inside, sol.iterations,
+                                   solver.friction_tolerance, speeds))
+    cases.set_aside(~sol.converged | np.any(inside & (sol.load <= 0.0), axis=-1))
+    return ContactLoad(load=sol.load, in_contact=inside, model=RIGID, friction=sol.friction,
+                       mu=sol.mu, iterations=sol.iterations)

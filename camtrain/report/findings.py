@@ -1,7 +1,8 @@
-"""Events an engineer looks for on a cycle, found from whatever columns a run produced.
+"""Events an engineer looks for on a cycle, found from the products the run's effects made.
 
 Zero-entrainment points, loss of contact (bounce), boundary-lubrication regions and concave flanks.
-Each finder returns nothing when its columns are missing, so partial runs report what they can.
+Each finder runs when the plan made its product (``catalogue.planned_products``: the contact
+kinematics, the contact load, the film), so partial runs report what they can.
 """
 from __future__ import annotations
 
@@ -59,40 +60,46 @@ def ranges_text(ranges: list[tuple[float, float]]) -> str:
     return ", ".join(f"{math.degrees(a):+.1f}° … {math.degrees(b):+.1f}°" for a, b in ranges)
 
 
+def _made(result: Result) -> frozenset[str]:
+    """The products the run's effects made (the plan's declarations)."""
+    from camtrain.catalogue import planned_products
+
+    return planned_products(result.plan)
+
+
 def entrainment(result: Result) -> np.ndarray | None:
-    if "entrainment" in result.columns:
-        return result["entrainment"]
-    if "v_cam" in result.columns and "v_follower" in result.columns:
-        return 0.5 * (result["v_cam"] + result["v_follower"])
-    return None
+    """The entrainment velocity, when the run formed the contact kinematics."""
+    return result["entrainment"] if "TrainKinematics" in _made(result) else None
 
 
 def in_contact(result: Result) -> np.ndarray | None:
-    return result["load"] > 0.0 if "load" in result.columns else None
+    """Where the cam carries a load, when the run computed the contact load."""
+    return result["load"] > 0.0 if "ContactLoad" in _made(result) else None
 
 
 def find(result: Result) -> Findings:
+    """The findings of the effects that ran: zero entrainment and concave flanks from the
+    contact kinematics, loss of contact from the contact load, the boundary regime from the
+    film (each read from the columns the effect producing it writes)."""
     f = Findings()
-    if "cam_angle" not in result.columns:
+    made = _made(result)
+    if "TrainKinematics" not in made:
         return f
     theta = result["cam_angle"]
-    ue = entrainment(result)
-    if ue is not None:
-        f.zero_entrainment = zero_crossings(theta, ue)
-    if "load" in result.columns:
+    f.zero_entrainment = zero_crossings(theta, result["entrainment"])
+    f.concave = true_ranges(theta, result["cam_radius"] < 0.0)
+    if "ContactLoad" in made:
         # Unloaded stretches that reach the base circle are valve clearance (by design); those
         # wholly inside the lift event are the follower leaving the cam: bounce.
-        lift = result["lift"] if "lift" in result.columns else None
+        lift = result["lift"]
         for a, b in true_ranges(theta, result["load"] <= 0.0):
             span = (theta >= a) & (theta <= b)
-            on_base = lift is not None and bool(np.any(lift[span] <= 1e-9))
+            on_base = bool(np.any(lift[span] <= 1e-9))
             (f.clearance if on_base else f.loss_of_contact).append((a, b))
-    if "lambda" in result.columns:
+    if "ContactFilm" in made:
         thin = result["lambda"] < 1.0
         contact = in_contact(result)
         f.boundary = true_ranges(theta, thin if contact is None else thin & contact)
-    if "cam_radius" in result.columns:
-        f.concave = true_ranges(theta, result["cam_radius"] < 0.0)
     return f
 
 

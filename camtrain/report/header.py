@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 import math
 
-from camtrain.catalogue import DEFAULT_KIND, KINDS, kind_of
+from camtrain.catalogue import DEFAULT_KIND, KINDS, kind_of, planned_products
 from camtrain.report.display import fmt
 from camtrain.result import Result
 from camtrain.units import from_si
@@ -22,11 +22,13 @@ def header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
             module, function = header.split(":")
             return getattr(importlib.import_module(module), function)(deck, result)
     rows: list[tuple[str, str]] = []
+    made = planned_products(result.plan) if result is not None else frozenset()
     if deck is not None:
         m, cam = deck.mechanism, deck.cam
         rows.append(("Follower", m.type))
         rows.append(("Cam base radius (mm)", fmt(from_si(cam.base_radius, "mm"))))
-        if result is not None and "max_lift" in result.metrics:
+        if result is not None and (result.plan is None or "TrainKinematics" in made):
+            # the lift law's peak: every valve-train run (a lift-only run too) has it
             rows.append(("Maximum lift (mm)", fmt(result.metrics["max_lift"].value * 1e3)))
         if cam.width is not None:
             rows.append(("Cam width (mm)", fmt(from_si(cam.width, "mm"))))
@@ -51,7 +53,7 @@ def header_rows(deck, result: Result | None) -> list[tuple[str, str]]:
                      f"{fmt(from_si(mat.follower_modulus, 'GPa'))}"))
         rows.append(("Poisson's ratio cam/foll.",
                      f"{fmt(mat.cam_poisson)} / {fmt(mat.follower_poisson)}"))
-    if result is not None and (deck is not None or "load" in result.columns):
+    if result is not None and (deck is not None or "ContactLoad" in made):
         p = result.metrics.get("power_loss_mean")
         rows.append(("Frictional power loss (W)", "not computed" if p is None else f"{p.value:.2f}"))
     return rows

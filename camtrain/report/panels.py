@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from camtrain.catalogue import planned_products
 from camtrain.report.display import LABELS, display_unit, typeset
 from camtrain.report.findings import Findings, entrainment, in_contact
 from camtrain.report.style import COLORS, angle_axis, finish_axes, headroom
@@ -20,6 +21,12 @@ from camtrain.result import Result
 class Ctx:
     theta: np.ndarray          # cam angle [deg]
     findings: Findings
+
+
+def made(r: Result) -> frozenset[str]:
+    """The products the run's effects made (the plan's declarations): a panel of one product
+    draws when the plan made it."""
+    return planned_products(r.plan)
 
 
 def has(r: Result, *names: str) -> bool:
@@ -198,7 +205,7 @@ def film_angle(ax, r, ctx):
         ax.secondary_yaxis("right", functions=(lambda h: h / sigma, lambda lam: lam * sigma)) \
             .set_ylabel("λ = h_min/σ [-]")
         finish_axes(ax, legend=True)
-    elif "lambda" in r.columns:
+    elif "ContactFilm" in made(r):   # the film effect writes lambda beside the film
         tw = ax.twinx()
         tw.plot(ctx.theta, _finite(r["lambda"]), color=COLORS["second"], lw=0.9, ls="--",
                 label="λ (right axis)")
@@ -255,7 +262,7 @@ def film_position(ax, r, ctx):
 # --------------------------------------------------------------------------- loads and friction
 
 def load(ax, r, ctx):
-    if "load" not in r.columns:
+    if "ContactLoad" not in made(r):
         return False
     _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
     _shade(ax, ctx.findings.clearance, COLORS["clearance"], "no load (clearance)")
@@ -267,7 +274,7 @@ def hertz(ax, r, ctx):
 
 
 def friction_coefficient(ax, r, ctx):
-    if "friction_coefficient" not in r.columns:
+    if "ContactFriction" not in made(r):
         return False
     _shade(ax, ctx.findings.boundary, COLORS["boundary"], "boundary (λ < 1)")
     return _cycle(ax, r, ctx, ["friction_coefficient"], legend=bool(ctx.findings.boundary))
@@ -283,7 +290,7 @@ def torque(ax, r, ctx):
 
 
 def power(ax, r, ctx):
-    if "power_loss" not in r.columns:
+    if "CamTorque" not in made(r):
         return False
     y, unit = shown(r, "power_loss")
     ax.plot(ctx.theta, _finite(y), color=COLORS["main"], label="instantaneous")

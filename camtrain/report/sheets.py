@@ -171,7 +171,10 @@ def declared_sheets(result: Result) -> list[str]:
     """The sheets the effects that ran declare, in plan order (EffectSpec.sheets)."""
     from camtrain.catalogue import declared_effects
 
-    return list(dict.fromkeys(n for spec in declared_effects(result.plan) for n in spec.sheets))
+    names = dict.fromkeys(n for spec in declared_effects(result.plan) for n in spec.sheets)
+    if result.plan is None:   # a lift-only run: the cycle sheets, none that needs an effect's product
+        return [n for n in names if n not in OTHER_SHEETS]
+    return list(names)
 
 
 def _other_sheets(result: Result, wanted: list[str], out_dir: Path, formats, sha: str | None,

@@ -15,7 +15,7 @@ import numpy as np
 
 from camtrain.errors import CamtrainError, InputError, Problem
 from camtrain.study.fit_data import DataSet
-from camtrain.study.sweep import Case, Parameter, check_values, resolve_path
+from camtrain.study.sweep import Case, Parameter, bounded, parse_bounds, resolve_path
 from camtrain.units import UNITS
 
 
@@ -39,16 +39,8 @@ def parse_constant(raw: dict, name: str, text: str) -> Constant:
     if param.integer:
         raise InputError(Problem("--param", f"{param.path} takes whole numbers and cannot be "
                                  "fitted", name, "a real-valued field"))
-    parts = text.split(":")
-    try:
-        low, high = (float(p) for p in parts)
-    except ValueError:
-        raise InputError(Problem("--bounds", "needs two numbers", text, "LOW:HIGH")) from None
-    if not high > low:
-        raise InputError(Problem("--bounds", "the upper bound must exceed the lower", text,
-                                 "LOW < HIGH"))
-    check_values(Parameter(param.name, param.path, param.unit, False, param.datum, (low, high),
-                           param.info), "--bounds")
+    low, high = parse_bounds("--bounds", text)
+    bounded(param, low, high, "--bounds")
     if param.datum is None or not low <= param.datum <= high:
         raise InputError(Problem("--bounds", f"the deck's {param.path} = {param.datum} "
                                  f"{param.unit} (the start of the fit) is outside the bounds",

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from camtrain.errors import InputError
 from camtrain.errors import Problem as DeckProblem
-from camtrain.study.sweep import Case, Parameter, resolve_path
+from camtrain.study.sweep import Case, Parameter, bounded, checked_bounds, parse_bounds, resolve_path
 
 #: the constraint names that are not a metric compared with a number
 NAMED = ("no_concave_flank", "no_separation", "min_film_parameter", "hertz_limit", "open_area")
@@ -77,27 +77,18 @@ class Constraint:
 def parse_variable(raw: dict, spec) -> Variable:
     """``"base_radius=10:25"`` or ``("base_radius", 10, 25)`` (deck units) -> Variable."""
     if isinstance(spec, str):
-        m = re.fullmatch(r"\s*([^=\s]+)\s*=\s*([^:]+):([^:]+)\s*", spec)
+        m = re.fullmatch(r"\s*([^=\s]+)\s*=\s*(.+?)\s*", spec)
         if not m:
             raise _bad("--var", spec, "needs NAME=LOWER:UPPER", "e.g. base_radius=12:24")
-        try:
-            name, lo, hi = m.group(1), float(m.group(2)), float(m.group(3))
-        except ValueError:
-            raise _bad("--var", spec, "the bounds are not numbers", "NAME=LOWER:UPPER") from None
+        name = m.group(1)
+        lo, hi = parse_bounds("--var", m.group(2), "NAME=LOWER:UPPER")
     else:
-        name, lo, hi = spec[0], float(spec[1]), float(spec[2])
+        name = spec[0]
+        lo, hi = checked_bounds("--var", float(spec[1]), float(spec[2]), spec)
     param = resolve_path(raw, name, "--var")
     if param.integer:
         raise _bad("--var", name, f"{param.path} takes whole numbers", "a continuous field")
-    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        raise _bad("--var", spec, "the bounds must be finite with LOWER < UPPER")
-    info = param.info
-    for x in (lo, hi):
-        bad = ((info.gt is not None and not x > info.gt) or (info.ge is not None and not x >= info.ge)
-               or (info.lt is not None and not x < info.lt)
-               or (info.le is not None and not x <= info.le))
-        if bad:
-            raise _bad("--var", x, f"is out of range for {param.path}", info.expected_text())
+    bounded(param, lo, hi, "--var")
     return Variable(param, lo, hi)
 
 
@@ -248,7 +239,7 @@ def _derived(problem: Problem, x: tuple[float, ...], metrics: dict,
                                  problem.name, problem.base_dir, problem.key)
     except Exception:  # noqa: BLE001 - an invalid case has no derived metrics either
         return out
-    from camtrain.effects.kinematics import _cached_curve
+    from camtrain.tabulate.lift import lift_curve
 
     if designed is not None:      # the case's own lift, designed from its events
         from camtrain.deck.schema_lift import Lift, Spline
@@ -258,7 +249,7 @@ def _derived(problem: Problem, x: tuple[float, ...], metrics: dict,
                         knots=tuple(to_si(v, "deg") for v in designed["knots"]),
                         coefficients=tuple(to_si(v, "mm") for v in designed["coefficients"]))
         model = dataclasses.replace(model, lift=Lift(form="spline", spline=spline))
-    curve = _cached_curve(model.lift, model.solver.angle_points)
+    curve = lift_curve(model.lift, model.solver.angle_points)
     step = 2.0 * np.pi / curve.theta.size
     out["open_area"] = (float(from_si(np.sum(curve.lift) * step, "mm·deg")), "mm·deg")
     if "film_min" in metrics and model.lubricant is not None:

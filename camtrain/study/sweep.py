@@ -248,6 +248,37 @@ def check_values(param: Parameter, option: str) -> None:
             raise _bad(option, x, f"is out of range for {param.path}", info.expected_text())
 
 
+def parse_bounds(option: str, text: str, expected: str = "LOW:HIGH") -> tuple[float, float]:
+    """``LOW:HIGH`` (deck units) -> (low, high): two finite numbers with low < high, else exit
+    code 2 naming ``option``. The one reader of a bounds pair (``fit --bounds``, ``optimize
+    --var NAME=LOW:HIGH``)."""
+    try:
+        low, high = (float(p) for p in text.split(":"))
+    except ValueError:
+        raise _bad(option, text, "needs two numbers", expected) from None
+    return checked_bounds(option, low, high, text)
+
+
+def checked_bounds(option: str, low: float, high: float, shown: object = None
+                   ) -> tuple[float, float]:
+    """(low, high) when both are finite and low < high, else exit code 2."""
+    shown = f"{low:g}:{high:g}" if shown is None else shown
+    if not (math.isfinite(low) and math.isfinite(high)):
+        raise _bad(option, shown, "the bounds must be finite numbers", "LOW:HIGH")
+    if not high > low:
+        raise _bad(option, shown, "the upper bound must exceed the lower", "LOW < HIGH")
+    return low, high
+
+
+def bounded(param: Parameter, low: float, high: float, option: str) -> Parameter:
+    """``param`` with its bounds as its two values, each checked against the field's range
+    (:func:`check_values`)."""
+    out = Parameter(param.name, param.path, param.unit, param.integer, param.datum,
+                    (low, high), param.info)
+    check_values(out, option)
+    return out
+
+
 def build_parameters(raw: dict, specs: list[tuple[str, str, str]]) -> list[Parameter]:
     """``specs`` = [(name, kind, text)] with kind values|range|relative -> checked Parameters."""
     params: list[Parameter] = []

@@ -105,3 +105,19 @@ def test_every_deck_kind_resolves_its_own_plan():
     assert kind_of(bearing) is KINDS["journal_bearing"]
     assert resolve(bearing).chosen == ["journal_bearing"]
     assert kind_of(toy_deck(None)) is KINDS["valve_train"]
+
+
+def test_a_new_chain_effect_joins_the_sweep_batch_by_declaring_a_run_over_cases(monkeypatch):
+    """The batch names no effect: an effect without ``run_cases`` sends the sweep case by case
+    (the reason names it); with one (and no refusal) the plan runs over a case axis."""
+    from camtrain.runner import cases_refusal
+
+    deck = toy_deck(1.5)
+    plan = resolve(deck, CATALOGUE)
+    why = cases_refusal(deck, plan, ("speed.camshaft",))
+    assert why == "the toy_loads effect runs case by case (it has no run over a case axis)"
+    monkeypatch.setattr(toy_loads, "run_cases", lambda deck, inputs, cases: None, raising=False)
+    assert cases_refusal(deck, plan, ("speed.camshaft",)) == ""
+    monkeypatch.setattr(toy_loads, "cases_refused", lambda deck, swept: "toy: not over cases",
+                        raising=False)
+    assert cases_refusal(deck, plan, ("speed.camshaft",)) == "toy: not over cases"

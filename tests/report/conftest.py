@@ -14,6 +14,17 @@ OMEGA = 2500 * 2 * np.pi / 60
 R_B = 0.018
 
 
+def chain_plan(*effects: str):
+    """The plan of a valve-train run of these effects (what the report reads the findings and
+    sheets from)."""
+    from camtrain.catalogue import KINDS
+    from camtrain.plan import Plan, Step
+
+    specs = {spec.name: spec for spec in KINDS["valve_train"].effects}
+    return Plan("auto", tuple(Step(e, True, "synthetic", specs[e]) for e in effects),
+                "valve_train")
+
+
 def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,
               concave: bool = False) -> Result:
     """level: 'lift' (lift law only), 'kinematics' (+ contact, no loads), 'full' (+ tribology).
@@ -50,8 +61,10 @@ def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,
     r.add_column("v_follower", vf, "m/s", "V_f")
     r.add_column("entrainment", 0.5 * (vc + vf), "m/s", "(V_c + V_f)/2")
     r.add_column("sliding", vc - vf, "m/s", "V_c - V_f")
+    r.plan = chain_plan("kinematics")
     if level == "kinematics":
         return r
+    r.plan = chain_plan("kinematics", "loads", "hertz", "film", "friction", "power")
     mass = 0.172 * (6.0 if bounce else 1.0)
     load = 38254 * (0.0064 + lift) + mass * OMEGA ** 2 * d2
     r.add_column("load", load, "N", "contact load")

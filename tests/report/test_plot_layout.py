@@ -13,6 +13,7 @@ from camtrain.report.sheets import _figure, _panel_rects
 from camtrain.report.style import RC
 from camtrain.result import Result
 from camtrain.study.accuracy_plot import pareto_figure, zero_level
+from tests.report.conftest import chain_plan
 
 
 def _concave_result() -> Result:
@@ -26,6 +27,8 @@ def _concave_result() -> Result:
     radius = np.where(np.abs(curvature) > 1e-3, 1.0 / curvature, np.inf)
     r.add_column("cam_radius", radius, "m", "cam radius")
     r.add_column("equivalent_radius", radius.copy(), "m", "equivalent radius")
+    r.add_column("entrainment", np.ones_like(theta), "m/s", "entrainment velocity")
+    r.plan = chain_plan("kinematics")
     return r
 
 

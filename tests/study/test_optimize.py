@@ -50,12 +50,12 @@ def test_preload_optimum_is_where_the_bounce_speed_equals_the_over_speed():
     sqrt(-a/b), the rigid train's W = a + omega^2 b) equals the over-speed, found here by a
     root search on that formula alone."""
     from camtrain.assemble.mechanism import kinematics
-    from camtrain.effects.kinematics import _cached_curve
     from camtrain.loads.bounce import bounce_speed
+    from camtrain.tabulate.lift import lift_curve
     from camtrain.units import to_si
 
     model = ct.load(HARRISON).model
-    kin, _ = kinematics(model, _cached_curve(model.lift, model.solver.angle_points))
+    kin, _ = kinematics(model, lift_curve(model.lift, model.solver.angle_points))
     over = 3000.0
 
     def excess(preload_mm):

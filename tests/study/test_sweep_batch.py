@@ -185,3 +185,19 @@ def test_sub_batches_split_a_chunk_without_changing_it(tmp_path, monkeypatch):
     split = _both(sweep, monkeypatch=monkeypatch)[0]
     _assert_same(split, whole, rtol=0.0)
     _assert_same(split, alone)
+
+
+def test_a_shorter_plan_runs_over_the_cases_of_its_own_effects(tmp_path, monkeypatch):
+    """Without [lubricant] the plan is kinematics, loads, hertz: the batch walks that plan
+    (each effect's run over the case axis), and its metrics are the single runs'."""
+    import re
+
+    path = _deck(tmp_path, "harrison_flat.toml")
+    path.write_text(re.sub(r"(?ms)^\[lubricant\].*?(?=^\[)", "", path.read_text()))
+    sweep = prepare(path, [("speed", "values", "1000,4500"), ("spring_rate", "values", "25,38")])
+    r = route(sweep.raw, sweep.params, sweep.name, sweep.base_dir)
+    assert r.batch and "kinematics, loads, hertz run over a case axis" in r.reason
+    batch, alone = _both(sweep, keep=frozenset({0, 1}), monkeypatch=monkeypatch)
+    assert "film_min" not in alone[0]["metrics"] and "hertz_max" in alone[0]["metrics"]
+    assert "film_min" not in alone[0]["curves"] and "load" in alone[0]["curves"]
+    _assert_same(batch, alone)
