@@ -72,6 +72,9 @@ class LashAdjusterSection:
                                      "extension", "N/mm", default=2.0e5, gt=0)
     vapour_pressure: float = quantity("Lowest absolute chamber pressure (cavitation)", "kPa",
                                       default=2.0, gt=0)
+    checking_height: float = quantity(
+        "Valve lift at which the opening and closing are timed (against the constant-load "
+        "adjuster's)", "mm", default=1.0, gt=0)
     chamber_scheme: Literal["backward_euler", "trapezoidal"] = option(
         "Time discretisation of the chamber's pressure: backward_euler (L-stable, first "
         "order, default: the chamber is stiff with the check valve open) or trapezoidal "

@@ -104,7 +104,8 @@ def _residual(p, big_x, big_xd, sigma, h, start, hr):
     ln0, v0, net0 = start[0], start[1], start[2]
     f, df = _force_at(p, big_x, sigma, hr)
     x1 = big_x + sigma * f
-    xd1 = big_xd + 2.0 * sigma / h * f
+    rate = 2.0 * sigma / h if h > 0.0 else 0.0   # sigma ~ h^2: no speed change in no time
+    xd1 = big_xd + rate * f
     v1 = max(hr.v_dead + hr.area * x1, 1e-3 * hr.v_dead)
     ln1, dln1 = _ln_phi(p, hr)
     qin, dqin = _check(p, hr)
@@ -112,7 +113,7 @@ def _residual(p, big_x, big_xd, sigma, h, start, hr):
     net1 = (qin - qout) / v1
     r = ln1 - ln0 - math.log(v1 / v0) + h * (hr.theta * net1 + (1.0 - hr.theta) * net0)
     dv1 = hr.area * sigma * df
-    dnet = (dqin - hr.g_leak - hr.c_couette * 2.0 * sigma / h * df) / v1 - net1 * dv1 / v1
+    dnet = (dqin - hr.g_leak - hr.c_couette * rate * df) / v1 - net1 * dv1 / v1
     return r, dln1 - dv1 / v1 + h * hr.theta * dnet, qin, qout
 
 
