@@ -130,9 +130,7 @@ def chamber_step(hr, hp, x0, big_x, big_xd, sigma, h):
     v0 = max(hr.v_dead + hr.area * x0, 1e-3 * hr.v_dead)
     start = (ln0, v0, (hp[1] - hp[2]) / v0, x0)
     lo, hi = hr.p_floor, 4.0e9
-    r, dr, qin, qout = _residual(lo, big_x, big_xd, sigma, h, start, hr)
-    if r <= 0.0:   # cavitation: even the vapour pressure over-fills the chamber
-        return lo, _force_at(lo, big_x, sigma, hr)[0], qin, qout
+    floor_known = False
     p = min(max(p0, lo), hi)
     for _ in range(100):
         r, dr, qin, qout = _residual(p, big_x, big_xd, sigma, h, start, hr)
@@ -140,13 +138,19 @@ def chamber_step(hr, hp, x0, big_x, big_xd, sigma, h):
             lo = p
         else:
             hi = p
-        step = r / dr if dr < 0.0 else 0.0
-        pn = p - step
+        pn = p - r / dr if dr < 0.0 else lo
+        if pn <= lo and not floor_known:
+            floor_known = True
+            rf, _, qf, qo = _residual(hr.p_floor, big_x, big_xd, sigma, h, start, hr)
+            if rf <= 0.0:   # cavitation: even the vapour pressure over-fills the chamber
+                return hr.p_floor, _force_at(hr.p_floor, big_x, sigma, hr)[0], qf, qo
         if dr >= 0.0 or pn <= lo or pn >= hi:
             pn = 0.5 * (lo + hi)
+        elif abs(pn - p) <= 1e-8 * (abs(p) + P_ATM):
+            # Newton's last step: pn is the root to about the square of it (1e-16); the
+            # flows are p's, within 1e-8 of the root's
+            return pn, _force_at(pn, big_x, sigma, hr)[0], qin, qout
         if abs(pn - p) <= 1e-12 * (abs(p) + P_ATM):
-            p = pn
-            break
+            break   # p is the root to round-off: its own flows are those returned
         p = pn
-    r, dr, qin, qout = _residual(p, big_x, big_xd, sigma, h, start, hr)
     return p, _force_at(p, big_x, sigma, hr)[0], qin, qout
