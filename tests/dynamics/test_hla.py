@@ -188,3 +188,27 @@ def test_rigid_adjuster_undoes_the_placement(zeta):
     back = rigid_adjuster(with_lash_adjuster(zeta.model, adj))
     for name in ("mass", "stiffness", "damping", "preload", "uni_offset", "uni_k", "uni_c"):
         assert np.allclose(getattr(back, name), getattr(built, name), rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.derived
+def test_plunger_on_the_closed_chamber_rings_at_sqrt_k_over_m():
+    """A load set suddenly on the plunger of a closed chamber (no leak, no air, no spring):
+    x = D (1 - cos wt), w = sqrt(K A^2 / (V m)); it passes D at T/4 and 1.5 D at T/3, so the
+    time between them is T/12 (the chamber's own step, 2000 steps per period)."""
+    from camtrain.dynamics.hla import hydraulic_record
+    from camtrain.dynamics.hla.leakdown import _leakdown_march
+
+    adj = replace(ADJUSTER, air_fraction=0.0, radial_clearance=0.0, spring_rate=0.0,
+                  spring_preload=0.0, supply_pressure=0.0, cracking_pressure=1e9,
+                  rest_extension=ADJUSTER.stroke)
+    load = 5.0
+    k = chamber_stiffness(adj.bulk_modulus, adj.area, adj.dead_volume + adj.area * adj.stroke)
+    period = 2 * math.pi * math.sqrt(adj.plunger_mass / k)
+    deflection = load / k
+    out = np.zeros(3)
+    _leakdown_march(hydraulic_record(adj, 0, 0, 1.0, 0.0),
+                    np.array([adj.plunger_mass, 0.0, 0.0, load]),
+                    np.array([period / 2000, 10 * period, period / 2000, 0.0]),
+                    np.array([deflection, 1.5 * deflection]), out)
+    assert out[0] == pytest.approx(period / 4, rel=2e-4)
+    assert out[1] - out[0] == pytest.approx(period / 12, rel=2e-4)

@@ -77,3 +77,18 @@ def test_leakdown_command(tmp_path):
     bad = CliRunner().invoke(main, ["leakdown", str(DECKS / "zeta_intake_dynamics.toml")])
     assert bad.exit_code == 2
     assert "dynamics.lash_adjuster" in bad.output and "Traceback" not in bad.output
+
+
+def test_adjuster_in_a_push_rod_lifter_moves_with_the_push_rod():
+    """In the lifter the plunger moves with the tappet and push rod: D1/D2 of the valve."""
+    from camtrain.assemble.dynamics import pushrod_ratio, setup
+    from camtrain.deck.load import validate
+    from tests.dynamics.conftest import kinematics_of
+
+    raw = tomllib.loads((DECKS / "pushrod_dynamics.toml").read_text(encoding="utf-8"))
+    raw["clearance"] = {"lash_adjuster": True}
+    raw["dynamics"]["lash_adjuster"] = dict(ADJUSTER, location="auto")
+    deck = validate(raw, "pushrod_hla", DECKS)
+    model = setup(deck, kinematics_of(deck)).model
+    assert model.hla_ratio == pytest.approx(1.0 / pushrod_ratio(deck), rel=1e-12)
+    assert model.hla_ratio < 1.0

@@ -45,17 +45,21 @@ def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3
 @njit(cache=True)
 def _leakdown_march(hr, plunger, steps, marks, out):
     """The loaded plunger (``plunger`` = mass, spring rate, spring preload at full extension,
-    load) over time steps ``steps`` = (fast step, fast span, slow step, load ramp), until its collapse
-    passes both ``marks``; ``out`` = times at the marks, pressure at the second."""
+    load) over time steps ``steps`` = (fast step, fast span, slow step, load ramp; 0: sudden),
+    until its collapse passes both ``marks``; ``out`` = times at the marks, pressure at the
+    second."""
     m, k_s, f_s0, load = plunger[0], plunger[1], plunger[2], plunger[3]
     x, xd, acc, t = hr.stroke, 0.0, 0.0, 0.0
     hp = np.zeros(3)
     hp[0] = 0.0
+    sudden = steps[3] <= 0.0   # no ramp: the full load from t = 0 (the stop takes no pull)
+    acc = min(f_s0 - load, 0.0) / m if sudden else 0.0
     found = 0
     for _ in range(100_000_000):
         h = steps[0] if t < steps[1] else steps[2]
         x_pred = x + h * xd + 0.25 * h * h * acc
-        rest = f_s0 + k_s * (hr.stroke - x_pred) - load * min((t + h) / steps[3], 1.0)
+        share = 1.0 if sudden else min((t + h) / steps[3], 1.0)
+        rest = f_s0 + k_s * (hr.stroke - x_pred) - load * share
         eff = m + 0.25 * h * h * k_s
         sigma = 0.25 * h * h / eff
         big_x = x_pred + sigma * rest
