@@ -417,7 +417,7 @@ def _register_study_commands() -> None:
     # the study commands live in their own modules, which import only click at module level
     from camtrain.cli_accuracy import accuracy
     from camtrain.cli_design import design, optimize
-    from camtrain.cli_dynamics import dynamics_speed
+    from camtrain.cli_dynamics import dynamics_speed, leakdown
     from camtrain.cli_ehl import ehl
     from camtrain.cli_fit import fit
     from camtrain.cli_friction_map import friction_map
@@ -429,6 +429,7 @@ def _register_study_commands() -> None:
     main.add_command(warmup)
     main.add_command(accuracy)
     main.add_command(dynamics_speed)
+    main.add_command(leakdown)
     main.add_command(friction_map)
     main.add_command(sensitivity)
     main.add_command(fit)

@@ -95,11 +95,13 @@ def build_model(deck, *, stiffness_scale: float = 1.0, kin=None) -> TrainModel:
         links["rigid link"] = math.inf
     c = deck.clearance
     adjuster = c.adjuster_load if (c is not None and c.lash_adjuster) else 0.0
+    if d.lash_adjuster is not None:
+        adjuster = 0.0   # the hydraulic adjuster replaces the constant load
     law = None
     contact = scaled(d.contact_stiffness)
     if d.contact_model == "hertz_line":
         law, contact = hertz_law(deck, kin, stiffness_scale)
-    return assemble_train(
+    model = assemble_train(
         valve_mass=valve, follower_mass=follower, contact_stiffness=contact, cam_law=law,
         follower_stiffness=scaled(d.follower_stiffness), links=links,
         seat_stiffness=scaled(d.seat_stiffness), spring_rate=s.rate,
@@ -108,6 +110,50 @@ def build_model(deck, *, stiffness_scale: float = 1.0, kin=None) -> TrainModel:
         spring_mass=d.spring_mass or 0.0, spring_elements=d.spring_elements,
         spring_damping_ratio=d.spring_damping_ratio, adjuster_load=adjuster,
         damping=damping_values(d))
+    if d.lash_adjuster is None:
+        return model
+    from camtrain.dynamics.hla import with_lash_adjuster
+
+    return with_lash_adjuster(model, lash_adjuster(deck), adjuster_ratio(deck, kin))
+
+
+def lash_adjuster(deck):
+    """The deck's [dynamics.lash_adjuster] as a :class:`camtrain.dynamics.hla.LashAdjuster`
+    (SI; the annulus' oil the lubricant's unless the section names a viscosity)."""
+    from camtrain.dynamics.hla import LashAdjuster
+
+    h = deck.dynamics.lash_adjuster
+    return LashAdjuster(
+        plunger_diameter=h.plunger_diameter, radial_clearance=h.radial_clearance,
+        leak_length=h.leak_length, eccentricity=h.eccentricity,
+        viscosity=h.viscosity if h.viscosity is not None else deck.lubricant.viscosity,
+        dead_volume=h.chamber_volume, stroke=h.stroke, rest_extension=h.rest_extension,
+        plunger_mass=h.plunger_mass, spring_rate=h.spring_rate,
+        spring_preload=h.spring_preload, supply_pressure=h.supply_pressure,
+        cracking_pressure=h.cracking_pressure, check_area=h.check_valve_area,
+        full_open=h.full_open_pressure, discharge_coefficient=h.discharge_coefficient,
+        oil_density=h.oil_density, bulk_modulus=h.bulk_modulus, air_fraction=h.air_fraction,
+        polytropic_index=h.polytropic_index, stop_stiffness=h.stop_stiffness,
+        vapour_pressure=h.vapour_pressure, bulk_model=h.bulk_model, scheme=h.chamber_scheme)
+
+
+def adjuster_ratio(deck, kin=None) -> float:
+    """Plunger motion per valve-referred motion: 1 in a bucket tappet, D1/D2 in a push-rod
+    lifter, the lever ratio 1/(R - 1) under the pivot of an end-pivoted finger follower (R the
+    valve motion per cam-contact motion on the base circle: the kinematics' load ratio, or B/A
+    without kinematics)."""
+    from camtrain.dynamics.hla import pivot_ratio
+
+    location = deck.dynamics.lash_adjuster.location
+    mech = deck.mechanism
+    if location == "pivot" or (location == "auto" and mech.type == "finger"):
+        if kin is not None:
+            import numpy as np
+
+            rest = int(np.argmin(kin.valve_lift))
+            return pivot_ratio(float(np.asarray(kin.rocker_ratio)[rest]))
+        return pivot_ratio(mech.B / mech.A)
+    return 1.0 / pushrod_ratio(deck)
 
 
 def hertz_law(deck, kin, stiffness_scale: float = 1.0):

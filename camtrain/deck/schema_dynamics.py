@@ -11,7 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from camtrain.deck.fields import option, quantity
+from camtrain.deck.fields import option, quantity, section
+from camtrain.deck.schema_lash_adjuster import LashAdjusterSection, lash_adjuster_problems
 from camtrain.errors import Problem
 
 INTEGRATOR_NAMES = ("newmark", "central_difference", "lsoda", "radau")
@@ -109,6 +110,9 @@ class Dynamics:
     stability_factor: float = quantity(
         "Central difference: the step may be at most this fraction of 2/omega_max", "-",
         default=0.8, gt=0, le=1)
+    lash_adjuster: LashAdjusterSection | None = section(
+        "Hydraulic lash adjuster marched with the train (plunger, chamber, leak-down, check "
+        "valve); without it a lash adjuster is clearance.adjuster_load, a constant force")
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -186,4 +190,4 @@ def dynamics_problems(deck) -> list[Problem]:
     if d.pushrod_stiffness is not None and deck.mechanism.type != "pushrod":
         out.append(Problem("dynamics.pushrod_stiffness", "applies to a push-rod train only",
                            None, "no value"))
-    return out
+    return out + lash_adjuster_problems(deck)

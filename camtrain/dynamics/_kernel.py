@@ -31,13 +31,15 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
+from camtrain.dynamics.hla.chamber import chamber_step, extension, plunger_force
 from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
 MAX_SWITCHES = 8
 
-#: work arrays of a Newmark trial step: predictor (pu, pv), right-hand side, A^-1 e_cam
-_Work = namedtuple("_Work", "pu pv rhs z")
+#: work arrays of a Newmark trial step: predictor (pu, pv), right-hand side, A^-1 e_cam,
+#: A^-1 (e_plunger - e_body) of a hydraulic lash adjuster
+_Work = namedtuple("_Work", "pu pv rhs z zh")
 
 
 @njit(cache=True)
@@ -127,8 +129,20 @@ def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _accel(tr, uni, cl, inp, act, u, v, n, tau, a):
-    """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state."""
+def _adjuster_force(hla, u, p, a):
+    """Add a hydraulic lash adjuster's force at chamber pressure p to the node forces ``a``
+    (valve-referred: the plunger force times its motion ratio, body and plunger pushed apart)."""
+    if hla.on == 0:
+        return
+    f = hla.ratio * plunger_force(p, extension(u[hla.f], u[hla.q], hla), hla)
+    a[hla.f] -= f
+    a[hla.q] += f
+
+
+@njit(cache=True)
+def _accel(tr, uni, cl, inp, act, u, v, n, tau, a, p):
+    """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state (an adjuster's
+    chamber at pressure p)."""
     m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
     b, bd, dt = inp.b, inp.bd, inp.dt
     size = m.size
@@ -143,6 +157,7 @@ def _accel(tr, uni, cl, inp, act, u, v, n, tau, a):
             bj, bdj = _input(b, bd, j, n, tau, dt)
             a[node[j]] += _spring(j, bj - u[node[j]] + uni.off[j], uni.k, cl.law, cl.hz, r1,
                                   ratio) + uni.c[j] * (bdj - v[node[j]])
+    _adjuster_force(tr.hla, u, p, a)
     for i in range(size):
         a[i] /= m[i]
 
@@ -167,12 +182,39 @@ def _matrix(tr, uni, act, h, law):
 
 
 @njit(cache=True)
-def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
+def _hydraulic(tr, hp, u, Ainv, A, h, out, work):
+    """A hydraulic lash adjuster's force in the Newmark step: a1 += F z (z = A^-1 (e_q - e_f)),
+    the chamber's pressure and F solved together (hla.chamber_step) with the plunger's end
+    extension x1 = X + sigma F; the chamber's end state into ``out[3]``."""
+    hla, pu, pv, a1, z = tr.hla, work.pu, work.pv, out[2], work.zh
+    f, q = hla.f, hla.q
+    if Ainv.shape[0] > 0:
+        for i in range(z.size):
+            z[i] = Ainv[i, q] - Ainv[i, f]
+    else:
+        z[:] = 0.0
+        z[q], z[f] = 1.0, -1.0
+        z[:] = np.linalg.solve(A, z.copy())
+    s = z[q] - z[f]
+    w_end = pu[f] - pu[q] + 0.25 * h * h * (a1[f] - a1[q])
+    wd_end = pv[f] - pv[q] + 0.5 * h * (a1[f] - a1[q])
+    big_x = hla.x_rest - hla.ratio * (w_end - hla.w0)
+    sigma = hla.ratio * hla.ratio * 0.25 * h * h * s
+    p1, force, qin, qout = chamber_step(hla, hp, extension(u[f], u[q], hla), big_x,
+                                        -hla.ratio * wd_end, sigma, h)
+    for i in range(z.size):
+        a1[i] += hla.ratio * force * z[i]
+    out[3][0], out[3][1], out[3][2] = p1, qin, qout
+
+
+@njit(cache=True)
+def _trial(tr, uni, cl, inp, act, u, v, a, hp, n, tau, h, Ainv, out, work):
     """One Newmark step of length h from time tau of step n, contact state fixed: the end
-    state into ``out`` (u1, v1, a1), ``work`` (pu, pv, rhs, z) its work arrays. A Hertz cam
-    contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving F = F_hertz(delta(a1)),
-    delta = D - h^2/4 z_i F (z = A^-1 e_i)."""
-    u1, v1, a1 = out
+    state into ``out`` (u1, v1, a1, adjuster's chamber), ``work`` (pu, pv, rhs, z, zh) its work
+    arrays. A Hertz cam contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving
+    F = F_hertz(delta(a1)), delta = D - h^2/4 z_i F (z = A^-1 e_i); a hydraulic lash adjuster
+    (``hp`` its chamber at the start): :func:`_hydraulic`. The deck allows not both."""
+    u1, v1, a1 = out[0], out[1], out[2]
     pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
     m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
     k, c, off = uni.k, uni.c, uni.off
@@ -194,6 +236,7 @@ def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
                 rhs[i] += c[j] * (bdj - pv[i])
             else:
                 rhs[i] += k[j] * (bj - pu[i] + off[j]) + c[j] * (bdj - pv[i])
+    A = np.empty((0, 0))
     if Ainv.shape[0] > 0:
         for i in range(size):
             s = 0.0
@@ -221,6 +264,8 @@ def _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, out, work):
             f = k[0] * target / (1.0 + 0.25 * h * h * z[i] * k[0])
         for q in range(size):
             a1[q] += f * z[q]
+    if tr.hla.on:
+        _hydraulic(tr, hp, u, Ainv, A, h, out, work)
     for i in range(size):
         u1[i] = pu[i] + 0.25 * h * h * a1[i]
         v1[i] = pv[i] + 0.5 * h * a1[i]
@@ -253,7 +298,7 @@ def _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h):
     x = alpha
     side = 0
     for _ in range(30):
-        _trial(tr, uni, cl, inp, act, u, v, a, n, tau, x * h, empty, sub, work)
+        _trial(tr, uni, cl, inp, act, u, v, a, st.hp, n, tau, x * h, empty, sub, work)
         bj, bdj = _input(inp.b, inp.bd, first, n, tau + x * h, dt)
         r1, ratio = _geom(cl.rad, cl.rat, n, tau + x * h, dt)
         px = _psi(sub[0], sub[1], first, node, k, c, off, bj, bdj, law, hz, r1, ratio)[0] \
@@ -277,7 +322,7 @@ def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
         out.ev_t[nev] = inp.t0 + n * inp.dt + tau
         out.ev_kind[nev] = 2 * first + (1 if closing else 0)
         out.ev_rate[nev] = rate
-    _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a)
+    _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a, st.hp[0])
     return nev + 1
 
 
@@ -296,6 +341,21 @@ def _sample(tr, uni, cl, inp, st, out, n):
                                   cl.hz, r1, ratio) + uni.c[j] * (bd[j, n + 1] - st.v[node[j]])
         else:
             out.f[j, r] = 0.0
+    out.h[0, r], out.h[1, r], out.h[2, r] = st.hp[0], st.hp[1], st.hp[2]
+    out.h[3, r] = extension(st.u[tr.hla.f], st.u[tr.hla.q], tr.hla) if tr.hla.on else 0.0
+
+
+@njit(cache=True)
+def _inverses(tr, uni, dt, law):
+    """The full step's (M + dt^2/4 K + dt/2 C)^-1, once per contact state."""
+    size, nu = tr.m.size, tr.node.size
+    inverses = np.empty((1 << nu, size, size))
+    state = np.zeros(nu, dtype=np.bool_)
+    for s_idx in range(1 << nu):
+        for j in range(nu):
+            state[j] = (s_idx >> j) & 1
+        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
+    return inverses
 
 
 @njit(cache=True)
@@ -316,17 +376,12 @@ def newmark_march(tr, uni, cl, inp, st, out):
     b, bd, dt = inp.b, inp.bd, inp.dt
     u, v, a, act = st.u, st.v, st.a, st.act
     size, nu = tr.m.size, node.size
-    inverses = np.empty((1 << nu, size, size))   # the full step, once per contact state
-    state = np.zeros(nu, dtype=np.bool_)
-    for s_idx in range(1 << nu):
-        for j in range(nu):
-            state[j] = (s_idx >> j) & 1
-        inverses[s_idx] = np.linalg.inv(_matrix(tr, uni, state, dt, law))
+    inverses = _inverses(tr, uni, dt, law)
     empty = np.empty((0, 0))
     u1, v1, a1 = np.empty(size), np.empty(size), np.empty(size)
-    end = (u1, v1, a1)
-    sub = (np.empty(size), np.empty(size), np.empty(size))
-    work = _Work(np.empty(size), np.empty(size), np.empty(size), np.empty(size))
+    end = (u1, v1, a1, st.hp.copy())
+    sub = (np.empty(size), np.empty(size), np.empty(size), st.hp.copy())
+    work = _Work(np.empty(size), np.empty(size), np.empty(size), np.empty(size), np.empty(size))
     nev = 0
     energy = 0.0
     cut = 0
@@ -338,7 +393,7 @@ def newmark_march(tr, uni, cl, inp, st, out):
             if h <= 0.0:
                 break
             Ainv = inverses[_state_index(act)] if tau == 0.0 else empty
-            _trial(tr, uni, cl, inp, act, u, v, a, n, tau, h, Ainv, end, work)
+            _trial(tr, uni, cl, inp, act, u, v, a, st.hp, n, tau, h, Ainv, end, work)
             # which contact changes state first inside the (sub)step?
             first = -1
             alpha = 2.0
@@ -372,6 +427,7 @@ def newmark_march(tr, uni, cl, inp, st, out):
                                  law, hz, rad, rat) * 0.5 * hx
             u[:] = to[0]
             v[:] = to[1]
+            st.hp[:] = to[3]
             if stop:
                 a[:] = a1
                 break

@@ -96,6 +96,9 @@ class TrainResponse:
     steps: int
     integrator: str
     cut_switches: int = 0
+    #: a hydraulic lash adjuster's chamber pressure [Pa, gauge], check-valve and leak flows
+    #: [m^3/s] and plunger extension [m] (4 x grid), None without one
+    hydraulic: np.ndarray | None = None
 
     def events_of(self, kind: str) -> list[DynamicEvent]:
         return [e for e in self.events if e.kind == kind]
@@ -179,6 +182,9 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
             runner.v = np.array(start.v[:, i0], dtype=float)
             runner.a = np.array(start.a[:, i0], dtype=float)
             runner.act = start.contact_force[:, i0] > 0.0
+            if start.hydraulic is not None and model.hla is not None:
+                runner.hp[:] = (start.hydraulic[0, i0], start.hydraulic[1, i0],
+                                start.hydraulic[2, i0])
     else:
         from camtrain.dynamics.adaptive import Adaptive
 
@@ -193,7 +199,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
             if change <= settings.period_tol and cycle >= settings.cycles_min:
                 break
         previous = out[0].copy()
-    u, v, a, f, events, work, cut = out
+    u, v, a, f, events, work, cut = out[:7]
+    hydraulic = out[7] if len(out) > 7 and model.hla is not None else None
     # sample r is grid index (i0 + r + 1) % grid: roll into grid order
     sample_t = (np.arange(grid) + 1) * dt * sub
     dyn_events = []
@@ -203,6 +210,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
         dyn_events.append(DynamicEvent(EVENT_NAMES[(kind // 2, kind % 2)], angle, time, speed))
     samples = {"time": sample_t[None, :], "u": u, "v": v, "a": a, "f": f,
                "cam": np.vstack((b[sub::sub], bd[sub::sub], bdd[sub::sub]))}
+    if hydraulic is not None:
+        samples["hla"] = hydraulic
     if base.amplitude and base.order:
         # samples are uniform in time, not in angle: carry them onto the grid angles
         angle = theta0 + base.angle(sample_t)[0]
@@ -214,7 +223,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                          v=on_grid["v"], a=on_grid["a"], contact_force=on_grid["f"],
                          cam=tuple(on_grid["cam"]), events=tuple(dyn_events), cycles=cycle,
                          converged=change <= settings.period_tol, change=change, cam_work=work,
-                         steps=steps, integrator=settings.integrator, cut_switches=cut)
+                         steps=steps, integrator=settings.integrator, cut_switches=cut,
+                         hydraulic=on_grid.get("hla"))
 
 
 def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: int,
@@ -247,7 +257,7 @@ def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: 
             force[i] += (model.uni_k[j] * (inputs[j, 0] - runner.u[i] + model.uni_offset[j])
                          + model.uni_c[j] * (rates[j, 0] - runner.v[i]))
     runner.a = force / model.mass
-    u, v, a, f, events, work, _ = runner.revolution()
+    u, v, a, f, events, work = runner.revolution()[:6]
     return u, v, a, f, events, work
 
 
@@ -290,6 +300,10 @@ class _FixedStep:
         self.act = act.astype(np.bool_)   # the valve rests on its seat
         self.psi_prev = np.where(act, model.uni_k * 1e-9, 0.0)
         self.thr = np.full(2, CLOSE_THRESHOLD * max(model.spring_preload, 1.0))
+        self.hla, self.hp = _hydraulic_start(model, u0)
+        if model.hla is not None and self.explicit:
+            raise ValueError("the hydraulic lash adjuster's chamber is marched by the newmark "
+                             "integrator only")
 
     def revolution(self):
         from camtrain.dynamics.records import CamLaw, Inputs, Marched, Train, TrainState, unilateral
@@ -300,21 +314,33 @@ class _FixedStep:
         cap = 10_000
         out = Marched(np.empty((n, grid)), np.empty((n, grid)), np.empty((n, grid)),
                       np.empty((2, grid)), np.empty(cap), np.empty(cap, dtype=np.int64),
-                      np.empty(cap))
-        train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr)
+                      np.empty(cap), np.zeros((4, grid)))
+        train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr,
+                      self.hla)
         inputs = Inputs(self.inputs, self.rates, self.dt, self.stride, 0.0)
         if self.explicit:   # v and a: the explicit scheme's work arrays
             state = TrainState(self.u, np.empty(n), np.empty(n), self.act, self.u_prev,
-                               self.psi_prev)
+                               self.psi_prev, self.hp)
             from camtrain.dynamics._explicit import central_difference_march as march
         else:
-            state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev)
+            state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev, self.hp)
             march = self.kernel.newmark_march
         nev, work, cut = march(train, unilateral(m), CamLaw(*self.geometry), inputs, state, out)
         nev = min(nev, cap)
         events = list(zip(out.ev_t[:nev].tolist(), out.ev_kind[:nev].tolist(),
                           out.ev_rate[:nev].tolist(), strict=True))
-        return out.u, out.v, out.a, out.f, events, work, cut
+        return out.u, out.v, out.a, out.f, events, work, cut, out.h
+
+
+def _hydraulic_start(model: TrainModel, u0):
+    """The march's adjuster record and its chamber at rest: the supply pressure, no flow."""
+    from camtrain.dynamics.hla import hydraulic_record, no_adjuster
+
+    if model.hla is None:
+        return no_adjuster(), np.zeros(3)
+    w0 = float(u0[model.follower] - u0[model.plunger])
+    record = hydraulic_record(model.hla, model.follower, model.plunger, model.hla_ratio, w0)
+    return record, np.array([model.hla.supply_pressure, 0.0, 0.0])
 
 
 def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:
@@ -345,18 +371,21 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     act = np.zeros(2, dtype=np.bool_)
     from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
 
+    from camtrain.dynamics.hla import no_adjuster
+
     out = Marched(np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps)),
-                  np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1))
+                  np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1),
+                  np.zeros((4, steps)))
     train = Train(model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node,
-                  np.zeros(2))
+                  np.zeros(2), no_adjuster())
     drive = Inputs(inputs, inputs, dt, 1, 0.0)
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
-        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2))
+        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2), np.zeros(3))
         from camtrain.dynamics._explicit import central_difference_march
 
         central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
-        state = TrainState(u, v, a, act, u, np.zeros(2))
+        state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(3))
         _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
     return out.u

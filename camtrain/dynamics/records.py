@@ -25,15 +25,27 @@ from collections import namedtuple
 
 import numpy as np
 
-__all__ = ["Unilateral", "Train", "Inputs", "CamLaw", "Marched", "TrainState", "unilateral",
-           "linear_law"]
+__all__ = ["Unilateral", "Train", "Inputs", "CamLaw", "Marched", "TrainState", "Hydraulic",
+           "unilateral", "linear_law"]
 
 #: the unilateral contacts (cam, seat) of a train: k [N/m], c [N s/m], off [m] (arrays of 2)
 Unilateral = namedtuple("Unilateral", "k c off")
 
 #: the single train's linear part M u'' + C u' + K u = f0 (``m`` the lumped masses [kg]), the
-#: node each unilateral contact acts on and each contact's closing threshold ``thr`` [N]
-Train = namedtuple("Train", "m K C f0 node thr")
+#: node each unilateral contact acts on, each contact's closing threshold ``thr`` [N] and its
+#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one)
+Train = namedtuple("Train", "m K C f0 node thr hla")
+
+#: a hydraulic lash adjuster between the ``f`` (body) and ``q`` (plunger) nodes
+#: (:mod:`camtrain.dynamics.hla`, SI, pressures gauge): plunger motion per valve-referred motion
+#: ``ratio``, plunger ``area``, chamber ``v_dead`` at full collapse, rest extension ``x_rest``,
+#: ``stroke``, valve-referred rest compression ``w0``, end-stop stiffness ``k_stop``, leak
+#: conductance ``g_leak`` and Couette coefficient ``c_couette``, ``p_supply``, check valve
+#: ``p_crack``, ``check_k`` = C_d A sqrt(2/rho), ``full_open``; oil modulus ``k_liq``, free
+#: ``air`` fraction, polytropic ``n_poly``, pressure floor ``p_floor``, chamber scheme ``theta``
+Hydraulic = namedtuple("Hydraulic", "on f q ratio area v_dead x_rest stroke w0 k_stop g_leak "
+                       "c_couette p_supply p_crack check_k full_open k_liq air n_poly p_floor "
+                       "theta")
 
 #: the contacts' inputs b [m] and b' [m/s] (contacts, steps + 1) at the step times of a batch,
 #: the step ``dt`` [s], the output ``stride`` (steps per sample) and the batch's start time t0
@@ -44,12 +56,14 @@ Inputs = namedtuple("Inputs", "b bd dt stride t0")
 CamLaw = namedtuple("CamLaw", "law hz rad rat")
 
 #: the march's samples every stride: displacement, velocity, acceleration (n, samples), contact
-#: forces (2, samples), and its events: time, kind (2 j + closing), approach speed
-Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate")
+#: forces (2, samples), its events: time, kind (2 j + closing), approach speed, and the
+#: adjuster's chamber pressure, check-valve and leak flows, plunger extension ``h`` (4, samples)
+Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h")
 
 #: the single train's state, updated in place: u, v, a, the contact states ``act``; the
-#: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``
-TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev")
+#: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``; the
+#: adjuster's chamber ``hp`` = (pressure [Pa], check-valve flow, leak flow [m^3/s])
+TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp")
 
 
 def unilateral(model) -> Unilateral:

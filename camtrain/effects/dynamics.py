@@ -27,7 +27,8 @@ def reason(deck, planned) -> str:
     d = deck.dynamics
     spring = (f"{d.spring_elements}-element spring chain" if d.spring_elements else
               "single-rate spring")
-    return f"[dynamics] given: elastic train, {d.integrator}, {spring}"
+    hla = ", hydraulic lash adjuster" if d.lash_adjuster is not None else ""
+    return f"[dynamics] given: elastic train, {d.integrator}, {spring}{hla}"
 
 
 def _separations(res, found) -> None:
@@ -67,6 +68,24 @@ def _separations(res, found) -> None:
              f"{math.degrees(dwell):.3g} deg); loads there are impacts, not a design load; "
              "a stiffer spring (spring.rate, spring.preload_compression) or a lower "
              "speed.camshaft keeps the contact")
+
+
+def _lash_adjuster(deck, run_setup, resp, res) -> None:
+    """A hydraulic lash adjuster's columns, metrics and pump-up warning; the lift loss against
+    the same train with the constant-load adjuster, marched alike."""
+    from camtrain.dynamics import march
+    from camtrain.dynamics.hla import rigid_adjuster
+    from camtrain.dynamics.hla.findings import adjuster_findings, adjuster_rows
+
+    model = run_setup.model
+    rigid = march(rigid_adjuster(model), run_setup.cam, run_setup.base, run_setup.settings)
+    height = deck.dynamics.lash_adjuster.checking_height
+    found = adjuster_findings(resp, rigid, model, height)
+    cols, mets, warns = adjuster_rows(resp, found, model, height)
+    res.add_columns(cols)
+    res.add_metrics(mets)
+    for text in warns:
+        res.warn(text)
 
 
 def run(deck, inputs, res):
@@ -152,6 +171,8 @@ def run(deck, inputs, res):
         res.warn(f"dynamics: no periodic state after {resp.cycles} revolutions (last change "
                  f"{resp.change:.3g} > period_tol {settings.period_tol:g}); results are the "
                  "last revolution")
+    if model.hla is not None:
+        _lash_adjuster(deck, run_setup, resp, res)
     if resp.cut_switches:
         res.warn(f"dynamics: {resp.cut_switches} steps had more contact changes than the "
                  "integrator locates per step (chattering); refine steps_per_degree")

@@ -160,6 +160,10 @@ def _spring_chain(raw: dict) -> bool:
     return int(raw.get("dynamics", {}).get("spring_elements", 0)) > 0
 
 
+def _lash_adjuster(raw: dict) -> bool:
+    return bool(raw.get("dynamics", {}).get("lash_adjuster"))
+
+
 def _adaptive(raw: dict) -> bool:
     return raw.get("dynamics", {}).get("integrator") in ("lsoda", "radau")
 
@@ -256,4 +260,7 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          _spring_chain, "elements of the valve-spring chain (surge)", integer=True),
     Knob("dynamics_rtol", "dynamics.rtol", (1e-5, 1e-6, 1e-7, 1e-8, 1e-9), lambda v: v,
          _adaptive, "relative tolerance of the adaptive dynamics integrator"),
+    Knob("adjuster_cycles", "dynamics.cycles_max", (4, 8, 16, 32, 64), lambda v: 1.0 / v,
+         _lash_adjuster, "revolutions marched at most towards the periodic state (a hydraulic "
+         "lash adjuster's leak-down and refill balance over many)", integer=True),
 )}

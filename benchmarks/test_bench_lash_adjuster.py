@@ -1,0 +1,42 @@
+"""The elastic train with its hydraulic lash adjuster to the periodic state, against the same
+train with the constant-load adjuster (`make bench`; docs/lash_adjusters.md).
+
+Workload: decks/zeta_intake_hla.toml marched until two revolutions agree, each train at its own
+automatic step (20 steps per its shortest natural period: the same accuracy; the adjuster adds
+the plunger's node and the chamber's stiffness, so its step is shorter). Floor: the
+constant-load adjuster's train (`rigid_adjuster`), the run without the hydraulics. Target: the
+adjuster within 2x. Nothing here asserts a time.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+from conftest import ROOT, note, paired, record
+
+from camtrain import api
+from camtrain.assemble.dynamics import setup
+from camtrain.assemble.lift_law import build_lift_law
+from camtrain.assemble.mechanism import kinematics
+from camtrain.dynamics import auto_steps, march
+from camtrain.dynamics.hla import rigid_adjuster
+from camtrain.lift import angle_grid
+
+
+def test_bench_lash_adjuster_periodic(benchmark):
+    deck = api.load(str(ROOT / "decks" / "zeta_intake_hla.toml")).model
+    curve = build_lift_law(deck.lift).evaluate(angle_grid(deck.solver.angle_points))
+    kin = kinematics(deck, curve)[0]
+    s = setup(deck, kin)
+    rigid = rigid_adjuster(s.model)
+    own = replace(s.settings, substeps=auto_steps(rigid, s.base, kin.theta.size,
+                                                  deck.dynamics.steps_per_period))
+    hla = march(s.model, s.cam, s.base, s.settings)           # compile / load the kernel
+    ref = march(rigid, s.cam, s.base, own)
+    timing = paired(lambda: march(s.model, s.cam, s.base, s.settings),
+                    lambda: march(rigid, s.cam, s.base, own), rounds=5)
+    record(benchmark, f"train with hydraulic lash adjuster to periodic state ({hla.cycles} rev "
+           f"x {hla.steps} steps) / constant-load adjuster ({ref.cycles} rev x {ref.steps} "
+           "steps)", timing, "<= 2x", cpu=True)
+    note("lash adjuster: steps per revolution, adjuster / constant load",
+         f"{hla.steps} / {ref.steps}")
+    benchmark.pedantic(march, args=(s.model, s.cam, s.base, s.settings), rounds=3, iterations=1)
