@@ -1,0 +1,467 @@
+r"""Transient elastohydrodynamic line contact marched through a cam cycle (implicit in time).
+
+The contact of each time step is the steady problem of :mod:`.ehl_line` with the squeeze term,
+the signed entrainment and mass-conserving cavitation (:mod:`.ehl_transient_system`), solved
+by semismooth Newton in (s, H0) on a grid of its own:
+
+* **grid**: ``nodes`` points, uniform and symmetric, on |x| <= L with L = ``inlet`` Hertz
+  half-widths of the step, widened to 20 rigid lengths sqrt(2 R h) where the contact is light
+  (the steady solver's rule, h Moes' film of the step's inputs); symmetric because the inlet changes side at each entrainment
+  reversal. The grid follows the load and radius from step to step; the film content rho theta h
+  of the previous steps is interpolated onto it (linear; outside the old domain the flooded
+  rigid gap continues it).
+* **deflection**: the FFT convolution of :mod:`.ehl_elastic` on every step's spacing (the
+  kernel of a spacing dx is dx times the unit kernel plus a constant, which H0 absorbs).
+* **time**: backward Euler or BDF2 (``march``) in time t = theta/omega, from the steady solution
+  at the start angle (:func:`.ehl_line.solve_ehl_line`, then the same step with c_t = 0); one
+  revolution, then the start angle once more (its change is the period error). A step whose
+  Newton iteration fails is split into two (up to three times); if it still fails (a jump in
+  the inputs, e.g. a lift law whose acceleration jumps, so that the radius and the load jump
+  within one step) the march restarts there from the steady solution and lists the step in
+  ``restarts`` (the film law warns).
+* **Newton**: dense Jacobian (elastic block from the Toeplitz influence matrix), its LU kept
+  across iterations and steps while each step at least halves the residual (chord steps),
+  backtracking on the residual norm otherwise.
+
+Friction (per unit width, times the width): the Couette shear of the liquid film,
+tau = tau_0 asinh(eta |u_s| / (h tau_0)) (Eyring; Johnson & Tevaarwerk 1977) on the liquid
+fraction theta outside the real contact area, plus the asperity shear tau_0 a_a + m p_a of
+Greenwood-Tripp (as the averaged Reynolds film, Teodorescu et al. 2005 eq. 8).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+from scipy.linalg import toeplitz
+
+from camtrain.formulas.film_line import moes_1992
+from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
+
+from .asperity import (
+    asperity_area_fraction,
+    asperity_pressure,
+    asperity_pressure_coefficient,
+    gt_function,
+)
+from .ehl_elastic import ElasticKernel, influence_row
+from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
+from .ehl_oil import Oil, ScaledOil
+from .ehl_transient_system import CAVITATION, StepSystem
+
+__all__ = ["CycleContact", "CycleResolution", "EHLCycle", "march_ehl_cycle", "MARCHES"]
+
+MARCHES = ("bdf2", "implicit_euler")
+CHORD_CONTRACTION = 0.5
+RIGID_LENGTHS = 20.0
+
+
+@dataclass(frozen=True)
+class CycleContact:
+    """The cam contact over the march: per-step arrays (time t [s], load per unit length w
+    [N/m], radius R [m], signed mean entrainment u [m/s], sliding u_s [m/s]) and constants
+    (E_r [Pa], width [m], oil, roughness sigma [m] (0: smooth), Greenwood-Tripp zeta beta
+    sigma and sigma/beta, Eyring stress tau_0 [Pa], boundary shear coefficient m)."""
+
+    t: np.ndarray
+    w: np.ndarray
+    R: np.ndarray
+    u: np.ndarray
+    u_s: np.ndarray
+    E_r: float
+    width: float
+    oil: Oil
+    sigma: float = 0.0
+    zeta_beta_sigma: float = 0.04
+    sigma_over_beta: float = 1e-3
+    eyring_stress: float = 2e6
+    boundary_shear: float = 0.17
+
+
+@dataclass(frozen=True)
+class CycleResolution:
+    """Knobs: nodes, inlet (half domain in Hertz half-widths), Newton tolerance (max scaled
+    residual), march (``bdf2`` or ``implicit_euler``), cavitation, wedge scheme, map_nodes
+    (positions kept per angle in the film map)."""
+
+    nodes: int = 512
+    inlet: float = 4.5
+    tolerance: float = 1e-6
+    march: str = "bdf2"
+    cavitation: str = "elrod_adams"
+    scheme: str = "upwind2"
+    max_iterations: int = 40
+    map_nodes: int = 64
+
+    def __post_init__(self):
+        if self.march not in MARCHES:
+            raise ValueError(f"march {self.march!r}: expected one of {MARCHES}")
+        if self.cavitation not in CAVITATION:
+            raise ValueError(f"cavitation {self.cavitation!r}: expected one of {CAVITATION}")
+        if self.nodes < 32:
+            raise ValueError(f"nodes = {self.nodes}: expected at least 32")
+
+
+@dataclass
+class EHLCycle:
+    """The marched cycle, per step (NaN where unloaded): central and minimum film [m], peak
+    pressure [Pa], Hertz pressure [Pa], friction [N] (fluid and asperity parts), asperity
+    share of the load [-], peak asperity pressure [Pa], mass-balance error [-], Newton iterations, the film map (x [m],
+    h [m], p [Pa] at ``map_nodes`` positions per step); LU factorisations, period error."""
+
+    h_central: np.ndarray
+    h_min: np.ndarray
+    p_max: np.ndarray
+    p_hertz: np.ndarray
+    fluid_friction: np.ndarray
+    asperity_friction: np.ndarray
+    asperity_share: np.ndarray
+    asperity_pressure_max: np.ndarray
+    mass_error: np.ndarray
+    iterations: np.ndarray
+    map_x: np.ndarray
+    map_h: np.ndarray
+    map_p: np.ndarray
+    factorisations: int = 0
+    period_error: float = math.nan
+    split_steps: int = 0
+    restarts: list = field(default_factory=list)   #: steps restarted from the steady solution
+
+    @property
+    def friction(self) -> np.ndarray:
+        return self.fluid_friction + self.asperity_friction
+
+
+class _UnitKernel:
+    """The influence row, spectrum and dense matrix of unit spacing; a spacing dx scales them."""
+
+    def __init__(self, n: int):
+        self.unit = ElasticKernel.of_grid(n, 1.0)
+        self.dense1 = -toeplitz(influence_row(n, 1.0)) / np.pi
+
+    def at(self, dx: float):
+        k = self.unit
+        return (ElasticKernel(k.n, dx, dx * k.row, dx * k.spectrum, k.length),
+                dx * self.dense1)
+
+
+@dataclass
+class _State:
+    """What a step hands to the next (physical units, unmirrored)."""
+
+    x: np.ndarray
+    s: np.ndarray
+    q: np.ndarray          #: film content rho theta h [m]
+    R: float
+    p_h: float
+    h_c: float
+    q_old: np.ndarray | None = None
+    x_old: np.ndarray | None = None
+    R_old: float = math.nan
+
+
+def _content_on(x, x_from, q_from, R_from):
+    """q (film content [m]) of grid x_from taken to x; the flooded rigid gap continues it."""
+    q = np.interp(x, x_from, q_from)
+    lo, hi = x < x_from[0], x > x_from[-1]
+    q[lo] = q_from[0] + (x[lo] ** 2 - x_from[0] ** 2) / (2 * R_from)
+    q[hi] = q_from[-1] + (x[hi] ** 2 - x_from[-1] ** 2) / (2 * R_from)
+    return q
+
+
+class _Marcher:
+    def __init__(self, contact: CycleContact, res: CycleResolution):
+        self.c, self.res = contact, res
+        self.kernel = _UnitKernel(res.nodes)
+        self.lu = None
+        self.factorisations = 0
+        self.split_steps = 0
+        rough = contact.sigma > 0.0
+        self.a_coef = (asperity_pressure_coefficient(contact.E_r, contact.zeta_beta_sigma,
+                                                     contact.sigma_over_beta) if rough else 0.0)
+
+    # ----------------------------------------------------------------- one step
+    def system(self, w, R, u, dt, a0, state: _State | None, steady=False):
+        c, res = self.c, self.res
+        b = float(hertz_line_half_width(w, R, c.E_r))
+        p_h = float(hertz_line_max_pressure(w, R, c.E_r))
+        h_est = self._moes(w, R, abs(u))      # inputs only: equal inputs, equal grids
+        half = max(res.inlet, RIGID_LENGTHS * math.sqrt(2.0 * R * h_est) / b)
+        X = np.linspace(-half, half, res.nodes)
+        kernel, dense = self.kernel.at(X[1] - X[0])
+        x = X * b
+        scale = R / b**2
+        if steady or state is None:
+            Q_hist, c_t = np.zeros_like(X), 0.0
+        else:
+            Q_n = _content_on(x, state.x, state.q, state.R) * scale
+            Q_hist = Q_n
+            if a0 != 1.0:
+                Q_m = _content_on(x, state.x_old, state.q_old, state.R_old) * scale
+                Q_hist = 2.0 * Q_n - 0.5 * Q_m
+            c_t = b / dt
+        mirror = u < 0.0
+        if mirror:
+            Q_hist = Q_hist[::-1].copy()
+        lam = 12.0 * c.oil.eta0 * 1.0 * R**2 / (b**3 * p_h)
+        asperity = None
+        if self.a_coef > 0.0:
+            sig_H = c.sigma * scale
+
+            def asperity(H, sig_H=sig_H, p_h=p_h):
+                lam_ = np.maximum(H / sig_H, -3.9)     # an iterate may pass through H < 0
+                A = self.a_coef * gt_function(lam_, 2.5) / p_h
+                dA = -2.5 * self.a_coef * gt_function(lam_, 1.5) / (p_h * sig_H)  # F_n' = -n F_n-1
+                return A, dA
+        sysm = StepSystem(X, kernel, dense, ScaledOil(c.oil, p_h), lam, abs(u), c_t, a0,
+                          Q_hist, res.scheme, res.cavitation, asperity,
+                          smoothing=2.0 * math.sqrt(res.tolerance))
+        return sysm, b, p_h, x, mirror
+
+    def _moes(self, w, R, u):
+        c = self.c
+        u = max(u, 1e-3)
+        return float(moes_1992(w, R, u, c.oil.eta0, c.oil.alpha, c.E_r))
+
+    def guess(self, sysm, x, p_h, b, R, mirror, state: _State):
+        s = np.interp(x, state.x, state.s, left=0.0, right=0.0)
+        s = np.where(s > 0.0, s * state.p_h / p_h, s)
+        s[[0, -1]] = 0.0
+        if mirror:
+            s = s[::-1].copy()
+        H_c = state.h_c * R / b**2
+        V0 = np.interp(0.0, sysm.X, sysm.kernel.deflection(np.maximum(s, 0.0)))
+        return s, H_c - V0
+
+    def newton(self, sysm: StepSystem, s, H0):
+        """(s, H0, fields, iterations, converged): semismooth Newton, backtracking on the
+        residual norm; where a fresh direction gives no descent (a node on the kink between the
+        pressure and the film-fraction branch) the full step is taken (non-monotone)."""
+        tol = self.res.tolerance
+        f = sysm.fields(s, H0, np.zeros_like(s))
+        A_lag = f.A
+        sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
+        F, f = sysm.residual(s, H0, A_lag)
+        norm = np.abs(F).max()
+        for it in range(1, self.res.max_iterations + 1):
+            fresh = self.lu is None
+            if fresh:
+                self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
+                self.factorisations += 1
+            step = sla.lu_solve(self.lu, -F, check_finite=False)
+            s_new, H0_new, F_new, f_new, norm_new, t = self._damped(sysm, s, H0, step, norm,
+                                                                    fresh, A_lag)
+            if not fresh and not norm_new < CHORD_CONTRACTION * norm:
+                self.lu = None
+                continue
+            s, H0, F, f, norm = s_new, H0_new, F_new, f_new, norm_new
+            lag = float(np.abs(f.A - A_lag).max())
+            if lag > 0.0:
+                A_lag = f.A
+                F, f = sysm.residual(s, H0, A_lag)
+                norm = np.abs(F).max()
+            if norm < tol and lag < tol:
+                return s, H0, f, it, True
+            if t < 1.0:
+                self.lu = None
+        return s, H0, f, self.res.max_iterations, False
+
+    def _damped(self, sysm, s, H0, step, norm, backtrack, A_lag):
+        low = 0.0 if sysm.cavitation == "reynolds" else -1.0
+        t = 1.0
+        while True:
+            s_new = s.copy()
+            s_new[1:-1] = np.maximum(s[1:-1] + t * step[:-1], low)
+            H0_new = H0 + t * step[-1]
+            F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
+            norm_new = np.abs(F_new).max()
+            good = f_new.H.min() > 0 and norm_new < (1.0 - 1e-4 * t) * norm
+            if good or not backtrack:
+                return s_new, H0_new, F_new, f_new, norm_new, t
+            if t < 1e-3:             # no descent: the full step (see newton)
+                t = 1.0
+                s_new = s.copy()
+                s_new[1:-1] = np.maximum(s[1:-1] + step[:-1], low)
+                H0_new = H0 + step[-1]
+                F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
+                if not f_new.H.min() > 0:
+                    return s, H0, F_new, f_new, norm, 0.0
+                return s_new, H0_new, F_new, f_new, np.abs(F_new).max(), 0.5
+            t *= 0.5
+
+    # ----------------------------------------------------------------- march
+    def steady_start(self, k: int):
+        """The steady solution at step k: the steady solver's pressure (Reynolds exit) as the
+        guess of this problem's own steady step (its cavitation, no time term)."""
+        c = self.c
+        w, R, u = float(c.w[k]), float(c.R[k]), float(c.u[k])
+        sysm, b, p_h, x, mirror = self.system(w, R, u, 1.0, 1.0, None, steady=True)
+        try:
+            line = LineContact(w, R, c.E_r, abs(u), abs(u), c.oil)
+            sol = solve_ehl_line(line, EHLResolution(nodes=max(self.res.nodes, 256)))
+            s = np.interp(sysm.X, sol.x / b, sol.p / p_h, left=0.0, right=0.0)
+            H_c = sol.h_central * R / b**2
+        except (NotConverged, ValueError):
+            s = np.sqrt(np.maximum(1.0 - sysm.X**2, 0.0))
+            H_c = self._moes(w, R, abs(u)) * R / b**2
+        s[[0, -1]] = 0.0
+        H0 = H_c - np.interp(0.0, sysm.X, sysm.kernel.deflection(s))
+        s, H0, f, its, ok = self.newton(sysm, s, H0)
+        if not ok:
+            raise NotConverged(f"transient EHL: no steady solution at the start (step {k})")
+        return self._state(sysm, f, s, b, p_h, R, x, mirror, None), f, sysm, mirror, b, p_h, its
+
+    def _state(self, sysm, f, s, b, p_h, R, x, mirror, prev: _State | None) -> _State:
+        flip = (lambda a: a[::-1].copy()) if mirror else (lambda a: a)
+        H = flip(f.H)
+        h = H * b**2 / R
+        q = flip(f.Q) * b**2 / R
+        st = _State(x, flip(s), q, R, p_h, float(np.interp(0.0, x, h)))
+        if prev is not None:
+            st.q_old, st.x_old, st.R_old = prev.q, prev.x, prev.R
+        return st
+
+    def step(self, k: int, state: _State, dt: float, bdf: bool, depth: int = 0):
+        """Solve step k from ``state`` over dt; returns (state, fields, system, mirror, b,
+        p_h, iterations)."""
+        c = self.c
+        w, R, u = float(c.w[k]), float(c.R[k]), float(c.u[k])
+        a0 = 1.5 if bdf and state.q_old is not None else 1.0
+        sysm, b, p_h, x, mirror = self.system(w, R, u, dt, a0, state)
+        s, H0 = self.guess(sysm, x, p_h, b, R, mirror, state)
+        s, H0, f, its, ok = self.newton(sysm, s, H0)
+        if ok:
+            return self._state(sysm, f, s, b, p_h, R, x, mirror, state), f, sysm, mirror, \
+                b, p_h, its
+        if depth >= 3:
+            raise NotConverged(f"transient EHL: Newton did not converge at t = {c.t[k]:.6g} s "
+                               f"(w = {w:.4g} N/m, R = {R:.4g} m, u = {u:.4g} m/s) after {its} "
+                               f"iterations, step split {depth} times")
+        self.split_steps += 1
+        self.lu = None
+        half = self._midpoint(k)
+        mid, *_ = half.step(1, state, 0.5 * dt, False, depth + 1)
+        self.factorisations += half.factorisations
+        self.split_steps += half.split_steps
+        mid.q_old = None
+        return self.step(k, mid, 0.5 * dt, False, depth + 1)
+
+    def _midpoint(self, k: int) -> _Marcher:
+        """A marcher of two steps: step k-1 and the inputs halfway to step k."""
+        c = self.c
+        j = k - 1
+        mid = {n: np.array([getattr(c, n)[j], 0.5 * (getattr(c, n)[j] + getattr(c, n)[k])])
+               for n in ("t", "w", "R", "u", "u_s")}
+        sub = _Marcher.__new__(_Marcher)
+        sub.__dict__.update(self.__dict__)
+        sub.c = CycleContact(**{**c.__dict__, **mid})
+        sub.lu, sub.factorisations, sub.split_steps = None, 0, 0
+        return sub
+
+
+def _friction(c: CycleContact, k, f, sysm, b, p_h, R, coef):
+    """(fluid, asperity) friction [N] of a solved step (module docstring)."""
+    h = np.maximum(f.H, 1e-300) * b**2 / R
+    x = sysm.X * b
+    log_eta, _ = sysm.oil.log_viscosity(f.P)
+    eta = c.oil.eta0 * np.exp(log_eta)
+    rate = abs(float(c.u_s[k])) / h
+    tau = eta * rate
+    if c.eyring_stress > 0.0:
+        tau = c.eyring_stress * np.arcsinh(tau / c.eyring_stress)
+    if c.sigma > 0.0:
+        aa = asperity_area_fraction(h, c.sigma, c.zeta_beta_sigma)
+        pa = asperity_pressure(h, c.sigma, coef)
+    else:
+        aa = pa = np.zeros_like(h)
+    fluid = np.trapezoid(tau * f.theta * (1.0 - aa), x)
+    boundary = np.trapezoid(c.eyring_stress * aa + c.boundary_shear * pa, x)
+    return c.width * float(fluid), c.width * float(boundary)
+
+
+def march_ehl_cycle(contact: CycleContact,
+                    resolution: CycleResolution = CycleResolution()) -> EHLCycle:
+    """March the transient EHL contact over one period of steps (module docstring).
+
+    Steps with w <= 0 are unloaded (NaN outputs; the next loaded step starts again from its
+    steady solution). The march starts at the loaded step of largest |u| among the first
+    loaded run of steps, so that its steady solution exists."""
+    c = contact
+    n = c.t.size
+    period = c.t[-1] - c.t[0] + (c.t[-1] - c.t[-2])
+    out = _empty(n, resolution.map_nodes)
+    m = _Marcher(c, resolution)
+    loaded = c.w > 0.0
+    if not np.any(loaded):
+        return out
+    start = _start_index(c, loaded)
+    order = [(start + j) % n for j in range(n + 1)]
+    state, first = None, math.nan
+    for j, k in enumerate(order):
+        if not loaded[k]:
+            state = None
+            continue
+        if state is None:
+            state, f, sysm, mirror, b, p_h, its = m.steady_start(k)
+        else:
+            dt = c.t[k] - c.t[order[j - 1]]
+            if dt <= 0.0:
+                dt += period
+            try:
+                state, f, sysm, mirror, b, p_h, its = m.step(k, state, dt,
+                                                             resolution.march == "bdf2")
+            except NotConverged:    # an input jump the march cannot follow: steady restart
+                m.lu = None
+                out.restarts.append(k)
+                state, f, sysm, mirror, b, p_h, its = m.steady_start(k)
+        if j == n:
+            first = out.h_central[k]
+        _record(out, k, c, state, f, sysm, mirror, b, p_h, its, m.a_coef)
+    out.factorisations, out.split_steps = m.factorisations, m.split_steps
+    out.period_error = float(abs(out.h_central[start] - first) / first) if first else math.nan
+    return out
+
+
+def _start_index(c: CycleContact, loaded) -> int:
+    """The first step of the march: where a loaded stretch begins (the first such stretch), or
+    step 0 when the contact is loaded throughout; moved on within the stretch to the step of
+    largest |u| if the entrainment there is below 5 % of the stretch's largest (a steady start
+    needs entrainment)."""
+    n = c.t.size
+    begins = np.flatnonzero(loaded & ~np.roll(loaded, 1))
+    k0 = int(begins[0]) if begins.size else 0
+    stretch = [k0]
+    while len(stretch) < n and loaded[(stretch[-1] + 1) % n] and (stretch[-1] + 1) % n != k0:
+        stretch.append((stretch[-1] + 1) % n)
+    u = np.abs(c.u[stretch])
+    return k0 if u[0] > 0.05 * u.max() else int(stretch[int(np.argmax(u))])
+
+
+def _empty(n, nodes) -> EHLCycle:
+    def nan():
+        return np.full(n, np.nan)
+    return EHLCycle(nan(), nan(), nan(), nan(), nan(), nan(), nan(), nan(), nan(),
+                    np.zeros(n, int),
+                    np.full((n, nodes), np.nan), np.full((n, nodes), np.nan),
+                    np.full((n, nodes), np.nan))
+
+
+def _record(out: EHLCycle, k, c, state: _State, f, sysm, mirror, b, p_h, its, coef):
+    flip = (lambda a: a[::-1]) if mirror else (lambda a: a)
+    R = float(c.R[k])
+    h = flip(f.H) * b**2 / R
+    p = flip(f.P) * p_h
+    out.h_central[k] = state.h_c
+    out.h_min[k] = float(h.min())
+    out.p_max[k] = float(p.max())
+    out.p_hertz[k] = p_h
+    total = float(f.P.sum() + f.A.sum())
+    out.asperity_share[k] = float(f.A.sum()) / total if total > 0 else 0.0
+    out.asperity_pressure_max[k] = float(f.A.max()) * p_h
+    out.fluid_friction[k], out.asperity_friction[k] = _friction(c, k, f, sysm, b, p_h, R, coef)
+    out.mass_error[k] = sysm.mass_error(f) if sysm.c_t > 0 else 0.0
+    out.iterations[k] = its
+    pick = np.linspace(0, h.size - 1, out.map_x.shape[1]).round().astype(int)
+    out.map_x[k], out.map_h[k], out.map_p[k] = state.x[pick], h[pick], p[pick]
