@@ -6,10 +6,12 @@ by semismooth Newton in (s, H0) on a grid of its own:
 
 * **grid**: ``nodes`` points, uniform and symmetric, on |x| <= L with L = ``inlet`` Hertz
   half-widths of the step, widened to 20 rigid lengths sqrt(2 R h) where the contact is light
-  (the steady solver's rule, h Moes' film of the step's inputs); symmetric because the inlet changes side at each entrainment
-  reversal. The grid follows the load and radius from step to step; the film content rho theta h
-  of the previous steps is interpolated onto it (linear; outside the old domain the flooded
-  rigid gap continues it).
+  (the steady solver's rule, h the larger of Moes' film of the step's inputs and the
+  previous step's central film); symmetric because the inlet changes side at each entrainment
+  reversal. The grid stays where it was while its length is within 25 % of what the step asks
+  for, and follows the load and radius otherwise; the film content rho theta h of the previous
+  steps is then interpolated onto it (linear; outside the old domain the flooded rigid gap
+  continues it).
 * **deflection**: the FFT convolution of :mod:`.ehl_elastic` on every step's spacing (the
   kernel of a spacing dx is dx times the unit kernel plus a constant, which H0 absorbs).
 * **time**: backward Euler or BDF2 (``march``) in time t = theta/omega, from the steady solution
@@ -31,6 +33,7 @@ Greenwood-Tripp (as the averaged Reynolds film, Teodorescu et al. 2005 eq. 8).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -56,6 +59,12 @@ __all__ = ["CycleContact", "CycleResolution", "EHLCycle", "march_ehl_cycle", "MA
 MARCHES = ("bdf2", "implicit_euler")
 CHORD_CONTRACTION = 0.5
 RIGID_LENGTHS = 20.0
+#: the previous step's domain is kept while it is within this factor of the one the step asks
+#: for (the nodes stay where they were: the film content needs no interpolation)
+GRID_SLACK = 1.25
+#: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
+#: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
+SMOOTHING = 2.0
 
 
 @dataclass(frozen=True)
@@ -187,9 +196,13 @@ class _Marcher:
         c, res = self.c, self.res
         b = float(hertz_line_half_width(w, R, c.E_r))
         p_h = float(hertz_line_max_pressure(w, R, c.E_r))
-        h_est = self._moes(w, R, abs(u))      # inputs only: equal inputs, equal grids
-        half = max(res.inlet, RIGID_LENGTHS * math.sqrt(2.0 * R * h_est) / b)
-        X = np.linspace(-half, half, res.nodes)
+        h_est = self._moes(w, R, abs(u))
+        if state is not None:                 # a squeeze film may be far thicker than Moes'
+            h_est = max(h_est, state.h_c)
+        L = b * max(res.inlet, RIGID_LENGTHS * math.sqrt(2.0 * R * h_est) / b)
+        if state is not None and L / GRID_SLACK <= state.x[-1] <= L * GRID_SLACK:
+            L = float(state.x[-1])        # the same nodes: no interpolation of the content
+        X = np.linspace(-L / b, L / b, res.nodes)
         kernel, dense = self.kernel.at(X[1] - X[0])
         x = X * b
         scale = R / b**2
@@ -217,8 +230,19 @@ class _Marcher:
                 return A, dA
         sysm = StepSystem(X, kernel, dense, ScaledOil(c.oil, p_h), lam, abs(u), c_t, a0,
                           Q_hist, res.scheme, res.cavitation, asperity,
-                          smoothing=2.0 * math.sqrt(res.tolerance))
+                          pressure_scale=self._pressure_scale(state, p_h))
+        sysm.smoothing = SMOOTHING * math.sqrt(res.tolerance) * sysm.pressure_scale
         return sysm, b, p_h, x, mirror
+
+    @staticmethod
+    def _pressure_scale(state, p_h) -> float:
+        """The pressure scale of the tolerance and the smoothing, in p_h: 1 for an elastic
+        contact, the previous step's peak pressure for a light (rigid) one, whose pressures are
+        far below Hertz (a tolerance in units of p_h would be loose there)."""
+        if state is None:
+            return 1.0
+        peak = float(np.max(state.s)) * state.p_h / p_h
+        return min(1.0, max(peak, 1e-6))
 
     def _moes(self, w, R, u):
         c = self.c
@@ -239,7 +263,7 @@ class _Marcher:
         """(s, H0, fields, iterations, converged): semismooth Newton, backtracking on the
         residual norm; where a fresh direction gives no descent (a node on the kink between the
         pressure and the film-fraction branch) the full step is taken (non-monotone)."""
-        tol = self.res.tolerance
+        tol = self.res.tolerance * sysm.pressure_scale
         f = sysm.fields(s, H0, np.zeros_like(s))
         A_lag = f.A
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
@@ -248,9 +272,16 @@ class _Marcher:
         for it in range(1, self.res.max_iterations + 1):
             fresh = self.lu is None
             if fresh:
-                self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
+                with warnings.catch_warnings():     # singular: a non-finite step, handled
+                    warnings.simplefilter("ignore", sla.LinAlgWarning)
+                    self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
                 self.factorisations += 1
             step = sla.lu_solve(self.lu, -F, check_finite=False)
+            if not np.all(np.isfinite(step)):
+                if fresh:
+                    break
+                self.lu = None
+                continue
             s_new, H0_new, F_new, f_new, norm_new, t = self._damped(sysm, s, H0, step, norm,
                                                                     fresh, A_lag)
             if not fresh and not norm_new < CHORD_CONTRACTION * norm:
@@ -269,6 +300,12 @@ class _Marcher:
         return s, H0, f, self.res.max_iterations, False
 
     def _damped(self, sysm, s, H0, step, norm, backtrack, A_lag):
+        """The step scaled by t = 1, 1/2, ... until the film stays positive and the residual
+        falls (a trial that overflows is not good; its warnings are silenced)."""
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            return self._damped_trials(sysm, s, H0, step, norm, backtrack, A_lag)
+
+    def _damped_trials(self, sysm, s, H0, step, norm, backtrack, A_lag):
         low = 0.0 if sysm.cavitation == "reynolds" else -1.0
         t = 1.0
         while True:
@@ -277,7 +314,7 @@ class _Marcher:
             H0_new = H0 + t * step[-1]
             F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
             norm_new = np.abs(F_new).max()
-            good = f_new.H.min() > 0 and norm_new < (1.0 - 1e-4 * t) * norm
+            good = f_new.H.min() > 0 and norm_new < (1.0 - 1e-4 * t) * norm  # NaN: not good
             if good or not backtrack:
                 return s_new, H0_new, F_new, f_new, norm_new, t
             if t < 1e-3:             # no descent: the full step (see newton)
@@ -286,7 +323,7 @@ class _Marcher:
                 s_new[1:-1] = np.maximum(s[1:-1] + step[:-1], low)
                 H0_new = H0 + step[-1]
                 F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
-                if not f_new.H.min() > 0:
+                if not (f_new.H.min() > 0 and np.all(np.isfinite(F_new))):
                     return s, H0, F_new, f_new, norm, 0.0
                 return s_new, H0_new, F_new, f_new, np.abs(F_new).max(), 0.5
             t *= 0.5
@@ -312,6 +349,16 @@ class _Marcher:
         if not ok:
             raise NotConverged(f"transient EHL: no steady solution at the start (step {k})")
         return self._state(sysm, f, s, b, p_h, R, x, mirror, None), f, sysm, mirror, b, p_h, its
+
+    def rigid_start(self, h0: float) -> _State:
+        """A rigid gap h0 + x^2/(2R) at step 0, flooded, without pressure."""
+        c = self.c
+        w, R = float(c.w[0]), float(c.R[0])
+        b = float(hertz_line_half_width(w, R, c.E_r))
+        half = max(self.res.inlet, RIGID_LENGTHS * math.sqrt(2.0 * R * h0) / b)
+        x = np.linspace(-half, half, self.res.nodes) * b
+        return _State(x, np.zeros_like(x), h0 + x**2 / (2.0 * R), R,
+                      float(hertz_line_max_pressure(w, R, c.E_r)), h0)
 
     def _state(self, sysm, f, s, b, p_h, R, x, mirror, prev: _State | None) -> _State:
         flip = (lambda a: a[::-1].copy()) if mirror else (lambda a: a)
@@ -381,13 +428,15 @@ def _friction(c: CycleContact, k, f, sysm, b, p_h, R, coef):
     return c.width * float(fluid), c.width * float(boundary)
 
 
-def march_ehl_cycle(contact: CycleContact,
-                    resolution: CycleResolution = CycleResolution()) -> EHLCycle:
+def march_ehl_cycle(contact: CycleContact, resolution: CycleResolution = CycleResolution(),
+                    h_start: float | None = None) -> EHLCycle:
     """March the transient EHL contact over one period of steps (module docstring).
 
     Steps with w <= 0 are unloaded (NaN outputs; the next loaded step starts again from its
     steady solution). The march starts at the loaded step of largest |u| among the first
-    loaded run of steps, so that its steady solution exists."""
+    loaded run of steps, so that its steady solution exists. ``h_start`` [m]: instead, march
+    once from t[0] (not periodic) from a rigid gap h_start + x^2/(2R) without pressure
+    (e.g. a pure squeeze, where no steady solution exists)."""
     c = contact
     n = c.t.size
     period = c.t[-1] - c.t[0] + (c.t[-1] - c.t[-2])
@@ -396,12 +445,14 @@ def march_ehl_cycle(contact: CycleContact,
     loaded = c.w > 0.0
     if not np.any(loaded):
         return out
-    start = _start_index(c, loaded)
-    order = [(start + j) % n for j in range(n + 1)]
-    state, first = None, math.nan
+    start = 0 if h_start is not None else _start_index(c, loaded)
+    order = [(start + j) % n for j in range(n if h_start is not None else n + 1)]
+    state, first = (None if h_start is None else m.rigid_start(h_start)), math.nan
+    if state is not None:
+        out.h_central[0] = out.h_min[0] = h_start
     for j, k in enumerate(order):
-        if not loaded[k]:
-            state = None
+        if not loaded[k] or (j == 0 and h_start is not None):
+            state = None if not loaded[k] else state
             continue
         if state is None:
             state, f, sysm, mirror, b, p_h, its = m.steady_start(k)
@@ -413,6 +464,8 @@ def march_ehl_cycle(contact: CycleContact,
                 state, f, sysm, mirror, b, p_h, its = m.step(k, state, dt,
                                                              resolution.march == "bdf2")
             except NotConverged:    # an input jump the march cannot follow: steady restart
+                if h_start is not None:
+                    raise
                 m.lu = None
                 out.restarts.append(k)
                 state, f, sysm, mirror, b, p_h, its = m.steady_start(k)
@@ -420,7 +473,8 @@ def march_ehl_cycle(contact: CycleContact,
             first = out.h_central[k]
         _record(out, k, c, state, f, sysm, mirror, b, p_h, its, m.a_coef)
     out.factorisations, out.split_steps = m.factorisations, m.split_steps
-    out.period_error = float(abs(out.h_central[start] - first) / first) if first else math.nan
+    if h_start is None:
+        out.period_error = float(abs(out.h_central[start] - first) / first)
     return out
 
 

@@ -20,7 +20,10 @@ Cavitation (``elrod_adams``, default): one unknown s per node, P = max(s, 0) and
 fraction theta = 1 + min(s, 0) (Elrod & Adams 1974, the universal variable of Elrod 1981; as
 a complementarity problem P >= 0, 1 - theta >= 0, P (1 - theta) = 0 in Giacopini et al. 2010).
 The cavitated rows transport the partial film: mass is conserved through rupture and
-re-formation. ``reynolds``: theta = 1, and the rows are min(P, s G) = 0 (the steady solver's
+re-formation. The kink at s = 0 is smoothed so that Newton converges where nodes cross it
+(without, the iteration cycles at the rupture): P = (s + r - delta)/2, theta = 1 - (r - s -
+delta)/2, r = sqrt(s^2 + delta^2), exact at s = 0 and within delta/2 of the sharp law
+elsewhere; delta = 2 sqrt(tolerance) times the pressure scale (2e-3 at the default). ``reynolds``: theta = 1, and the rows are min(P, s G) = 0 (the steady solver's
 Reynolds exit condition), which does not conserve mass in the cavitated zone.
 
 Asperities (Greenwood & Tripp 1970-71, :mod:`.asperity`): their nominal pressure A(H) carries
@@ -75,7 +78,8 @@ class StepSystem:
     cavitation: str = "elrod_adams"
     asperity: object = None   #: callable H -> (A, dA/dH), or None (smooth)
     scale: np.ndarray | None = None   #: row scale held fixed (None: from each iterate)
-    smoothing: float = 2e-3   #: delta of the complementarity P (1 - theta) = delta^2 / 4
+    smoothing: float = 2e-4   #: delta of the smoothed complementarity (module docstring)
+    pressure_scale: float = 1.0   #: the solution's pressure scale [p_h] (tolerances)
 
     @property
     def dx(self) -> float:
@@ -86,8 +90,10 @@ class StepSystem:
         if self.cavitation == "reynolds":
             return np.maximum(s, 0.0), np.ones_like(s), (s > 0.0).astype(float), \
                 np.zeros_like(s)
-        r = np.sqrt(s * s + self.smoothing**2)
-        return 0.5 * (s + r), 1.0 - 0.5 * (r - s), 0.5 * (1.0 + s / r), 0.5 * (1.0 - s / r)
+        d = self.smoothing
+        r = np.sqrt(s * s + d * d)
+        return (0.5 * (s + r - d), 1.0 - 0.5 * (r - s - d), 0.5 * (1.0 + s / r),
+                0.5 * (1.0 - s / r))
 
     def fields(self, s: np.ndarray, H0: float, A_lag: np.ndarray) -> StepFields:
         P, theta, dP, dtheta = self.split(s)
