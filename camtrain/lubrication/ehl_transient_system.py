@@ -23,7 +23,8 @@ The cavitated rows transport the partial film: mass is conserved through rupture
 re-formation. The kink at s = 0 is smoothed so that Newton converges where nodes cross it
 (without, the iteration cycles at the rupture): P = (s + r - delta)/2, theta = 1 - (r - s -
 delta)/2, r = sqrt(s^2 + delta^2), exact at s = 0 and within delta/2 of the sharp law
-elsewhere; delta = 2 sqrt(tolerance) times the pressure scale (2e-3 at the default). ``reynolds``: theta = 1, and the rows are min(P, s G) = 0 (the steady solver's
+elsewhere; delta = 2 sqrt(tolerance) times the pressure scale (2e-3 at the default).
+``reynolds``: theta = 1, and the rows are min(P, s G) = 0 (the steady solver's
 Reynolds exit condition), which does not conserve mass in the cavitated zone.
 
 Asperities (Greenwood & Tripp 1970-71, :mod:`.asperity`): their nominal pressure A(H) carries
