@@ -28,6 +28,8 @@ GRID_SLACK = 1.25
 #: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
 #: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
 SMOOTHING = 2.0
+#: share of the change of the asperity pressure taken into its deflection per Newton iterate
+ASPERITY_RELAXATION = 0.5
 
 
 class _UnitKernel:
@@ -152,8 +154,8 @@ class _Marcher:
                 continue
             s, H0, F, f, norm = s_new, H0_new, F_new, f_new, norm_new
             lag = float(np.abs(f.A - A_lag).max())
-            if lag > 0.0:
-                A_lag = f.A
+            if lag > 0.0:              # under-relaxed: the asperity deflection lags
+                A_lag = A_lag + ASPERITY_RELAXATION * (f.A - A_lag)
                 F, f = sysm.residual(s, H0, A_lag)
                 norm = np.abs(F).max()
             if norm < tol and lag < tol:
