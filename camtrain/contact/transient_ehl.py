@@ -69,6 +69,7 @@ def _check_geometry(kin, load, theta):
 
 def ehl_film(contact, kin, load=None) -> FilmField:
     """The transient elastic film of one pair over the cycle (module docstring)."""
+    from camtrain.lubrication.ehl_line import NotConverged
     from camtrain.lubrication.ehl_oil import Oil
     from camtrain.lubrication.ehl_transient import CycleContact, march_ehl_cycle
 
@@ -95,7 +96,13 @@ def ehl_film(contact, kin, load=None) -> FilmField:
         width=contact.width, oil=oil, sigma=lub.roughness,
         zeta_beta_sigma=trib.asperity_density_product, sigma_over_beta=trib.roughness_slope,
         eyring_stress=trib.eyring_stress, boundary_shear=trib.boundary_shear_coefficient)
-    cycle = march_ehl_cycle(cycle_contact, res)
+    try:
+        cycle = march_ehl_cycle(cycle_contact, res)
+    except NotConverged as exc:
+        raise field_error("solver.ehl_angle_step", f"the elastic film did not converge ({exc})",
+                          math.degrees(_knob(contact, "ehl_angle_step")),
+                          "a smaller solver.ehl_angle_step or other solver.ehl_nodes",
+                          "or tribology.film_model = averaged_reynolds") from None
     loaded = load > 0.0
 
     def on_run(v):

@@ -28,6 +28,8 @@ GRID_SLACK = 1.25
 #: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
 #: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
 SMOOTHING = 2.0
+#: a steady restart uses at least this share of the cycle's largest entrainment
+REVERSAL_FLOOR = 0.05
 #: share of the change of the asperity pressure taken into its deflection per Newton iterate
 ASPERITY_RELAXATION = 0.5
 
@@ -196,9 +198,14 @@ class _Marcher:
     # ----------------------------------------------------------------- march
     def steady_start(self, k: int):
         """The steady solution at step k: the steady solver's pressure (Reynolds exit) as the
-        guess of this problem's own steady step (its cavitation, no time term)."""
+        guess of this problem's own steady step (its cavitation, no time term). Where the
+        entrainment is below ``REVERSAL_FLOOR`` of the cycle's largest (a restart at a reversal,
+        where no steady film exists), the steady film at that floor, with u's sign."""
         c = self.c
         w, R, u = float(c.w[k]), float(c.R[k]), float(c.u[k])
+        floor = REVERSAL_FLOOR * float(np.abs(c.u).max())
+        if abs(u) < floor:
+            u = math.copysign(floor, u if u != 0.0 else 1.0)
         sysm, b, p_h, x, mirror = self.system(w, R, u, 1.0, 1.0, None, steady=True)
         try:
             line = LineContact(w, R, c.E_r, abs(u), abs(u), c.oil)
