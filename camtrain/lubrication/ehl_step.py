@@ -22,8 +22,9 @@ from .ehl_transient_system import StepSystem
 
 CHORD_CONTRACTION = 0.5
 RIGID_LENGTHS = 20.0
-#: the previous step's domain is kept while it is within this factor of the one the step asks
-#: for (the nodes stay where they were: the film content needs no interpolation)
+#: the domain's half length is rounded up to a power of this factor [m]: steps whose inputs
+#: differ a little share their nodes (the film content needs no interpolation), and equal inputs
+#: give equal grids whatever came before (the film does not depend on the march's path)
 GRID_SLACK = 1.25
 #: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
 #: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
@@ -67,8 +68,7 @@ class _Marcher:
         if state is not None:                 # a squeeze film may be far thicker than Moes'
             h_est = max(h_est, state.h_c)
         L = b * max(res.inlet, RIGID_LENGTHS * math.sqrt(2.0 * R * h_est) / b)
-        if state is not None and L / GRID_SLACK <= state.x[-1] <= L * GRID_SLACK:
-            L = float(state.x[-1])        # the same nodes: no interpolation of the content
+        L = GRID_SLACK ** math.ceil(math.log(L) / math.log(GRID_SLACK))
         X = np.linspace(-L / b, L / b, res.nodes)
         kernel, dense = self.kernel.at(X[1] - X[0])
         x = X * b
@@ -220,7 +220,20 @@ class _Marcher:
         s, H0, f, its, ok = self.newton(sysm, s, H0)
         if not ok:
             raise NotConverged(f"transient EHL: no steady solution at the start (step {k})")
-        return self._state(sysm, f, s, b, p_h, R, x, mirror, None), f, sysm, mirror, b, p_h, its
+        first = self._state(sysm, f, s, b, p_h, R, x, mirror, None)
+        first_system, first_mirror, first_b, first_p_h = sysm, mirror, b, p_h
+        # once more on the grid the march would take after this film (its domain follows the
+        # film): the start and the return to it then differ by the march, not by the grid
+        sysm, b, p_h, x, mirror = self.system(w, R, u, 1.0, 1.0, first, steady=True)
+        if np.array_equal(x, first.x):
+            return first, f, sysm, mirror, b, p_h, its
+        s2, H0_2 = self.guess(sysm, x, p_h, b, R, mirror, first)
+        s2, H0_2, f2, more, ok = self.newton(sysm, s2, H0_2)
+        if not ok:      # the first grid's solution stands (the march regrids at its 1st step)
+            self.lu = None
+            return first, f, first_system, first_mirror, first_b, first_p_h, its
+        return (self._state(sysm, f2, s2, b, p_h, R, x, mirror, None), f2, sysm, mirror, b,
+                p_h, its + more)
 
     def rigid_start(self, h0: float) -> _State:
         """A rigid gap h0 + x^2/(2R) at step 0, flooded, without pressure."""

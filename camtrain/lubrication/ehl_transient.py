@@ -8,10 +8,10 @@ by semismooth Newton in (s, H0) on a grid of its own:
   half-widths of the step, widened to 20 rigid lengths sqrt(2 R h) where the contact is light
   (the steady solver's rule, h the larger of Moes' film of the step's inputs and the
   previous step's central film); symmetric because the inlet changes side at each entrainment
-  reversal. The grid stays where it was while its length is within 25 % of what the step asks
-  for, and follows the load and radius otherwise; the film content rho theta h of the previous
-  steps is then interpolated onto it (linear; outside the old domain the flooded rigid gap
-  continues it).
+  reversal. L is rounded up to a power of 1.25 (in metres): neighbouring steps share their
+  nodes, and equal inputs give equal grids whatever came before; where L changes, the film
+  content rho theta h of the previous steps is interpolated onto the new grid (linear; outside
+  the old domain the flooded rigid gap continues it).
 * **deflection**: the FFT convolution of :mod:`.ehl_elastic` on every step's spacing (the
   kernel of a spacing dx is dx times the unit kernel plus a constant, which H0 absorbs).
 * **time**: backward Euler or BDF2 (``march``) in time t = theta/omega, from the steady solution

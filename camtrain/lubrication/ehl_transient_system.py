@@ -88,9 +88,8 @@ class StepSystem:
 
     def split(self, s: np.ndarray):
         """(P, theta, dP/ds, dtheta/ds) of s (module docstring)."""
-        if self.cavitation == "reynolds":
-            return np.maximum(s, 0.0), np.ones_like(s), (s > 0.0).astype(float), \
-                np.zeros_like(s)
+        if self.cavitation == "reynolds":       # s is the pressure, projected on s >= 0
+            return np.maximum(s, 0.0), np.ones_like(s), np.ones_like(s), np.zeros_like(s)
         d = self.smoothing
         r = np.sqrt(s * s + d * d)
         return (0.5 * (s + r - d), 1.0 - 0.5 * (r - s - d), 0.5 * (1.0 + s / r),
