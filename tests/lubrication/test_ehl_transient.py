@@ -145,7 +145,7 @@ def test_cycle_film_lies_within_the_formula_spread_where_quasi_steady():
     is still 12 % below),
     where 0.9 <= |u_m| <= 2 m/s and the inputs change slowly, the minimum film lies between
     Pan-Hamrock's and Dowson-Higginson's (5 % slack for the grid, measured at most 4 % at
-    case A between 256 and 512 points' neighbours). At the nose it is 6-9 % below Pan-Hamrock
+    case A between 256 and 512 points' neighbours). At the nose it is about 6 % below Pan-Hamrock
     at this grid (docs/ehl.md reports the nose and the reversals)."""
     from camtrain.formulas.film_line import dowson_higginson_1977, pan_hamrock_1989_min
 
