@@ -60,3 +60,76 @@ def test_bench_ehl_line_cost_against_points(benchmark):
     benchmark.extra_info["exponent"] = exponent
     benchmark.pedantic(solve_ehl_line, args=(CASE_A, EHLResolution(nodes=256)), rounds=1,
                        iterations=1)
+
+
+def goecmen_cycle(angles: int = 720, sigma: float = 0.05e-6):
+    """The Göçmen deck's contact over one revolution (flat follower, 1000 rpm, 20 mm wide),
+    smoother surfaces (sigma 0.05 um) than the deck's 0.65 um so that the film, not the
+    asperities, carries the load: the inputs of the elastic film march."""
+    from camtrain import api
+    from camtrain.contact.model import CamContact
+    from camtrain.lubrication.ehl_transient import CycleContact
+
+    deck = api.load_deck("decks/gocmen_table31.toml")
+    res = api.run(deck)
+    theta = res["cam_angle"]
+    grid = theta[0] + 2 * np.pi * np.arange(angles) / angles
+
+    def on_grid(name):
+        return np.interp(grid, theta, res[name], period=2 * np.pi)
+    omega = 1000 * 2 * np.pi / 60
+    E_r = float(CamContact.from_deck(deck.model).reduced_modulus)
+    return CycleContact((grid - grid[0]) / omega, on_grid("load") / 0.02, on_grid("radius_x"),
+                        on_grid("entrainment"), on_grid("sliding"), E_r, 0.02,
+                        Oil(0.014, 14.3e-9), sigma=sigma)
+
+
+def bare_steps(n: int, steps: int):
+    """Floor of a march: one bare Newton step (dense LU, FFT deflection) per angle."""
+    one = bare_newton_step(n)
+
+    def run():
+        for _ in range(steps):
+            one()
+    return run
+
+
+def test_bench_ehl_cam_cycle_512(benchmark):
+    """Target: a whole cam cycle at 0.5 deg steps on 512 points under 20 s of CPU."""
+    from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
+
+    contact = goecmen_cycle()
+    resolution = CycleResolution(nodes=512)
+    timing = paired(lambda: march_ehl_cycle(contact, resolution), bare_steps(512, 720),
+                    rounds=1, warmup=0)
+    record(benchmark, "elastic film, cam cycle 720 steps x 512 points / one bare Newton "
+           "step per angle", timing, "< 20 s CPU", cpu=True)
+    note("elastic film, cam cycle 720 x 512, CPU", f"{timing['cpu_subject_min']:.3g} s",
+         "< 20 s")
+    benchmark.pedantic(lambda: None, rounds=1, iterations=1)
+
+
+def test_bench_ehl_cycle_cost_against_points(benchmark):
+    """CPU time of 80 steps through the opening flank and the first entrainment reversal
+    (-52 .. -12 deg) at 128..1024 points, and the fitted exponent of n."""
+    from dataclasses import replace
+
+    from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
+
+    full = goecmen_cycle()
+    window = slice(256, 336)
+    part = replace(full, **{k: getattr(full, k)[window] for k in ("t", "w", "R", "u", "u_s")})
+    sizes, times = [128, 256, 512, 1024], []
+    for n in sizes:
+        res = CycleResolution(nodes=n)
+        timing = paired(lambda r=res: march_ehl_cycle(part, r), bare_steps(n, 80), rounds=1,
+                        warmup=0)
+        times.append(timing["cpu_subject_min"])
+        note(f"elastic film, 80 steps, {n} points, CPU",
+             f"{timing['cpu_subject_min']:.3g} s ({timing['cpu_ratio_min']:.2f} bare steps "
+             "per angle)")
+    exponent = np.polyfit(np.log(sizes), np.log(times), 1)[0]
+    note("elastic film march, cost ~ n^k", f"k = {exponent:.2f}",
+         "n log n (k ~ 1.1) needs matrix-free steps")
+    benchmark.extra_info["exponent"] = exponent
+    benchmark.pedantic(lambda: None, rounds=1, iterations=1)

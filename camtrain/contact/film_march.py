@@ -20,6 +20,12 @@ class FilmMarch:
     film_march: str = "implicit_euler"
     film_cycles_max: int = 6
     film_period_tolerance: float = 1e-6
+    # the elastic film (tribology.film_model = ehl; docs/ehl.md)
+    ehl_nodes: int = 512
+    ehl_inlet: float = 4.5
+    ehl_angle_step: float = 0.008726646259971648    #: 0.5 deg [rad]
+    ehl_tolerance: float = 1e-6
+    ehl_march: str = "bdf2"
 
 
 DEFAULTS = FilmMarch()

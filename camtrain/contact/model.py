@@ -92,8 +92,9 @@ class CamContact:
 def _contact_of(cls, deck, component: str) -> CamContact:
     d = pair_deck(deck, component)
     film_law = d.tribology.film_model
-    # the averaged Reynolds film solves the contact: its friction comes from that solution
-    friction_law = ("averaged_reynolds" if film_law == "averaged_reynolds"
+    # the averaged Reynolds and elastic films solve the contact: their friction comes from the
+    # same solution
+    friction_law = ("averaged_reynolds" if film_law in ("averaged_reynolds", "ehl")
                     else d.tribology.friction_model)
     return cls(reduced_modulus=modulus(d), width=d.cam.width, lubricant=d.lubricant,
                tribology=d.tribology, film_law=film_law, friction_law=friction_law,
@@ -138,11 +139,12 @@ def contact_friction(deck, kin, load) -> FrictionField:
 
 
 def _register_laws() -> None:
-    from camtrain.contact import film, friction, transient
+    from camtrain.contact import film, friction, transient, transient_ehl
 
     register_film_law("steady", film.steady_film)
     register_film_law("squeeze", transient.squeeze_film)
     register_film_law("averaged_reynolds", transient.averaged_reynolds_film)
+    register_film_law("ehl", transient_ehl.ehl_film)
     register_friction_law("averaged_reynolds", friction.film_solution_friction)
     for name in ("cap", "lambda", "lambda_cap"):
         register_friction_law(name, friction.ball_yang_friction)

@@ -205,6 +205,21 @@ class Solver:
     film_period_tolerance: float = quantity(
         "Cycle-to-cycle change of the film that ends the periodic march", "-", default=1e-6,
         gt=0, lt=0.1, applies="film_model = squeeze, averaged_reynolds")
+    # elastic (transient EHL) film, tribology.film_model = ehl; docs/ehl.md
+    ehl_nodes: int = quantity("Grid points across the elastic film's contact domain", "-",
+                              default=512, ge=32, le=16_384, applies="film_model = ehl")
+    ehl_inlet: float = quantity(
+        "Half length of the elastic film's domain in Hertz half widths (widened to 20 rigid "
+        "lengths sqrt(2 R h) where the contact is light)", "-", default=4.5, ge=1.5, le=100,
+        applies="film_model = ehl")
+    ehl_angle_step: float = quantity("Cam-angle step of the elastic film's time march", "deg",
+                                     default=0.5, gt=0, le=5, applies="film_model = ehl")
+    ehl_tolerance: float = quantity(
+        "Newton tolerance of the elastic film (largest scaled residual per step)", "-",
+        default=1e-6, gt=0, lt=0.01, applies="film_model = ehl")
+    ehl_march: Literal["bdf2", "implicit_euler"] = option(
+        "Time scheme of the elastic film: bdf2 (second order) or implicit_euler (first order)",
+        default="bdf2", applies="film_model = ehl")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -235,12 +250,23 @@ class Tribology:
         "viscosity at Hertz pressures)", default="barus")
     hertz: Literal["exact", "ball_1988"] = option(
         "Point-contact Hertz: exact ellipticity, or Ball's eq. 3.7", default="exact")
-    film_model: Literal["steady", "squeeze", "averaged_reynolds"] = option(
+    film_model: Literal["steady", "squeeze", "averaged_reynolds", "ehl"] = option(
         "Film of the cam contact: steady (closed-form EHL per angle), squeeze (Teodorescu et al. "
         "2005 film with the squeeze term, marched in cam angle), averaged_reynolds (Göçmen 2013 "
         "averaged Reynolds with squeeze, flow factors and Greenwood-Tripp asperities, marched in "
-        "cam angle; friction from the same solution); see docs/transient_film.md",
-        default="steady")
+        "cam angle; friction from the same solution), ehl (transient elastohydrodynamic line "
+        "contact with mass-conserving cavitation, marched in time; friction from the same "
+        "solution; docs/ehl.md); see docs/transient_film.md", default="steady")
+    ehl_cavitation: Literal["elrod_adams", "reynolds"] = option(
+        "Cavitation of the elastic film: elrod_adams (mass-conserving, Elrod & Adams 1974) or "
+        "reynolds (Reynolds exit condition, not mass-conserving)", default="elrod_adams",
+        applies="film_model = ehl")
+    ehl_viscosity: Literal["roelands", "barus"] = option(
+        "Pressure-viscosity law inside the elastic film: roelands (Roelands 1966, z matched to "
+        "pressure_viscosity) or barus", default="roelands", applies="film_model = ehl")
+    ehl_density: Literal["dowson_higginson", "incompressible"] = option(
+        "Density of the oil inside the elastic film: dowson_higginson (Dowson & Higginson 1966) "
+        "or incompressible", default="dowson_higginson", applies="film_model = ehl")
     squeeze_load_exponent: Literal["consistent", "printed"] = option(
         "Sign of the W* exponent of Teodorescu's film formula: consistent (-0.059, as every EHL "
         "regression) or printed (+0.059 as printed in the paper)", default="consistent",

@@ -28,6 +28,10 @@ _TRANSIENT = {
                          "Göçmen (2013) averaged Reynolds contact with squeeze, flow factors and "
                          "Greenwood-Tripp asperities, load balanced at every angle and marched "
                          "implicitly; friction from the same solution",
+    "ehl": "elastic film (tribology.film_model = ehl): transient elastohydrodynamic line contact "
+           "(Reynolds with squeeze, elastic surfaces, piezoviscous compressible oil, "
+           "Greenwood-Tripp asperities), marched implicitly from the steady solution; friction "
+           "from the same solution",
 }
 
 
@@ -40,6 +44,11 @@ def reason(deck, planned) -> str:
         if model == "steady":
             return "lubricant given and contact loads planned: EHL film with the contact load"
         s = deck.solver
+        if model == "ehl":
+            return (f"lubricant given and contact loads planned: {_TRANSIENT[model]} "
+                    f"({s.ehl_nodes} points over +-{s.ehl_inlet:g} Hertz half widths or 20 "
+                    f"rigid lengths, {deck.tribology.ehl_cavitation} cavitation, {s.ehl_march}, "
+                    f"angle step {s.ehl_angle_step * 57.29577951308232:g} deg)")
         march = s.film_march if model == "averaged_reynolds" else "implicit_euler"
         knobs = (f"{march}, angle step "
                  + (f"{s.film_angle_step * 57.29577951308232:g} deg" if s.film_angle_step
@@ -163,6 +172,8 @@ def transient_outputs(film, kin, res, component: str | None = None) -> None:
             "transient film where the entrainment passes through zero (the steady film is 0 "
             "there)" + tag, angle)
     sol = film.solution
+    if hasattr(sol, "cycle"):     # the elastic film (its own record)
+        return elastic_outputs(film, kin, res, component)
     if film.regime is None:       # level 1: its squeeze ratio
         march = sol
         met("film_cycles", march.cycles, "-", "cam revolutions marched to the periodic film"
@@ -255,3 +266,72 @@ def run_cases(deck, inputs, cases):
     film = cases.contact.film(kin, np.maximum(inputs.get(ContactLoad).load, 0.0))
     cases.add_metrics(film_metrics(kin.theta, film.min, kin.nose))
     return ContactFilm(((MAIN, film),), with_load=True)
+
+
+def elastic_outputs(film, kin, res, component: str | None = None) -> None:
+    """Columns, metrics, the film map and warnings of the elastic film (docs/ehl.md)."""
+    import numpy as np
+
+    from camtrain.contact.transient import REGIME_CODES, periodic
+
+    tag = f" ({component} pair)" if component else ""
+    sol = film.solution
+    cyc, grid = sol.cycle, sol.grid
+    theta = np.asarray(kin.theta, dtype=float)
+    loaded = np.isfinite(film.min)
+
+    def on_run(v):
+        return np.where(loaded, periodic(v, grid, theta), np.nan)
+
+    share = on_run(cyc.asperity_share)
+    res.add_columns([
+        ("film_regime", [REGIME_CODES[r] for r in film.regime], "-",
+         "lubrication regime: 0 hydrodynamic, 1 mixed, 2 boundary (asperity share <= 1 %, "
+         "between, >= 90 %), 3 separated" + tag),
+        ("asperity_load_share", share, "-",
+         "share of the contact load carried by asperities (Greenwood-Tripp)" + tag),
+        ("film_pressure_max", on_run(cyc.p_max), "Pa",
+         "peak fluid pressure of the elastic film" + tag),
+        ("asperity_pressure_max", on_run(cyc.asperity_pressure_max), "Pa",
+         "peak Greenwood-Tripp asperity pressure of the elastic film" + tag),
+        ("film_pressure_over_hertz", on_run(cyc.p_max / cyc.p_hertz), "-",
+         "peak fluid pressure of the elastic film over the dry Hertz pressure" + tag),
+    ], component)
+    ok = np.isfinite(cyc.h_min)
+    rows = [("film_balance_error_max", float(np.nanmax(np.where(ok, cyc.mass_error, 0.0))), "-",
+             "largest mass-balance error of a step of the elastic film" + tag),
+            ("film_period_error", cyc.period_error, "-",
+             "change of the central film over one revolution of the elastic film" + tag),
+            ("film_newton_iterations", float(cyc.iterations.sum()), "-",
+             "Newton iterations of the elastic film over the cycle" + tag),
+            ("film_pressure_max_cycle", float(np.nanmax(cyc.p_max)), "Pa",
+             "largest fluid pressure of the elastic film over the cycle" + tag)]
+    res.add_metrics(rows, component)
+    _film_map(res, cyc, grid, component, tag)
+    if cyc.restarts:
+        angles = ", ".join(f"{np.degrees(grid[k]):.1f}" for k in cyc.restarts[:5])
+        res.warn(f"elastic film{tag}: the march restarted from the steady solution at "
+                 f"{len(cyc.restarts)} angles ({angles} deg ...): the inputs (radius, load) "
+                 "jump there faster than the time step follows")
+
+
+def _film_map(res, cyc, grid, component, tag) -> None:
+    """The film map (angle x position) on an axis of its own, one row per (angle, position):
+    cycle_<axis>.csv in the outputs."""
+    import numpy as np
+
+    keep = np.isfinite(cyc.map_h).all(axis=1)
+    if not np.any(keep):
+        return
+    nodes = cyc.map_h.shape[1]
+    axis = "film_map_point" if component is None else f"{component}_film_map_point"
+    res.add_axis(axis, np.arange(int(keep.sum()) * nodes, dtype=float), "-",
+                 "row of the elastic film map (angle, position)" + tag)
+    angle = np.repeat(grid[keep], nodes)
+    for name, values, unit, what in (
+            ("film_map_angle", angle, "rad", "cam angle of the film map row"),
+            ("film_map_x", cyc.map_x[keep].ravel(), "m",
+             "position along the contact (in the rolling direction, from the contact point)"),
+            ("film_map_film", cyc.map_h[keep].ravel(), "m", "film thickness h(x)"),
+            ("film_map_pressure", cyc.map_p[keep].ravel(), "Pa", "fluid pressure p(x)")):
+        res.add_column(name, values, unit, what + tag, component=component, axis=axis)

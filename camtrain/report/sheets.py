@@ -17,6 +17,7 @@ from camtrain.report.header import title_line
 from camtrain.report.page import Page
 from camtrain.report.panels import PANELS as CYCLE_PANELS
 from camtrain.report.panels import Ctx
+from camtrain.report.panels_ehl import EHL_PANELS
 from camtrain.report.panels_shaft import SHAFT_PANELS
 from camtrain.report.sheet_header import (
     GAP_X_IN,
@@ -34,7 +35,7 @@ from camtrain.report.sheet_header import (
 from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
 from camtrain.result import Result
 
-PANELS = {**CYCLE_PANELS, **SHAFT_PANELS}
+PANELS = {**CYCLE_PANELS, **SHAFT_PANELS, **EHL_PANELS}
 
 #: name -> (heading, panels); "profile" is the cam drawn to scale
 SHEETS = {
@@ -45,6 +46,8 @@ SHEETS = {
     "friction": ("Friction, torque and power", ["friction_coefficient", "friction_force",
                                                 "torque", "power"]),
     "transient_film": ("Transient film over the cycle", ["transient_film", "film_pressures"]),
+    "elastic_film": ("Elastic film over the cycle", ["elastic_films", "film_map",
+                                                     "pressure_over_hertz"]),
     "profile": ("Cam profile and film around it", ["profile"]),
     "dynamics": ("Valve-train dynamics", [
         "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),

@@ -156,6 +156,10 @@ def _averaged_reynolds(raw: dict) -> bool:
     return _film_model(raw) == "averaged_reynolds"
 
 
+def _elastic_film(raw: dict) -> bool:
+    return _film_model(raw) == "ehl"
+
+
 def _spring_chain(raw: dict) -> bool:
     return int(raw.get("dynamics", {}).get("spring_elements", 0)) > 0
 
@@ -226,6 +230,18 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          "half width of the averaged Reynolds zone in Hertz half widths"),
     Knob("film_tolerance", "solver.film_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8),
          lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
+    # elastic film (docs/ehl.md)
+    Knob("ehl_nodes", "solver.ehl_nodes", (128, 256, 512, 1024), lambda v: 1.0 / (v - 1),
+         _elastic_film, "grid points of the elastic film's domain (each step: a dense LU of "
+         "this size, ~n^2.5 in all)", integer=True),
+    Knob("ehl_inlet", "solver.ehl_inlet", (3.0, 4.5, 9.0, 18.0), lambda v: 1.0 / v,
+         _elastic_film, "half length of the elastic film's domain in Hertz half widths (at "
+         "fixed points a longer domain is a coarser grid)"),
+    Knob("ehl_angle_step", "solver.ehl_angle_step", (2.0, 1.0, 0.5, 0.25), lambda v: v,
+         _elastic_film, "cam-angle step of the elastic film's time march [deg] (cost ~ 1/step)"),
+    Knob("ehl_tolerance", "solver.ehl_tolerance", (1e-3, 1e-4, 1e-5, 1e-6, 1e-7),
+         lambda v: v, _elastic_film, "Newton tolerance of the elastic film (a decade: about "
+         "one chord step per angle)"),
     Knob("piston_crank_step", "piston.solver.crank_step", (4.0, 2.0, 1.0, 0.5),
          lambda v: v, _always,
          "crank-angle step of the inter-ring gas and ring-film marches [deg]"),

@@ -1,0 +1,81 @@
+"""Panels of the elastic film sheet (tribology.film_model = ehl; docs/ehl.md): the film map
+over cam angle and position, the elastic films beside the formula film, and the peak pressure
+against the dry Hertz pressure. Each draws only what the run has."""
+from __future__ import annotations
+
+import numpy as np
+
+from camtrain.report.panels import _finite, _fit_y, _mark_zero_entrainment, has, shown
+from camtrain.report.style import COLORS, angle_axis, finish_axes
+
+
+def film_map(ax, r, ctx):
+    """The film h(x) against cam angle (rows of the map axis), as a colour map."""
+    if not has(r, "film_map_angle", "film_map_x", "film_map_film"):
+        return False
+    angle = np.degrees(r["film_map_angle"])
+    x, unit_x = shown(r, "film_map_x")
+    h, unit_h = shown(r, "film_map_film")
+    p = r["film_map_pressure"]
+    rows = np.unique(angle).size
+    A, X, H, Pm = (v.reshape(rows, -1) for v in (angle, x, h, p))
+    # the loaded zone of a typical angle (pressure above 1 % of the row's peak; the median
+    # over the rows, the light flanks reach much further), with twice as much around it
+    zone = Pm > 0.01 * np.nanmax(Pm, axis=1, keepdims=True)
+    reach = 3.0 * float(np.nanmedian(np.nanmax(np.abs(np.where(zone, X, 0.0)), axis=1)))
+    central = float(np.nanmedian(np.nanmin(H, axis=1)))
+    logs = np.log10(np.maximum(H, 1e-300))
+    mesh = ax.pcolormesh(A, X, logs, shading="nearest", cmap="viridis", rasterized=True,
+                         vmin=np.log10(0.5 * central), vmax=np.log10(30.0 * central))
+    cax = ax.inset_axes([0.93, 0.1, 0.015, 0.8])
+    cbar = ax.figure.colorbar(mesh, cax=cax)
+    cbar.set_label(f"log10 film [{unit_h}]", fontsize=7)
+    cbar.ax.tick_params(labelsize=6)
+    if reach > 0.0:
+        ax.set_ylim(-reach, reach)
+    ax.set_ylabel(f"position along the contact [{unit_x}]")
+    angle_axis(ax)
+    finish_axes(ax, legend=False)
+    return True
+
+
+def elastic_films(ax, r, ctx):
+    """Central and minimum elastic film with the steady formula film."""
+    if not has(r, "film_min", "film_central", "film_steady", "film_map_film"):
+        return False
+    data = []
+    unit = ""
+    for name, color, style, label in (
+            ("film_central", COLORS["main"], "-", "elastic central film"),
+            ("film_min", COLORS["second"], "-", "elastic minimum film"),
+            ("film_steady", COLORS["third"], "--", "steady formula film")):
+        y, unit = shown(r, name)
+        ax.plot(ctx.theta, _finite(y), color=color, ls=style, label=label)
+        data.append(_finite(y))
+    _mark_zero_entrainment(ax, ctx)
+    ax.set_yscale("log")
+    ax.set_ylabel(f"film thickness [{unit}]")
+    angle_axis(ax)
+    finish_axes(ax, legend=True)
+    return True
+
+
+def pressure_over_hertz(ax, r, ctx):
+    """Peak fluid pressure of the elastic film over the dry Hertz pressure."""
+    if not has(r, "film_pressure_over_hertz"):
+        return False
+    y, _ = shown(r, "film_pressure_over_hertz")
+    ax.plot(ctx.theta, _finite(y), color=COLORS["main"], label="peak pressure / Hertz")
+    ax.axhline(1.0, color=COLORS["grey"], lw=0.8, ls="--", label="Hertz")
+    _fit_y(ax, [_finite(y), np.array([1.0])], bottom=0.0)
+    ax.set_ylabel("p_max / p_Hertz [-]")
+    angle_axis(ax)
+    finish_axes(ax, legend=True)
+    return True
+
+
+EHL_PANELS = {
+    "film_map": ("Elastic film along the contact over the cycle", film_map),
+    "elastic_films": ("Elastic films and the formula film", elastic_films),
+    "pressure_over_hertz": ("Peak film pressure against Hertz", pressure_over_hertz),
+}

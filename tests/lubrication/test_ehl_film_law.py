@@ -1,0 +1,54 @@
+"""The elastic film as a film law of the contact model, run from a deck (docs/ehl.md).
+
+The Göçmen deck with ``tribology.film_model = "ehl"`` at a coarse resolution (128 points,
+2 deg steps): the run's columns, metrics, film map and plan; a point contact refused.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from camtrain import api
+from camtrain.errors import InputError
+from tests.conftest import DECKS
+
+GOCMEN = (DECKS / "gocmen_table31.toml").read_text()
+COARSE = "\n[solver]\nehl_nodes = 128\nehl_angle_step = 2.0\n"
+
+
+@pytest.fixture(scope="module")
+def elastic_run():
+    text = GOCMEN.replace('film_model = "averaged_reynolds"', 'film_model = "ehl"') + COARSE
+    return api.run(api.load_deck_text(text, "gocmen_ehl.toml"))
+
+
+def test_the_plan_names_the_elastic_film(elastic_run):
+    step = next(s for s in elastic_run.plan.steps if s.effect == "film")
+    assert "elastic film" in step.reason and "128 points" in step.reason
+
+
+def test_films_friction_and_pressures_come_from_the_solution(elastic_run):
+    r = elastic_run
+    h_min, h_c = r["film_min"], r["film_central"]
+    assert np.all(h_min > 0.0) and np.all(h_c >= h_min)
+    assert np.all(r["friction_force"] > 0.0)
+    ratio = r["film_pressure_over_hertz"]
+    assert 0.2 < np.nanmin(ratio) and np.nanmax(ratio) < 1.5   # no rigid 3.7 GPa peaks
+    for k in ("film_at_zero_entrainment_1", "film_at_zero_entrainment_2"):
+        assert r.metrics[k].value > 10e-9                    # the squeeze keeps a film
+    assert r.metrics["film_period_error"].value < 0.05
+
+
+def test_the_film_map_is_a_table_of_its_own(elastic_run):
+    r = elastic_run
+    assert "film_map_point" in r.axes
+    angles = np.unique(r["film_map_angle"])
+    assert angles.size == 180
+    assert r["film_map_film"].size == 180 * 64
+    assert np.all(r["film_map_film"] > 0.0)
+
+
+def test_a_point_contact_is_refused():
+    text = (DECKS / "zeta_intake.toml").read_text() + '\n[tribology]\nfilm_model = "ehl"\n'
+    with pytest.raises(InputError, match="tribology.film_model"):
+        api.run(api.load_deck_text(text, "zeta_ehl.toml"))

@@ -1,0 +1,162 @@
+"""Transient elastohydrodynamic line contact (docs/ehl.md "Through the cam cycle").
+
+* Pure squeeze of a rigid cylinder on a plane, isoviscous and incompressible, under a constant
+  load per unit length W: the Reynolds equation h^3 dp/dx = 12 eta x dh/dt with h = h0 +
+  x^2/(2R) gives p = 6 eta V R / h^2 and W = 3 sqrt(2) pi eta R^{3/2} V / h0^{3/2}, V = -dh0/dt
+  (Hamrock, Schmid & Jacobson 2004, *Fundamentals of Fluid Film Lubrication*, ch. 10, normal
+  squeeze of a cylinder near a plane); integrated, h0(t)^{-1/2} = h0(0)^{-1/2} + W t /
+  (6 sqrt(2) pi eta R^{3/2}).
+* An entrainment reversal (the hard transient of Goodyer & Berzins 2006: the speed ramps
+  through zero): the film stays positive and the mass balance of every step closes.
+* The steady limit: with constant inputs the march holds the steady solution, and the central
+  film converges with the grid at second order (observed, fitted).
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from camtrain.lubrication.ehl_oil import Oil
+from camtrain.lubrication.ehl_transient import CycleContact, CycleResolution, march_ehl_cycle
+
+W_SQ, R_SQ, ETA_SQ, H0_SQ = 1e4, 0.01, 0.05, 2e-6
+
+
+def squeeze_exact(t):
+    """h0(t) of the rigid isoviscous squeeze (module docstring) [m]."""
+    c = 6.0 * math.sqrt(2.0) * math.pi * ETA_SQ * R_SQ**1.5
+    return (H0_SQ**-0.5 + W_SQ * t / c) ** -2.0
+
+
+def squeeze_march(steps: int, nodes: int, march: str = "bdf2", fixed_grid: bool = False):
+    """The film halves (h0 -> h0/4 over the march); E' = 2e13 Pa (deflection < 0.1 % of h).
+    ``fixed_grid``: one domain of 20 rigid lengths of h0 throughout (no regridding)."""
+    c = 6.0 * math.sqrt(2.0) * math.pi * ETA_SQ * R_SQ**1.5
+    T = c * (2.0 * H0_SQ**-0.5 - H0_SQ**-0.5) / W_SQ
+    t = np.linspace(0.0, T, steps + 1)
+    n = t.size
+    contact = CycleContact(t, np.full(n, W_SQ), np.full(n, R_SQ), np.zeros(n), np.zeros(n),
+                           2e13, 0.01, Oil(ETA_SQ, 0.0, "barus", "incompressible"))
+    b = math.sqrt(8.0 * W_SQ * R_SQ / (math.pi * 2e13))
+    inlet = 20.0 * math.sqrt(2.0 * R_SQ * H0_SQ) / b if fixed_grid else 4.5
+    out = march_ehl_cycle(contact, CycleResolution(nodes=nodes, march=march, inlet=inlet),
+                          h_start=H0_SQ)
+    return t, out
+
+
+@pytest.mark.derived
+def test_pure_squeeze_follows_the_rigid_isoviscous_closed_form():
+    """Within 0.5 % over the whole approach at 512 points (measured 0.35 %; 1.3 % at 256)."""
+    t, out = squeeze_march(100, 512)
+    err = np.abs(out.h_central / squeeze_exact(t) - 1.0)
+    assert err.max() < 5e-3
+    assert np.all(np.diff(out.h_central) < 0.0)          # it only approaches
+
+
+@pytest.mark.convergence
+@pytest.mark.parametrize("march,order", [("implicit_euler", 1.0), ("bdf2", 2.0)])
+def test_time_step_order_of_the_squeeze_march(march, order):
+    """Observed order of the film at the end in the time step (Richardson differences of 20,
+    40, 80 steps on one fixed grid)."""
+    ends = [squeeze_march(s, 256, march, True)[1].h_central[-1] for s in (20, 40, 80)]
+    observed = math.log2(abs(ends[0] - ends[1]) / abs(ends[1] - ends[2]))
+    assert abs(observed - order) < 0.3, observed
+
+
+def steady_contact(n=6, u=1.0):
+    """Case A of the reference notes (w = 200 N/mm, R = 20 mm, u_m = 1 m/s, Roelands,
+    Dowson-Higginson) held constant."""
+    t = np.arange(n) * 1e-4
+    return CycleContact(t, np.full(n, 2e5), np.full(n, 0.02), np.full(n, u), np.zeros(n),
+                        2.26e11, 0.01, Oil(0.04, 2e-8))
+
+
+def test_constant_inputs_hold_the_steady_solution():
+    """Within 1e-4: the steady start and the march smooth the cavitation kink on slightly
+    different pressure scales (1 and the peak pressure, 0.98 p_h); measured 2e-5."""
+    out = march_ehl_cycle(steady_contact(12), CycleResolution(nodes=256))
+    h = out.h_central
+    assert np.ptp(h) / h.mean() < 1e-4
+    assert out.period_error < 1e-4
+
+
+@pytest.mark.convergence
+def test_grid_order_of_the_central_film():
+    """Observed order of the central film at 256, 512, 1024 points (second-order upwind):
+    measured 1.98."""
+    films = [march_ehl_cycle(steady_contact(2), CycleResolution(nodes=n)).h_central[0]
+             for n in (256, 512, 1024)]
+    observed = math.log2(abs(films[0] - films[1]) / abs(films[1] - films[2]))
+    assert 1.7 < observed < 2.3, observed
+
+
+def goecmen_cycle(angles: int, sigma: float = 0.05e-6) -> CycleContact:
+    """The Göçmen deck's contact over one revolution on ``angles`` steps (load per unit width
+    of the 20 mm cam, radius, signed entrainment and sliding of its kinematics)."""
+    from camtrain import api
+    from camtrain.contact.model import CamContact
+
+    deck = api.load_deck(Path(__file__).parents[2] / "decks" / "gocmen_table31.toml")
+    res = api.run(deck)
+    theta = res["cam_angle"]
+    grid = theta[0] + 2 * np.pi * np.arange(angles) / angles
+
+    def on_grid(name):
+        return np.interp(grid, theta, res[name], period=2 * np.pi)
+    omega = 1000 * 2 * np.pi / 60
+    E_r = float(CamContact.from_deck(deck.model).reduced_modulus)
+    return CycleContact((grid - grid[0]) / omega, on_grid("load") / 0.02, on_grid("radius_x"),
+                        on_grid("entrainment"), on_grid("sliding"), E_r, 0.02,
+                        Oil(0.014, 14.3e-9), sigma=sigma)
+
+
+def reversal(cavitation: str, steps: int = 60):
+    """Entrainment ramped linearly from +0.5 to -0.5 m/s (w = 100 N/mm, R = 20 mm)."""
+    t = np.linspace(0.0, 4e-3, steps)
+    n = t.size
+    u = np.linspace(0.5, -0.5, n)
+    contact = CycleContact(t, np.full(n, 1e5), np.full(n, 0.02), u, np.zeros(n), 2.26e11, 0.01,
+                           Oil(0.04, 2e-8))
+    return u, march_ehl_cycle(contact, CycleResolution(nodes=256, cavitation=cavitation))
+
+
+def test_entrainment_reversal_keeps_a_film_and_closes_the_mass_balance():
+    u, out = reversal("elrod_adams")
+    assert np.all(out.h_min > 0.0)
+    i = int(np.argmin(np.abs(u)))
+    assert out.h_central[i] > 0.2 * out.h_central[0]       # squeeze carries the load
+    assert np.nanmax(out.mass_error) < 256 * 1e-6       # nodes x the row tolerance
+
+
+def test_reynolds_cavitation_does_not_conserve_mass():
+    """The same reversal with the Reynolds exit condition loses mass at its rupture: the
+    balance that closes with Elrod-Adams does not close here (the test above can fail)."""
+    _, out = reversal("reynolds")
+    assert np.nanmax(out.mass_error) > 1e-3
+
+
+def test_cycle_film_lies_within_the_formula_spread_where_quasi_steady():
+    """The Göçmen deck's cam (flat follower, 1000 rpm; sigma 0.05 um so that the film carries
+    the load) at 256 points and 2 deg steps: on the base circle and the flanks at 41-49 deg
+    (from 9 deg after the reversals at +-32.6 deg, where the film has recovered: at 40 deg it
+    is still 12 % below),
+    where 0.9 <= |u_m| <= 2 m/s and the inputs change slowly, the minimum film lies between
+    Pan-Hamrock's and Dowson-Higginson's (5 % slack for the grid, measured at most 4 % at
+    case A between 256 and 512 points' neighbours). At the nose it is about 6 % below Pan-Hamrock
+    at this grid (docs/ehl.md reports the nose and the reversals)."""
+    from camtrain.formulas.film_line import dowson_higginson_1977, pan_hamrock_1989_min
+
+    c = goecmen_cycle(180)
+    out = march_ehl_cycle(c, CycleResolution(nodes=256))
+    theta = np.degrees(2 * np.pi * np.arange(180) / 180 - np.pi)
+    args = (c.w, c.R, np.abs(c.u), 0.014, 14.3e-9, c.E_r)
+    lo = np.minimum(dowson_higginson_1977(*args), pan_hamrock_1989_min(*args))
+    hi = np.maximum(dowson_higginson_1977(*args), pan_hamrock_1989_min(*args))
+    flank = ((np.abs(np.abs(theta) - 45.0) <= 4.0) | (np.abs(theta) >= 90.0)) & \
+        (np.abs(c.u) >= 0.9) & (np.abs(c.u) <= 2.0)
+    assert np.count_nonzero(flank) > 50
+    h = out.h_min[flank]
+    assert np.all(h >= 0.95 * lo[flank]) and np.all(h <= 1.05 * hi[flank])
