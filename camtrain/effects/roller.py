@@ -144,6 +144,7 @@ def run(deck, inputs, res):
     force = np.where(used, force, 0.0)
     write_columns(res, kin, load, field, film, force, contact)
     res.add_metrics(one_case(roller_metrics(kin.theta, field, load > 0.0)))
+    warn_zero_entrainment(res, kin.theta, field.entrainment, load > 0.0, deck)
     if field.revolutions and field.periodic_change > r.periodic_tolerance:
         res.warn(f"roller speed not periodic after {field.revolutions} revolutions (change "
                  f"{field.periodic_change:.3g} > roller.periodic_tolerance): raise "
@@ -151,6 +152,28 @@ def run(deck, inputs, res):
     return (RollerMotion(((MAIN, field),)), ContactFilm(((MAIN, film),), with_load=True),
             ContactFriction(((MAIN, FrictionField(force=force, hertz=hz, film=film, used=used)),),
                             model=f"roller ({r.traction})"))
+
+
+def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:
+    """The zero-entrainment finding of the cam contact at the roller's entrainment (V_c +
+    V_roll)/2, in the kinematics effect's words, on loaded angles: a locked roller's is the
+    non-rotating face's."""
+    import numpy as np
+
+    from camtrain.effects.entrainment import zero_entrainment_warning
+
+    if not deck.speed.omega > 0:
+        return
+    u = np.nan_to_num(entrainment)
+    nxt = np.roll(u, -1)
+    i = np.flatnonzero(loaded & np.roll(loaded, -1) & (u * nxt < 0.0))
+    step = np.diff(theta).mean()
+    zeros = [float(theta[j] + step * u[j] / (u[j] - nxt[j])) for j in i]
+    for angle in zeros:
+        res.add_event("zero_entrainment", angle, "the roller's entrainment velocity passes "
+                      "through zero: the steady EHL film vanishes")
+    if zeros:
+        res.warn(zero_entrainment_warning(zeros), finding="zero_entrainment")
 
 
 def write_columns(res, kin, load, field, film, force, contact) -> None:
