@@ -58,6 +58,14 @@ class Roller:
         "Film model of the plain bushing: short (Ocvirk, closed form) or finite (the finite-length "
         "Reynolds film's steady curve, solved once per length/diameter)", default="short",
         applies="pin = bushing")
+    pin_friction: Literal["hydrodynamic", "mixed"] = option(
+        "Friction of the plain bushing: hydrodynamic (Couette shear of the film only) or mixed "
+        "(plus Greenwood-Tripp asperity friction where the minimum film c (1 - eps) falls below "
+        "3 pin_roughness, with the tribology section's asperity and boundary parameters)",
+        default="hydrodynamic", applies="pin = bushing")
+    pin_roughness: float | None = quantity(
+        "Composite RMS roughness of pin and bore, for pin_friction = mixed; omit for "
+        "lubricant.roughness", "µm", default=None, gt=0, applies="pin = bushing")
     pin_viscosity: float | None = quantity(
         "Oil viscosity in the pin bearing; omit for lubricant.viscosity", "Pa·s", default=None,
         gt=0, applies="pin = needle, bushing")

@@ -55,8 +55,28 @@ def pin_of(deck):
     if r.pin == "bushing":
         return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
                                                      r.pin_clearance, eta, name="roller"),
-                   model=r.pin_model)
+                   model=r.pin_model, asperities=bushing_asperities(deck))
     return Pin(r.pin)
+
+
+def bushing_asperities(deck):
+    """The bushing's Greenwood-Tripp asperities with roller.pin_friction = "mixed" (None for
+    hydrodynamic): roughness roller.pin_roughness (else lubricant.roughness), the tribology
+    section's asperity and boundary parameters, the pair's reduced modulus (pin and roller of
+    the follower's material)."""
+    from camtrain.contact.model import CamContact
+    from camtrain.roller.pin import Asperities
+
+    r = deck.roller
+    if r.pin_friction != "mixed":
+        return None
+    trib = deck.tribology
+    sigma = r.pin_roughness if r.pin_roughness is not None else deck.lubricant.roughness
+    beta = sigma / trib.roughness_slope
+    return Asperities(sigma=sigma, beta=beta,
+                      zeta=trib.asperity_density_product / (beta * sigma),
+                      reduced_modulus=float(CamContact.from_deck(deck).reduced_modulus),
+                      tau0=trib.eyring_stress, m=trib.boundary_shear_coefficient)
 
 
 def settings_of(deck):
