@@ -83,16 +83,16 @@ class ArmContacts:
         "rocker", "mm", gt=0, example=4.0)
     pivot_friction: float = quantity(
         "Friction coefficient of the pivot: torque = coefficient x pivot reaction x radius "
-        "(pivot_model = coefficient)", "-", ge=0, lt=1, example=0.1)
+        "(coefficient pivot model)", "-", ge=0, lt=1, example=0.1)
     pivot_model: Literal["coefficient", "journal"] = option(
         "Pivot friction: coefficient (Coulomb: coefficient x reaction x radius) or journal (a "
         "rocker shaft as a plain journal bearing of diameter 2 pivot_radius: hydrodynamic "
         "Couette torque at the arm's speed under the pivot reaction)", default="coefficient")
     pivot_length: float | None = quantity(
-        "Length of the rocker shaft's bearing (pivot_model = journal)", "mm", default=None,
+        "Length of the rocker shaft's bearing (journal pivot model)", "mm", default=None,
         gt=0, applies="pivot_model = journal")
     pivot_clearance: float | None = quantity(
-        "Radial clearance of the rocker shaft's bearing (pivot_model = journal)", "µm",
+        "Radial clearance of the rocker shaft's bearing (journal pivot model)", "µm",
         default=None, gt=0, applies="pivot_model = journal")
     pivot_viscosity: float | None = quantity(
         "Oil viscosity in the rocker shaft's bearing; omit for lubricant.viscosity", "Pa·s",
