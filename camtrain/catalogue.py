@@ -59,6 +59,11 @@ class EffectSpec:
     #: plan of its own before the effect (``included(deck) -> [(name, deck model)]``; the
     #: effect reads ``inputs.included[name]`` = (deck model, Result)); "" = none
     includes: str = ""
+    #: findings (event kinds, with the warnings that state them: Result.warn's ``finding``) of
+    #: effects that run before this one which this effect owns when it runs: the runner drops
+    #: them before it runs, and it states its own (the roller's entrainment replaces the
+    #: non-rotating face's "zero_entrainment")
+    supersedes: tuple[str, ...] = ()
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -122,7 +127,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                key_metrics=("roller_slip_max", "roller_power_total", "roller_power_pin",
                             "roller_power_rolling", "roller_power_sliding",
                             "film_min_at_max_lift"),
-               sheets=("roller",),
+               sheets=("roller",), supersedes=("zero_entrainment",),
                knobs=("roller_substeps", "roller_table_points", "roller_tolerance"),
                accuracy_metrics=("roller_slip_max", "roller_power_total", "roller_srr_min")),
     EffectSpec("film", "camtrain.effects.film",

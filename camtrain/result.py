@@ -105,6 +105,9 @@ class Result:
     plan: object = None
     events: list[Event] = field(default_factory=list)
     axes: list[str] = field(default_factory=list)
+    #: warning -> the finding it states (Result.warn's ``finding``), for the runner to drop a
+    #: finding an effect that runs later owns (EffectSpec.supersedes); not saved
+    finding_of: dict[str, str] = field(default_factory=dict, repr=False, compare=False)
 
     # ------------------------------------------------------------------ building
 
@@ -178,9 +181,21 @@ class Result:
         self.events.append(Event(kind, float(at), description,
                                  axis or (self.axes[0] if self.axes else "cam_angle"), component))
 
-    def warn(self, message: str) -> None:
+    def warn(self, message: str, finding: str | None = None) -> None:
+        """A warning; ``finding`` names what it finds (an event kind, e.g. "zero_entrainment")
+        when an effect that runs later may own that finding (EffectSpec.supersedes)."""
         if message not in self.warnings:
             self.warnings.append(message)
+        if finding is not None:
+            self.finding_of[message] = finding
+
+    def drop_findings(self, kinds: tuple[str, ...]) -> None:
+        """Remove the events of these kinds and the warnings stating them (an effect that owns
+        the finding is about to run and states its own)."""
+        self.events = [e for e in self.events if e.kind not in kinds]
+        gone = {w for w, kind in self.finding_of.items() if kind in kinds}
+        self.warnings = [w for w in self.warnings if w not in gone]
+        self.finding_of = {w: k for w, k in self.finding_of.items() if w not in gone}
 
     # ------------------------------------------------------------------ reading
 

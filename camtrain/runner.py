@@ -62,6 +62,8 @@ def run_plan(deck, plan: Plan | None = None, progress=None) -> Result:
             if progress is not None:
                 progress(spec.name, done, len(effects))
             start = time.perf_counter()
+            if spec.supersedes:   # this effect owns these findings: earlier ones go
+                result.drop_findings(spec.supersedes)
             if progress is None and not spec.includes:   # a run's usual step: nothing around it
                 out = effect_module(spec).run(deck, Inputs(spec, products), result)
             else:

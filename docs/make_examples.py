@@ -141,9 +141,9 @@ PUBLISHED = {
                       "adjuster, drawn by positions ([mechanism.layout]), with its valve pad and "
                       "ball-socket pivot ([mechanism.arm]). No source prints a complete RFF "
                       "geometry: every value is assumed (flagged in the deck), so there is no "
-                      "published number to compare. The roller does not turn here (its rotation "
-                      "is a contact effect of its own), so power_loss_mean is a sliding loss; "
-                      "see docs/mechanism_roller.md.", []),
+                      "published number to compare. The roller turns on a needle bearing "
+                      "([roller], quasi-static), so power_loss_mean is the roller's loss at the "
+                      "cam; see docs/mechanism_roller.md and docs/rollers.md.", []),
     "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
                          "flagged in the deck): the valve clearance taken up on the ramp, "
                          "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),
@@ -389,6 +389,8 @@ def deck_section(path: Path, draw: bool = True) -> list[str]:
         lines += pinto_camshaft_sections(result)
     if stem == "harrison_roller_needle" and result is not None:
         lines += roller_saving_section(result)
+    if stem == "roller_finger" and result is not None:
+        lines += finger_comparison_section(result)
     have = [row for row in SHOWN if result is not None and row[0] in result.metrics]
     if have or error:
         missing = NOT_YET if error else "not computed for this deck"
@@ -455,6 +457,59 @@ def roller_saving_section(result) -> list[str]:
               "contact dissipation `dissipation_mean` (F |V_s|, tested), which differs from "
               "the camshaft's power by the work of the friction force on the follower's "
               "motion.", ""]
+    return lines
+
+
+def finger_comparison_section(result) -> list[str]:
+    """The roller finger follower against a sliding finger follower of the same design (the
+    comparison of "Lubrication and slippage in roller finger follower systems", Tribol. Trans.
+    35(2):261, 1992): the same deck with the roller turning, locked, and as a sliding pad."""
+    import tomllib
+
+    from camtrain import api
+
+    deck = ROOT / "decks" / "roller_finger.toml"
+    raw = tomllib.loads(deck.read_text(encoding="utf-8"))
+    raw.pop("roller")
+    sliding = _run_raw(raw, "roller_finger_sliding.toml").metrics
+    locked = api.run(api.load(deck, ("roller.pin=locked",))).metrics
+    inertial = api.run(api.load(deck, ("roller.solver=inertial",))).metrics
+    m = result.metrics
+    rows = [("sliding pad of the roller's radius (no [roller])", sliding, None),
+            ("roller locked (roller.pin = locked)", locked, None),
+            ("roller on a needle bearing, quasi-static (this deck)", m, m),
+            ("the same, inertial (roller.solver = inertial)", inertial, inertial)]
+    base = sliding["power_loss_mean"].value
+    lines = ["The roller finger follower against a sliding finger follower of the same design "
+             "(the comparison of Tribol. Trans. 35(2):261, 1992; camtrain's numbers on this "
+             "deck's assumed data, not the paper's): the same deck with its `[roller]` section "
+             "removed (a sliding pad of the roller's radius), with the roller locked, and "
+             "turning. Cam friction power (`power_loss_mean`), the turning roller's loss by "
+             "part, and the valve pad and pivot (`arm_power_mean`, one valve train). 1500 rpm.",
+             "", "| follower | cam friction power | against sliding | cam-roller sliding | "
+             "cam-roller rolling | pin bearing | largest slip | pad and pivot |",
+             "|---|---|---|---|---|---|---|---|"]
+    for label, metrics, parts in rows:
+        p = metrics["power_loss_mean"].value
+        cells = [f"{_num(p)} W", f"{100.0 * (p - base) / base:+.1f} %"]
+        if parts is None:
+            cells += ["-", "-", "-", "-"]
+        else:
+            cells += [f"{_num(parts[k].value)} W" for k in
+                      ("roller_power_sliding", "roller_power_rolling", "roller_power_pin")]
+            cells.append(f"{_num(100.0 * parts['roller_slip_max'].value)} %")
+        cells.append(f"{_num(metrics['arm_power_mean'].value)} W")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines += ["", "The locked roller slides as the pad does; it differs only by its traction "
+              "law (`roller.traction`, limiting shear, instead of the deck's friction model) "
+              "and the rolling resistance (with `roller.traction = contact` and "
+              "`roller.rolling_resistance = none` it equals the sliding pad to 1e-9, tested). "
+              "Turning, the roller removes nearly all of the cam contact's sliding loss; what "
+              "is left is the hydrodynamic rolling resistance and the needle bearing. The valve "
+              "pad and the ball-socket pivot keep their sliding friction (boundary coefficients "
+              "assumed at 0.1) and then carry most of the finger's loss: camtrain loads them "
+              "with the valve force and the finger's kinematics, not with the cam's friction, "
+              "so the roller does not change them.", ""]
     return lines
 
 

@@ -82,13 +82,40 @@ class ArmContacts:
         "Pivot friction radius: ball-socket radius of a finger follower, shaft radius of a "
         "rocker", "mm", gt=0, example=4.0)
     pivot_friction: float = quantity(
-        "Friction coefficient of the pivot: torque = coefficient x pivot reaction x radius",
-        "-", ge=0, lt=1, example=0.1)
+        "Friction coefficient of the pivot: torque = coefficient x pivot reaction x radius "
+        "(coefficient pivot model)", "-", ge=0, lt=1, example=0.1)
+    pivot_model: Literal["coefficient", "journal"] = option(
+        "Pivot friction: coefficient (Coulomb: coefficient x reaction x radius) or journal (a "
+        "rocker shaft as a plain journal bearing of diameter 2 pivot_radius: hydrodynamic "
+        "Couette torque at the arm's speed under the pivot reaction)", default="coefficient")
+    pivot_length: float | None = quantity(
+        "Length of the rocker shaft's bearing (journal pivot model)", "mm", default=None,
+        gt=0, applies="pivot_model = journal")
+    pivot_clearance: float | None = quantity(
+        "Radial clearance of the rocker shaft's bearing (journal pivot model)", "µm",
+        default=None, gt=0, applies="pivot_model = journal")
+    pivot_viscosity: float | None = quantity(
+        "Oil viscosity in the rocker shaft's bearing; omit for lubricant.viscosity", "Pa·s",
+        default=None, gt=0, applies="pivot_model = journal")
+    pivot_film: Literal["short", "finite"] = option(
+        "Film model of the rocker shaft's bearing: short (Ocvirk) or finite (the finite-length "
+        "Reynolds film's steady curve)", default="short", applies="pivot_model = journal")
 
     schema_rules = (When("pad_shape", ("cylindrical",), require=("pad_width",)),
-                    When("pad_shape", ("spherical",), forbid=("pad_width",)))
+                    When("pad_shape", ("spherical",), forbid=("pad_width",)),
+                    When("pivot_model", ("journal",),
+                         require=("pivot_length", "pivot_clearance")))
 
     def problems(self, path: str) -> list[Problem]:
+        if self.pivot_model == "journal":
+            for name, what in (("pivot_length", "the shaft bearing's length in mm"),
+                               ("pivot_clearance", "its radial clearance in µm")):
+                if getattr(self, name) is None:
+                    return [Problem(f"{path}.{name}", "is required with pivot_model = journal",
+                                    None, what)]
+            if self.pivot_clearance >= self.pivot_radius:
+                return [Problem(f"{path}.pivot_clearance", "is larger than the shaft radius",
+                                f"{self.pivot_clearance * 1e6:g} µm", "a few µm to tens of µm")]
         if self.pad_shape == "cylindrical" and self.pad_width is None:
             return [Problem(f"{path}.pad_width", "is required for a cylindrical pad", None,
                             "the pad width in mm", "or set pad_shape = \"spherical\"")]

@@ -43,7 +43,7 @@ class Roller:
         "for your bearing and lubrication; the default is a typical value, not checked against "
         "a published table)", "-", default=3.0, ge=0, le=100, applies="pin = needle")
     needle_f1: float = quantity(
-        "Load factor f1 of the needle bearing's friction torque M1 = f1 F d_m (default a typical "
+        "Load factor f1 of the needle bearing's friction torque M1, f1 F d_m (default a typical "
         "catalogue value, not checked against a published table)", "-", default=0.0005, ge=0,
         le=0.1, applies="pin = needle")
     pin_diameter: float | None = quantity(
@@ -58,6 +58,14 @@ class Roller:
         "Film model of the plain bushing: short (Ocvirk, closed form) or finite (the finite-length "
         "Reynolds film's steady curve, solved once per length/diameter)", default="short",
         applies="pin = bushing")
+    pin_friction: Literal["hydrodynamic", "mixed"] = option(
+        "Friction of the plain bushing: hydrodynamic (Couette shear of the film only) or mixed "
+        "(plus Greenwood-Tripp asperity friction where the minimum film c (1 - eps) falls below "
+        "3 pin_roughness, with the tribology section's asperity and boundary parameters)",
+        default="hydrodynamic", applies="pin = bushing")
+    pin_roughness: float | None = quantity(
+        "Composite RMS roughness of pin and bore, for mixed pin friction; omit for "
+        "lubricant.roughness", "µm", default=None, gt=0, applies="pin = bushing")
     pin_viscosity: float | None = quantity(
         "Oil viscosity in the pin bearing; omit for lubricant.viscosity", "Pa·s", default=None,
         gt=0, applies="pin = needle, bushing")
@@ -73,8 +81,9 @@ class Roller:
         "Hydrodynamic rolling resistance of the cam-roller contact charged to the cam "
         "(Goksem & Hargreaves 1978), or none", default="goksem_hargreaves")
     solver: Literal["quasi_static", "inertial"] = option(
-        "Roller speed: quasi_static (no inertia: traction x radius = pin torque per angle) or "
-        "inertial (the equation of motion marched over revolutions to a periodic state)",
+        "Roller speed: quasi_static (no inertia: traction x radius equals the pin torque per "
+        "angle) or inertial (the equation of motion marched over revolutions to a periodic "
+        "state)",
         default="quasi_static")
     periodic_tolerance: float = quantity(
         "Periodic state: change of the roller speed over a revolution, relative to the largest "

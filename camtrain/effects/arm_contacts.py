@@ -20,9 +20,12 @@ def missing(deck) -> list[str]:
 def reason(deck, planned) -> str:
     arm = deck.mechanism.arm
     pivot = "ball socket" if deck.mechanism.type == "finger" else "rocker shaft"
+    if arm.pivot_model == "journal":
+        how = f"as a plain journal bearing ({arm.pivot_film} film, hydrodynamic)"
+    else:
+        how = f"friction {arm.pivot_friction:g} x reaction x radius"
     return (f"[mechanism.arm] given: {arm.pad_shape} valve pad (sliding, Hertz, friction "
-            f"{arm.pad_friction:g}) and {pivot} friction {arm.pivot_friction:g} x reaction x "
-            "radius")
+            f"{arm.pad_friction:g}) and {pivot} {how}")
 
 
 def arm_metrics(arm, theta) -> list:
@@ -54,9 +57,33 @@ _COLUMNS = (
     ("pad_max_pressure", "Pa", "Hertz maximum pressure at the valve pad"),
     ("pad_friction_power", "W", "friction power at the valve pad"),
     ("pivot_reaction", "N", "pivot reaction on the arm (cam and pad forces)"),
-    ("pivot_friction_torque", "N*m", "pivot friction torque: coefficient x reaction x radius"),
+    ("pivot_friction_torque", "N*m", "pivot friction torque (coefficient x reaction x radius, "
+     "or the rocker shaft's journal-bearing torque)"),
     ("pivot_friction_power", "W", "friction power at the pivot"),
 )
+
+
+def pivot_bearing(deck):
+    """The rocker shaft as a :class:`camtrain.bearings.JournalBearing` (pivot_model =
+    journal), or None for the Coulomb pivot."""
+    from camtrain.bearings import JournalBearing
+    from camtrain.errors import field_error
+
+    arm = deck.mechanism.arm
+    if arm.pivot_model != "journal":
+        return None
+    if deck.mechanism.type != "rocker":
+        raise field_error("mechanism.arm.pivot_model", "a journal pivot is a rocker's shaft; "
+                          "a finger follower pivots in a ball socket", arm.pivot_model,
+                          "coefficient")
+    eta = arm.pivot_viscosity
+    if eta is None and deck.lubricant is not None:
+        eta = deck.lubricant.viscosity
+    if eta is None:
+        raise field_error("mechanism.arm.pivot_viscosity", "is needed for a journal pivot "
+                          "without a [lubricant] section", None, "the shaft oil's viscosity")
+    return JournalBearing(2.0 * arm.pivot_radius, arm.pivot_length, arm.pivot_clearance, eta,
+                          name="rocker shaft")
 
 
 def run(deck, inputs, res):
@@ -74,7 +101,8 @@ def run(deck, inputs, res):
                        pad_radius=arm.pad_radius, pad_shape=arm.pad_shape,
                        pad_width=arm.pad_width, pad_friction=arm.pad_friction,
                        pivot_radius=arm.pivot_radius, pivot_friction=arm.pivot_friction,
-                       reduced_modulus=modulus(deck))
+                       reduced_modulus=modulus(deck), pivot_bearing=pivot_bearing(deck),
+                       pivot_film=arm.pivot_film)
     res.add_columns([(name, getattr(out, name), unit, text) for name, unit, text in _COLUMNS])
     res.add_metrics(one_case(arm_metrics(out, kin.theta)))
     return out

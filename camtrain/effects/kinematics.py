@@ -66,13 +66,8 @@ def kinematics_metrics(deck, k, result, component: str | None = None) -> None:
     for angle in zeros:
         result.add_event("zero_entrainment", angle, "the entrainment velocity passes through "
                          "zero: the steady EHL film vanishes" + carried, component=component)
-    if warning:
-        result.warn(warning)
-
-
-#: what the zero-entrainment warning says of the steady film, naming the option that changes it
-STEADY_FILM_NOTE = (" (tribology.film_model = \"steady\" has no squeeze film; \"squeeze\" or "
-                    "\"averaged_reynolds\" marches the film through it)")
+    if warning:   # a finding an effect planned later may own (a turning roller's entrainment)
+        result.warn(warning, finding="zero_entrainment")
 
 
 @by_identity
@@ -84,12 +79,9 @@ def _metric_rows(k, component: str | None, convexity: bool, carried: str, moving
     label = f" of the {component} pair" if component else ""
     zeros = tuple(zero_crossings(k.theta, k.entrainment))
     metrics = tuple(one_case(pair_metrics(k, label, convexity, [zeros])))
-    warning = ""
-    if zeros and moving:
-        where = ", ".join(f"{math.degrees(a):.2f}" for a in zeros)
-        warning = (f"entrainment velocity passes through zero{label} at {where} deg: the "
-                   "steady EHL film vanishes there"
-                   + (carried or STEADY_FILM_NOTE))
+    from camtrain.effects.entrainment import zero_entrainment_warning
+
+    warning = zero_entrainment_warning(zeros, label, carried) if moving else ""
     return metrics, zeros, warning
 
 

@@ -55,8 +55,28 @@ def pin_of(deck):
     if r.pin == "bushing":
         return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
                                                      r.pin_clearance, eta, name="roller"),
-                   model=r.pin_model)
+                   model=r.pin_model, asperities=bushing_asperities(deck))
     return Pin(r.pin)
+
+
+def bushing_asperities(deck):
+    """The bushing's Greenwood-Tripp asperities with roller.pin_friction = "mixed" (None for
+    hydrodynamic): roughness roller.pin_roughness (else lubricant.roughness), the tribology
+    section's asperity and boundary parameters, the pair's reduced modulus (pin and roller of
+    the follower's material)."""
+    from camtrain.contact.model import CamContact
+    from camtrain.roller.pin import Asperities
+
+    r = deck.roller
+    if r.pin_friction != "mixed":
+        return None
+    trib = deck.tribology
+    sigma = r.pin_roughness if r.pin_roughness is not None else deck.lubricant.roughness
+    beta = sigma / trib.roughness_slope
+    return Asperities(sigma=sigma, beta=beta,
+                      zeta=trib.asperity_density_product / (beta * sigma),
+                      reduced_modulus=float(CamContact.from_deck(deck).reduced_modulus),
+                      tau0=trib.eyring_stress, m=trib.boundary_shear_coefficient)
 
 
 def settings_of(deck):
@@ -144,6 +164,7 @@ def run(deck, inputs, res):
     force = np.where(used, force, 0.0)
     write_columns(res, kin, load, field, film, force, contact)
     res.add_metrics(one_case(roller_metrics(kin.theta, field, load > 0.0)))
+    warn_zero_entrainment(res, kin.theta, field.entrainment, load > 0.0, deck)
     if field.revolutions and field.periodic_change > r.periodic_tolerance:
         res.warn(f"roller speed not periodic after {field.revolutions} revolutions (change "
                  f"{field.periodic_change:.3g} > roller.periodic_tolerance): raise "
@@ -151,6 +172,28 @@ def run(deck, inputs, res):
     return (RollerMotion(((MAIN, field),)), ContactFilm(((MAIN, film),), with_load=True),
             ContactFriction(((MAIN, FrictionField(force=force, hertz=hz, film=film, used=used)),),
                             model=f"roller ({r.traction})"))
+
+
+def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:
+    """The zero-entrainment finding of the cam contact at the roller's entrainment (V_c +
+    V_roll)/2, in the kinematics effect's words, on loaded angles: a locked roller's is the
+    non-rotating face's."""
+    import numpy as np
+
+    from camtrain.effects.entrainment import zero_entrainment_warning
+
+    if not deck.speed.omega > 0:
+        return
+    u = np.nan_to_num(entrainment)
+    nxt = np.roll(u, -1)
+    i = np.flatnonzero(loaded & np.roll(loaded, -1) & (u * nxt < 0.0))
+    step = np.diff(theta).mean()
+    zeros = [float(theta[j] + step * u[j] / (u[j] - nxt[j])) for j in i]
+    for angle in zeros:
+        res.add_event("zero_entrainment", angle, "the roller's entrainment velocity passes "
+                      "through zero: the steady EHL film vanishes")
+    if zeros:
+        res.warn(zero_entrainment_warning(zeros), finding="zero_entrainment")
 
 
 def write_columns(res, kin, load, field, film, force, contact) -> None:

@@ -83,8 +83,9 @@ class EngineFriction:
 
     ``speed`` [rad/s]; ``total`` the :class:`FlameTotal` [W, Pa]; ``valve_trains`` name ->
     friction power [W] of each included valve-train deck; ``valve_train_parts`` name -> {part:
-    W} (cams, bearings, guides); ``bearing_treatments`` {'ungrooved': W, 'grooved': W} of the
-    crank bearings (empty without them); ``missing`` the components left out (no data).
+    W} (cams, bearings, guides; arms: a pivoted follower's valve pad and pivot);
+    ``bearing_treatments`` {'ungrooved': W, 'grooved': W} of the crank bearings (empty
+    without them); ``missing`` the components left out (no data).
     """
 
     speed: float

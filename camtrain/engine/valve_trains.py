@@ -12,7 +12,10 @@ from dataclasses import dataclass
 
 
 def valve_train_parts(metrics: dict, lobes: int | None, trains: int = 1) -> dict:
-    """Friction power [W] by part from a valve-train run's metrics (name -> value in W).
+    """Friction power [W] by part from a valve-train run's metrics (name -> value in W): the
+    cams (the camshaft's drive, or the cam contact's friction power, which for a turning
+    roller holds its pin loss), the camshaft bearings, the guides and, for a pivoted follower
+    with [mechanism.arm], its valve pad and pivot ("arms", not in the cam's power).
 
     ``lobes``: the lobe count of its camshaft, or None for a single-cam deck (then ``trains``
     copies of it).
@@ -25,6 +28,8 @@ def valve_train_parts(metrics: dict, lobes: int | None, trains: int = 1) -> dict
         parts = {"cams": trains * metrics.get("power_loss_mean", 0.0), "bearings": 0.0}
         count = trains
     parts["guides"] = count * metrics.get("guide_power_mean", 0.0)
+    if "arm_power_mean" in metrics:   # a finger's or rocker's valve pad and pivot (one train)
+        parts["arms"] = count * metrics["arm_power_mean"]
     return parts
 
 

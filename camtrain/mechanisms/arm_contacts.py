@@ -153,18 +153,39 @@ def arm_contacts(k: Kinematics, g: PivotGeometry, load, *, mu=None, follower_ine
                  pad_radius: float, pad_shape: str = "cylindrical",
                  pad_width: float | None = None, pad_friction: float = 0.0,
                  pivot_radius: float = 0.0, pivot_friction: float = 0.0,
-                 reduced_modulus: float) -> ArmContacts:
+                 reduced_modulus: float, pivot_bearing=None,
+                 pivot_film: str = "short") -> ArmContacts:
     """Valve pad and pivot of pivoted follower ``k`` (geometry ``g``) under cam load ``load``
-    [N] (friction coefficient ``mu`` of the cam contact as the load was solved, or None)."""
+    [N] (friction coefficient ``mu`` of the cam contact as the load was solved, or None).
+    ``pivot_bearing`` (a :class:`camtrain.bearings.JournalBearing`): the rocker shaft as a
+    plain journal bearing instead of the Coulomb pivot (:func:`journal_pivot_torque`)."""
     rate = k.omega * k.gamma_d1
     slide = pad_sliding_speed(rate, k.gamma, g.B, g.kappa, pad_radius)
     # the pad only pushes: a negative balance means the arm would leave the valve tip there
     force = np.where(load > 0.0, np.maximum(pad_load(k, load, mu, follower_inertia), 0.0), 0.0)
     p_max, half = pad_hertz(force, pad_radius, reduced_modulus, shape=pad_shape, width=pad_width)
     reaction = np.where(load > 0.0, pivot_reaction(k, g, np.maximum(load, 0.0), force), 0.0)
-    torque = pivot_friction * pivot_radius * reaction
+    if pivot_bearing is None:
+        torque = pivot_friction * pivot_radius * reaction
+    else:
+        torque = journal_pivot_torque(pivot_bearing, rate, reaction, pivot_film)
     return ArmContacts(
         pad_sliding_speed=slide, pad_travel=pad_travel(k.gamma, g.gamma_b, g.B, g.kappa),
         pad_load=force, pad_max_pressure=p_max, pad_half_width=half,
         pad_friction_power=pad_friction * force * np.abs(slide), pivot_reaction=reaction,
         pivot_friction_torque=torque, pivot_friction_power=torque * np.abs(rate))
+
+
+def journal_pivot_torque(bearing, rate, reaction, film: str = "short") -> np.ndarray:
+    """Friction torque [N m] (>= 0) of a rocker shaft as a plain journal bearing: the bore
+    turns at the arm's angular speed ``rate`` [rad/s] about the fixed shaft under the pivot
+    reaction [N]; the steady eccentricity of the Ocvirk short bearing (``film = "short"``) or
+    of the finite-length Reynolds film (``"finite"``) at the mean speed rate/2, and the
+    Couette shear power over the complete film (Martin 1985, Yang 1992 eq. 1.22), torque =
+    power / rate (the plain bushing of :func:`camtrain.roller.pin.bushing_torque`, the roller's
+    pin). Quasi-steady: the shaft's squeeze film as the arm reverses is not modelled, so where
+    the arm stands (rate 0) the torque is 0."""
+    from camtrain.roller.pin import bushing_torque
+
+    return np.abs(bushing_torque(bearing, np.asarray(rate, dtype=float),
+                                 np.maximum(np.asarray(reaction, dtype=float), 0.0), film))

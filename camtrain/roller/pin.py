@@ -26,7 +26,16 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
   :func:`camtrain.bearings.models.finite_steady_eccentricity`, held at eps 0.99 beyond its
   curve), and its Couette shear power over the complete film
   (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r.
-  Hydrodynamic only: no mixed friction at very low speed.
+  Hydrodynamic by default. With ``asperities`` (the deck's ``roller.pin_friction = "mixed"``)
+  the Greenwood-Tripp asperity friction of the bushing is added where the minimum film
+  h_min = c (1 - eps) falls below lambda = 3 composite roughnesses: F_b = tau_0 A_a + m W_a
+  (Greenwood & Tripp 1970 asperity load and area, Teodorescu et al. 2005 eqs. 8-15, as the
+  cam-roller traction takes them, :func:`camtrain.formulas.teodorescu_2005_friction`) at the
+  pin radius, T_b = F_b d/2, with the nominal area the bushing's projected area d L (a named
+  choice: the asperities of a conformal bearing touch over its loaded arc, of the order of its
+  projection), W_a capped at the pin load. The Couette torque is kept whole (the film's share
+  of the area is not taken off: an upper bound of the viscous part). At rest no film carries
+  load and the asperities carry all of it: the breakaway torque (tau_0 A_a(0) + m W) d/2.
 """
 from __future__ import annotations
 
@@ -41,6 +50,22 @@ NU_N_LIMIT = 2000.0
 
 
 @dataclass(frozen=True)
+class Asperities:
+    """Greenwood-Tripp asperities of a plain bushing (SI): composite roughness sigma [m],
+    asperity radius beta [m], density zeta [1/m^2], reduced modulus E' [Pa], boundary shear
+    strength tau_0 [Pa] and its pressure coefficient m [-], film-parameter limit of mixed
+    lubrication (Teodorescu et al. 2005: 3)."""
+
+    sigma: float
+    beta: float
+    zeta: float
+    reduced_modulus: float
+    tau0: float
+    m: float
+    lambda_limit: float = 3.0
+
+
+@dataclass(frozen=True)
 class Pin:
     """The roller's pin (SI): ``kind``; needle: pitch diameter [m], oil kinematic viscosity
     [m^2/s], factors f_0, f_1 [-]; bushing: a :class:`camtrain.bearings.JournalBearing`."""
@@ -52,6 +77,7 @@ class Pin:
     f1: float = 0.0005
     bearing: object = None
     model: str = "short"
+    asperities: Asperities | None = None
 
     def __post_init__(self):
         if self.kind not in PIN_KINDS:
@@ -68,11 +94,13 @@ class Pin:
         if self.kind == "needle":
             return np.sign(w) * needle_torque(np.abs(w), F, self.pitch_diameter,
                                               self.kinematic_viscosity, self.f0, self.f1)
-        return bushing_torque(self.bearing, w, F, self.model)
+        return bushing_torque(self.bearing, w, F, self.model, self.asperities)
 
     def breakaway(self, load) -> np.ndarray:
         """Torque [N m] the pin holds at rest (the limit of |T| as w_r -> 0+)."""
         F = np.maximum(np.asarray(load, dtype=float), 0.0)
+        if self.kind == "bushing" and self.asperities is not None:
+            return rest_torque(self.bearing, self.asperities, F)
         if self.kind != "needle":
             return np.zeros(F.shape)
         return needle_torque(np.zeros(F.shape), F, self.pitch_diameter,
@@ -90,9 +118,11 @@ def needle_torque(speed, load, pitch_diameter, kinematic_viscosity, f0, f1):
     return (m0 + m1) * 1e-3                                             # N mm -> N m
 
 
-def bushing_torque(bearing, omega_roller, load, model: str = "short") -> np.ndarray:
-    """Hydrodynamic friction torque [N m] of a plain bushing (see the module docstring);
-    ``model`` short (Ocvirk) or finite (the finite-length Reynolds film's steady curve)."""
+def bushing_torque(bearing, omega_roller, load, model: str = "short",
+                   asperities: Asperities | None = None) -> np.ndarray:
+    """Friction torque [N m] of a plain bushing (see the module docstring), signed as w_r;
+    ``model`` short (Ocvirk) or finite (the finite-length Reynolds film's steady curve);
+    ``asperities`` adds the Greenwood-Tripp asperity friction of a mixed film."""
     from camtrain.bearings.models import finite_steady_eccentricity
     from camtrain.bearings.power import shear_power
     from camtrain.bearings.steady import steady_eccentricity
@@ -109,4 +139,42 @@ def bushing_torque(bearing, omega_roller, load, model: str = "short") -> np.ndar
             eps = np.atleast_1d(steady_eccentricity(bearing, F, 0.5 * ww))
         power = shear_power(bearing, eps, -0.5 * np.pi, ww, film="2pi")
         out[turning] = power / ww
+        if asperities is not None:
+            out[turning] += np.sign(ww) * asperity_torque(
+                bearing, asperities, np.minimum(eps, 1.0), F)
+    return out
+
+
+def rest_torque(bearing, asperities: Asperities, load) -> np.ndarray:
+    """Breakaway torque [N m] of a mixed bushing at rest: no film carries load, so the
+    asperities carry all of it, (tau_0 A_a(0) + m W) d/2 with A_a(0) the Greenwood-Tripp area
+    at lambda = 0 (capped at the projected area d L)."""
+    from camtrain.formulas.mixed import greenwood_tripp_1970_area
+
+    a = asperities
+    area = bearing.diameter * bearing.length
+    touching = min(float(greenwood_tripp_1970_area(0.0, area, a.sigma, a.beta, a.zeta)), area)
+    return (a.tau0 * touching + a.m * np.asarray(load, dtype=float)) * 0.5 * bearing.diameter
+
+
+def asperity_torque(bearing, asperities: Asperities, eccentricity, load) -> np.ndarray:
+    """Greenwood-Tripp asperity friction torque [N m] (>= 0) of a bushing at eccentricity
+    ratio eps under ``load`` [N]: (tau_0 A_a + m W_a) d/2 at h_min = c (1 - eps) over the
+    projected area d L, W_a <= load (see the module docstring)."""
+    from camtrain.formulas import teodorescu_2005_friction
+
+    a = asperities
+    eps = np.asarray(eccentricity, dtype=float)
+    W = np.broadcast_to(np.asarray(load, dtype=float), eps.shape)
+    lam = bearing.clearance * (1.0 - eps) / a.sigma
+    out = np.zeros(eps.shape)
+    mixed = lam < a.lambda_limit
+    if np.count_nonzero(mixed):
+        area = bearing.diameter * bearing.length
+        n = np.count_nonzero(mixed)
+        t = teodorescu_2005_friction(W[mixed], np.full(n, area), lam[mixed], a.tau0, 0.0, a.m,
+                                     a.reduced_modulus, np.full(n, a.sigma),
+                                     np.full(n, a.beta), np.full(n, a.zeta),
+                                     lambda_limit=a.lambda_limit)
+        out[mixed] = t.boundary * 0.5 * bearing.diameter
     return out
