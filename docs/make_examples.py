@@ -144,6 +144,11 @@ PUBLISHED = {
                       "published number to compare. The roller does not turn here (its rotation "
                       "is a contact effect of its own), so power_loss_mean is a sliding loss; "
                       "see docs/mechanism_roller.md.", []),
+    "roller_finger_hla": ("The roller finger follower of decks/roller_finger.toml made elastic, "
+                          "its hydraulic lash adjuster marched under the ball pivot (referred to "
+                          "the valve by the lever ratio): plunger collapse per event and the "
+                          "valve lift lost to it. Stiffnesses and adjuster data are assumed "
+                          "(flagged in the deck); see docs/lash_adjusters.md.", []),
     "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
                          "flagged in the deck): the valve clearance taken up on the ramp, "
                          "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),

@@ -139,6 +139,10 @@ def chamber_step(hr, hp, x0, big_x, big_xd, sigma, h):
         else:
             hi = p
         pn = p - r / dr if dr < 0.0 else lo
+        if dr < 0.0 and abs(pn - p) <= 1e-8 * (abs(p) + P_ATM) and lo <= pn <= hi:
+            # converged: tested before the bracket, since at the root pn rounds onto p, the
+            # bracket's end (a bisection of the whole bracket from there took 40 evaluations)
+            return pn, _force_at(pn, big_x, sigma, hr)[0], qin, qout
         if pn <= lo and not floor_known:
             floor_known = True
             rf, _, qf, qo = _residual(hr.p_floor, big_x, big_xd, sigma, h, start, hr)
