@@ -122,16 +122,18 @@ def chamber_step(hr, hp, x0, big_x, big_xd, sigma, h):
     """Chamber pressure at the end of a step of length h, the plunger's end extension and speed
     being x1 = X + sigma F, x1' = X' + 2 sigma/h F under the plunger force F(p1) (the train's
     Newmark step with the force as unknown, ``sigma`` = ratio^2 h^2/4 times the pair's
-    compliance). ``hp`` = (p0, q_in0, q_out0) at the start. Safeguarded Newton on the monotone
-    residual (bisection when a step leaves the bracket); below the vapour pressure the chamber
-    cavitates and its pressure stays there. Returns (p1, F, q_in1, q_out1)."""
+    compliance). ``hp`` = (p0, q_in0, q_out0, dp/dt of the last step) at the start.
+    Safeguarded Newton on the monotone residual (bisection when a step leaves the bracket),
+    from the last step's pressure rate carried over h (a first guess that saves about one
+    residual per step while the pressure rises or falls); below the vapour pressure the
+    chamber cavitates and its pressure stays there. Returns (p1, F, q_in1, q_out1)."""
     p0 = hp[0]
     ln0 = _ln_phi(p0, hr)[0]
     v0 = max(hr.v_dead + hr.area * x0, 1e-3 * hr.v_dead)
     start = (ln0, v0, (hp[1] - hp[2]) / v0, x0)
     lo, hi = hr.p_floor, 4.0e9
     floor_known = False
-    p = min(max(p0, lo), hi)
+    p = min(max(p0 + hp[3] * h, lo), hi)
     for _ in range(100):
         r, dr, qin, qout = _residual(p, big_x, big_xd, sigma, h, start, hr)
         if r > 0.0:

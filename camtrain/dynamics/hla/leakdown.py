@@ -50,7 +50,7 @@ def _leakdown_march(hr, plunger, steps, marks, out):
     second."""
     m, k_s, f_s0, load = plunger[0], plunger[1], plunger[2], plunger[3]
     x, xd, acc, t = hr.stroke, 0.0, 0.0, 0.0
-    hp = np.zeros(3)
+    hp = np.zeros(4)
     hp[0] = 0.0
     sudden = steps[3] <= 0.0   # no ramp: the full load from t = 0 (the stop takes no pull)
     acc = min(f_s0 - load, 0.0) / m if sudden else 0.0
@@ -75,4 +75,4 @@ def _leakdown_march(hr, plunger, steps, marks, out):
             out[2] = p1
             return
         x, xd, acc, t = x1, xd + 0.5 * h * (acc + a1), a1, t + h
-        hp[0], hp[1], hp[2] = p1, qin, qout
+        hp[0], hp[1], hp[2], hp[3] = p1, qin, qout, (p1 - hp[0]) / h
