@@ -45,7 +45,9 @@ def _ln_phi(p, hr):
     """ln phi(p) and d ln phi / dp = -1/K_e (the free-air mixture)."""
     liquid = (1.0 - hr.air) * math.exp(-p / hr.k_liq)
     p_abs = max(p + P_ATM, 1e-9)
-    air = hr.air * (P_ATM / p_abs) ** (1.0 / hr.n_poly)
+    ratio = P_ATM / p_abs
+    # isothermal air (n = 1, the default): the ratio itself, which pow returns exactly too
+    air = hr.air * (ratio if hr.n_poly == 1.0 else ratio ** (1.0 / hr.n_poly))
     phi = liquid + air
     dphi = -liquid / hr.k_liq - air / (hr.n_poly * p_abs)
     return math.log(phi), dphi / phi
