@@ -369,9 +369,8 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     v = np.zeros(n)
     a = -(model.stiffness @ u) / model.mass
     act = np.zeros(2, dtype=np.bool_)
-    from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
-
     from camtrain.dynamics.hla import no_adjuster
+    from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
 
     out = Marched(np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps)),
                   np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1),

@@ -101,9 +101,9 @@ def test_march_with_the_adjuster_converges_at_its_observed_order(hla_deck, schem
 @pytest.mark.convergence
 def test_default_step_is_stable_and_accurate(hla_deck):
     """At the deck's default step the valve lift is within 2e-5 of the lift and the chamber
-    pressure within 1 % of its peak of a march 16 times finer; at a step 3.5 times coarser (2 per grid interval) the
-    backward-Euler chamber stays bounded (no growing oscillation while the check valve is
-    open, where the chamber is stiffest)."""
+    pressure within 1 % of its peak of a march 16 times finer; at a step 3.5 times coarser
+    (2 per grid interval) the backward-Euler chamber stays bounded (no growing oscillation
+    while the check valve is open, where the chamber is stiffest)."""
     deck, kin = hla_deck
     fine, s = _march_only(deck, kin, "backward_euler", 16)
     default = _march_only(deck, kin, "backward_euler", 1)[0]

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from camtrain.dynamics.hla.element import (
@@ -15,6 +14,7 @@ from camtrain.dynamics.hla.element import (
     couette_coefficient,
 )
 from camtrain.dynamics.records import Hydraulic
+
 
 def hydraulic_record(adj: LashAdjuster, follower: int, plunger: int, ratio: float,
                      w0: float) -> Hydraulic:

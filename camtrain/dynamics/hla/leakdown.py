@@ -10,6 +10,7 @@ from numba import njit
 from camtrain.dynamics.hla.chamber import chamber_step, hydraulic_record
 from camtrain.dynamics.hla.element import LashAdjuster, leakdown_time
 
+
 def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3,
                   start: float = 0.1e-3, per_period: float = 4.0):
     """The workshop leak-down test, marched: the plunger at its full extension, the chamber, the
@@ -19,8 +20,9 @@ def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3
     and then held (the mass, the spring, the compressible chamber, the leak and the check valve
     of the module docstring). The plunger by the Newmark average acceleration, the chamber by
     :func:`chamber_step` (the train's own step), at 1/20 of that period over the first 400
-    periods, then at 1/``per_period`` of it. Returns (time from ``start`` to ``start + travel`` of collapse [s], the
-    time at the start mark [s], the chamber pressure at the end mark [Pa])."""
+    periods, then at 1/``per_period`` of it. Returns (time from ``start`` to ``start +
+    travel`` of collapse [s], the time at the start mark [s], the chamber pressure at the end
+    mark [Pa])."""
     from dataclasses import replace
 
     adj = replace(adj, supply_pressure=0.0, rest_extension=adj.stroke)
