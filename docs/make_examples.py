@@ -144,6 +144,11 @@ PUBLISHED = {
                       "published number to compare. The roller turns on a needle bearing "
                       "([roller], quasi-static), so power_loss_mean is the roller's loss at the "
                       "cam; see docs/mechanism_roller.md and docs/rollers.md.", []),
+    "roller_finger_hla": ("The roller finger follower of decks/roller_finger.toml made elastic, "
+                          "its hydraulic lash adjuster marched under the ball pivot (referred to "
+                          "the valve by the lever ratio): plunger collapse per event and the "
+                          "valve lift lost to it. Stiffnesses and adjuster data are assumed "
+                          "(flagged in the deck); see docs/lash_adjusters.md.", []),
     "pushrod_dynamics": ("A push-rod train made elastic (masses, stiffness and damping assumed, "
                          "flagged in the deck): the valve clearance taken up on the ramp, "
                          "separations and valve bounce at 2500 rpm; see docs/dynamics.md.", []),

@@ -21,6 +21,14 @@ from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one sch
 )
 from camtrain.deck.schema_design import Design
 from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
+from camtrain.deck.schema_follower import (
+    ArmContacts,
+    Dyson,
+    Layout,
+    RollerFace,
+    dyson_from_layout,
+    layout_problems,
+)
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -35,14 +43,6 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     Table,
     WilliamsElementary,
     WilliamsLowJerk,
-)
-from camtrain.deck.schema_follower import (
-    ArmContacts,
-    Dyson,
-    Layout,
-    RollerFace,
-    dyson_from_layout,
-    layout_problems,
 )
 from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_tribology import (  # noqa: F401

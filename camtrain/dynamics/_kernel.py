@@ -205,6 +205,7 @@ def _hydraulic(tr, hp, u, Ainv, A, h, out, work):
     for i in range(z.size):
         a1[i] += hla.ratio * force * z[i]
     out[3][0], out[3][1], out[3][2] = p1, qin, qout
+    out[3][3] = (p1 - hp[0]) / h if h > 0.0 else hp[3]   # the next step's first guess
 
 
 @njit(cache=True)

@@ -184,7 +184,7 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
             runner.act = start.contact_force[:, i0] > 0.0
             if start.hydraulic is not None and model.hla is not None:
                 runner.hp[:] = (start.hydraulic[0, i0], start.hydraulic[1, i0],
-                                start.hydraulic[2, i0])
+                                start.hydraulic[2, i0], 0.0)
     else:
         from camtrain.dynamics.adaptive import Adaptive
 
@@ -337,10 +337,10 @@ def _hydraulic_start(model: TrainModel, u0):
     from camtrain.dynamics.hla import hydraulic_record, no_adjuster
 
     if model.hla is None:
-        return no_adjuster(), np.zeros(3)
+        return no_adjuster(), np.zeros(4)
     w0 = float(u0[model.follower] - u0[model.plunger])
     record = hydraulic_record(model.hla, model.follower, model.plunger, model.hla_ratio, w0)
-    return record, np.array([model.hla.supply_pressure, 0.0, 0.0])
+    return record, np.array([model.hla.supply_pressure, 0.0, 0.0, 0.0])
 
 
 def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:
@@ -369,9 +369,8 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     v = np.zeros(n)
     a = -(model.stiffness @ u) / model.mass
     act = np.zeros(2, dtype=np.bool_)
-    from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
-
     from camtrain.dynamics.hla import no_adjuster
+    from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
 
     out = Marched(np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps)),
                   np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1),
@@ -381,11 +380,11 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     drive = Inputs(inputs, inputs, dt, 1, 0.0)
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
-        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2), np.zeros(3))
+        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2), np.zeros(4))
         from camtrain.dynamics._explicit import central_difference_march
 
         central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
-        state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(3))
+        state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(4))
         _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
     return out.u

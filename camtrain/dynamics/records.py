@@ -62,7 +62,8 @@ Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h")
 
 #: the single train's state, updated in place: u, v, a, the contact states ``act``; the
 #: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``; the
-#: adjuster's chamber ``hp`` = (pressure [Pa], check-valve flow, leak flow [m^3/s])
+#: adjuster's chamber ``hp`` = (pressure [Pa], check-valve flow, leak flow [m^3/s], the last
+#: step's pressure rate [Pa/s]: the chamber solve's first guess)
 TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp")
 
 

@@ -92,3 +92,34 @@ def test_adjuster_in_a_push_rod_lifter_moves_with_the_push_rod():
     model = setup(deck, kinematics_of(deck)).model
     assert model.hla_ratio == pytest.approx(1.0 / pushrod_ratio(deck), rel=1e-12)
     assert model.hla_ratio < 1.0
+
+
+def test_roller_finger_deck_with_its_adjuster_at_the_pivot_collapses_and_loses_lift():
+    """decks/roller_finger_hla.toml: a roller finger follower laid out by [mechanism.layout],
+    its adjuster under the ball pivot. The plunger is referred by the lever ratio of the
+    layout's kinematics on the base circle, and the run reports the plunger's collapse per event
+    and the valve lift lost to it."""
+    import numpy as np
+
+    from camtrain import api
+    from camtrain.assemble.dynamics import setup
+    from tests.dynamics.conftest import kinematics_of
+
+    loaded = api.load(str(DECKS / "roller_finger_hla.toml"))
+    deck = loaded.model
+    assert deck.mechanism.follower == "roller" and deck.mechanism.layout is not None
+    kin = kinematics_of(deck)
+    model = setup(deck, kin).model
+    ratio = float(np.asarray(kin.rocker_ratio)[int(np.argmin(kin.valve_lift))])
+    assert ratio > 1.0
+    assert model.hla_ratio == pytest.approx(1.0 / (ratio - 1.0), rel=1e-12)
+    result = api.run(loaded)
+    metrics = result.metrics
+    assert {"hla_pressure", "hla_extension", "valve_lift_loss"} <= set(result.columns)
+    # the chamber carries the pivot's share of the valve load, at least the spring's installed
+    # 224 N times (R - 1), over the 12 mm plunger
+    assert metrics["hla_pressure_max"].value > 224.0 * (ratio - 1.0) / (np.pi / 4 * 0.012 ** 2)
+    collapse = metrics["hla_collapse"].value
+    assert 0.0 < collapse < 3.0e-3   # m: some collapse, less than the 3 mm stroke
+    assert metrics["valve_lift_loss_max"].value > 0.0
+    assert np.all(np.isfinite(result.columns["valve_lift_loss"].values))

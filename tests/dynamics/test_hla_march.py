@@ -101,9 +101,9 @@ def test_march_with_the_adjuster_converges_at_its_observed_order(hla_deck, schem
 @pytest.mark.convergence
 def test_default_step_is_stable_and_accurate(hla_deck):
     """At the deck's default step the valve lift is within 2e-5 of the lift and the chamber
-    pressure within 1 % of its peak of a march 16 times finer; at a step 3.5 times coarser (2 per grid interval) the
-    backward-Euler chamber stays bounded (no growing oscillation while the check valve is
-    open, where the chamber is stiffest)."""
+    pressure within 1 % of its peak of a march 16 times finer; at a step 3.5 times coarser
+    (2 per grid interval) the backward-Euler chamber stays bounded (no growing oscillation
+    while the check valve is open, where the chamber is stiffest)."""
     deck, kin = hla_deck
     fine, s = _march_only(deck, kin, "backward_euler", 16)
     default = _march_only(deck, kin, "backward_euler", 1)[0]
@@ -124,3 +124,22 @@ def test_default_step_is_stable_and_accurate(hla_deck):
 def _fitted_order(errors):
     h = np.array([1.0, 0.5, 0.25])
     return float(np.polyfit(np.log(h), np.log(errors), 1)[0])
+
+
+@pytest.mark.parametrize("rpm", [1500.0, 3000.0, 6000.0])
+def test_one_step_per_grid_interval_gives_a_finite_march(hla_deck, rpm):
+    """The coarsest step the deck can ask for (steps_per_degree low enough that one step spans
+    a grid interval: 1440 steps a revolution), below and far above the pump-up speed, with the
+    trapezoidal chamber too: the march ends with finite states and chamber pressures, bounded
+    by the adjuster's stroke (the chamber solve once bisected its whole bracket here)."""
+    from camtrain.assemble.dynamics import setup
+    from camtrain.dynamics import march
+
+    deck, kin = hla_deck
+    s = setup(deck, kin, omega=rpm * math.pi / 30)
+    for scheme in ("backward_euler", "trapezoidal"):
+        model = replace(s.model, hla=replace(s.model.hla, scheme=scheme))
+        resp = march(model, s.cam, s.base, replace(s.settings, substeps=1))
+        assert resp.steps == kin.theta.size
+        assert np.all(np.isfinite(resp.u)) and np.all(np.isfinite(resp.hydraulic))
+        assert np.all(resp.hydraulic[3] <= model.hla.stroke + 1e-4)

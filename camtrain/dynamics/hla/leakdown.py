@@ -10,6 +10,7 @@ from numba import njit
 from camtrain.dynamics.hla.chamber import chamber_step, hydraulic_record
 from camtrain.dynamics.hla.element import LashAdjuster, leakdown_time
 
+
 def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3,
                   start: float = 0.1e-3, per_period: float = 4.0):
     """The workshop leak-down test, marched: the plunger at its full extension, the chamber, the
@@ -19,8 +20,9 @@ def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3
     and then held (the mass, the spring, the compressible chamber, the leak and the check valve
     of the module docstring). The plunger by the Newmark average acceleration, the chamber by
     :func:`chamber_step` (the train's own step), at 1/20 of that period over the first 400
-    periods, then at 1/``per_period`` of it. Returns (time from ``start`` to ``start + travel`` of collapse [s], the
-    time at the start mark [s], the chamber pressure at the end mark [Pa])."""
+    periods, then at 1/``per_period`` of it. Returns (time from ``start`` to ``start +
+    travel`` of collapse [s], the time at the start mark [s], the chamber pressure at the end
+    mark [Pa])."""
     from dataclasses import replace
 
     adj = replace(adj, supply_pressure=0.0, rest_extension=adj.stroke)
@@ -50,7 +52,7 @@ def _leakdown_march(hr, plunger, steps, marks, out):
     second."""
     m, k_s, f_s0, load = plunger[0], plunger[1], plunger[2], plunger[3]
     x, xd, acc, t = hr.stroke, 0.0, 0.0, 0.0
-    hp = np.zeros(3)
+    hp = np.zeros(4)
     hp[0] = 0.0
     sudden = steps[3] <= 0.0   # no ramp: the full load from t = 0 (the stop takes no pull)
     acc = min(f_s0 - load, 0.0) / m if sudden else 0.0
@@ -75,4 +77,4 @@ def _leakdown_march(hr, plunger, steps, marks, out):
             out[2] = p1
             return
         x, xd, acc, t = x1, xd + 0.5 * h * (acc + a1), a1, t + h
-        hp[0], hp[1], hp[2] = p1, qin, qout
+        hp[0], hp[1], hp[2], hp[3] = p1, qin, qout, (p1 - hp[0]) / h

@@ -7,6 +7,7 @@ import numpy as np
 
 from camtrain.dynamics.hla.element import LashAdjuster
 
+
 def with_lash_adjuster(model, adj: LashAdjuster, ratio: float = 1.0):
     """The train ``model`` (a :class:`camtrain.dynamics.train.TrainModel` with a follower node,
     built without a constant adjuster load) with ``adj`` between its follower node (the body)
