@@ -53,7 +53,7 @@ def from_golden(name: str) -> dict:
             "key_metrics": [m for m in declared if m in produced]}
 
 
-def _axes_drawn(fig) -> list[str]:
+def axes_drawn(fig) -> list[str]:
     """The visible axes of a saved figure, each as ``title: lines, collections, images``
     (the panels a sheet holds and how many curves, fills or maps each drew)."""
     return [f"{ax.get_title()}: {len(ax.lines)}, {len(ax.collections)}, {len(ax.images)}"
@@ -62,7 +62,7 @@ def _axes_drawn(fig) -> list[str]:
 
 def sheets_written(name: str) -> tuple[list[str], dict[str, list[str]]]:
     """The PNG files a run of deck ``name`` writes with ``--plots sheets`` (by stem), and the
-    panels each holds (:func:`_axes_drawn`, recorded as every sheet is saved)."""
+    panels each holds (:func:`axes_drawn`, recorded as every sheet is saved)."""
     from camtrain import api
     from camtrain.report import canvas
 
@@ -71,7 +71,7 @@ def sheets_written(name: str) -> tuple[list[str], dict[str, list[str]]]:
     save = canvas.save_sheet
 
     def recording(fig, stem, formats):
-        panels[Path(stem).name] = _axes_drawn(fig)
+        panels[Path(stem).name] = axes_drawn(fig)
         return save(fig, stem, formats)
 
     canvas.save_sheet = recording
