@@ -46,6 +46,11 @@ class EffectSpec:
     #: (camtrain.report.sheets: SHEETS and OTHER_SHEETS); a sheet is written when an effect
     #: that ran declares it and its panels have something to draw
     sheets: tuple[str, ...] = ()
+    #: the cycle panels this effect's products feed, by the names the report registers
+    #: (camtrain.report.sheets.PANELS, "profile" for the cam drawn to scale): a cycle sheet
+    #: holds those of its panels that an effect that ran declares (a panel may still leave
+    #: itself out when the run has none of its curves, e.g. a flat follower's pressure angle)
+    panels: tuple[str, ...] = ()
     #: the resolution knobs of ``camtrain accuracy`` that change this effect's numbers, by name
     #: (camtrain.study.accuracy_knobs.KNOBS; a knob's own test on the deck narrows it further)
     knobs: tuple[str, ...] = ()
@@ -94,6 +99,8 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "surface, entrainment and sliding velocities",
                produces=("TrainKinematics",),
                key_metrics=("max_lift", "max_velocity", "min_acceleration", "max_acceleration"),
+               panels=("lift", "velocity", "acceleration", "jerk", "eccentricity", "pressure_angle",
+                       "velocities", "radii", "profile"),
                sheets=("kinematics", "contact", "profile"), sections=("cycle_table",),
                knobs=("angle_points", "table_smoothing"),
                accuracy_metrics=("cam_radius_at_max_lift", "equivalent_radius_at_max_lift")),
@@ -101,6 +108,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "contact load from the rigid-train D'Alembert balance; loss of contact",
                needs=("TrainKinematics",), produces=("ContactLoad",),
                key_metrics=("load_max", "load_min", "bounce_speed"),
+               panels=("load",),
                sheets=("contact",), accuracy_metrics=("load_max", "bounce_speed")),
     EffectSpec("dynamics", "camtrain.effects.dynamics",
                "contact load of the elastic train in time: separation, spring surge, valve "
@@ -109,6 +117,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                key_metrics=("load_max", "dynamic_load_ratio", "separations", "jumps",
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
                             "valve_acceleration_max"),
+               panels=("load", "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"),
                sheets=("contact", "dynamics"),
                knobs=("steps_per_degree", "spring_elements", "dynamics_rtol",
                       "adjuster_cycles"),
@@ -118,6 +127,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "Hertz contact half-width and maximum pressure",
                needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",),
                key_metrics=("hertz_max", "hertz_at_max_lift"),
+               panels=("hertz",),
                sheets=("contact",), accuracy_metrics=("hertz_max",)),
     EffectSpec("roller", "camtrain.effects.roller",
                "roller turning on its pin: speed from its torque balance, slip, slide-roll "
@@ -127,6 +137,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                key_metrics=("roller_slip_max", "roller_power_total", "roller_power_pin",
                             "roller_power_rolling", "roller_power_sliding",
                             "film_min_at_max_lift"),
+               panels=("film_angle", "film_position", "friction_coefficient", "friction_force"),
                sheets=("roller",), supersedes=("zero_entrainment",),
                knobs=("roller_substeps", "roller_table_points", "roller_tolerance"),
                accuracy_metrics=("roller_slip_max", "roller_power_total", "roller_srr_min")),
@@ -134,6 +145,8 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
                needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",),
                key_metrics=("film_min_at_max_lift", "film_min"),
+               panels=("film_angle", "film_position", "transient_film", "film_pressures",
+                       "elastic_films", "film_map", "pressure_over_hertz"),
                sheets=("contact", "transient_film", "elastic_film", "profile"),
                knobs=("film_angle_step", "film_nodes", "film_zone_width", "film_tolerance",
                       "ehl_nodes", "ehl_inlet", "ehl_angle_step", "ehl_tolerance"),
@@ -144,12 +157,14 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                needs=("TrainKinematics", "ContactLoad", "ContactHertz", "ContactFilm"),
                produces=("ContactFriction",),
                key_metrics=("boundary_fraction",),
+               panels=("friction_coefficient", "friction_force"),
                sheets=("friction",), knobs=("friction_tolerance",)),
     EffectSpec("power", "camtrain.effects.power",
                "friction torque about the cam axis and power loss",
                needs=("TrainKinematics", "ContactLoad", "ContactFriction"),
                produces=("CamTorque",),
                key_metrics=("power_loss_mean", "friction_torque_peak"),
+               panels=("torque", "power"),
                sheets=("friction",), accuracy_metrics=("power_loss_mean",)),
     EffectSpec("guides", "camtrain.effects.guides",
                "follower/guide and valve/guide Couette shear losses (Yang 1992 eq. 3.29)",
@@ -173,6 +188,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                needs=("CamshaftLoads",),
                produces=("ElasticCamshaft",),
                key_metrics=("shaft_deflection_max", "shaft_twist_max"),
+               panels=("shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"),
                sheets=("camshaft", "lobes"), knobs=("shaft_stations",),
                accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
                                  "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
@@ -183,6 +199,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                needs=("TrainKinematics", "ContactLoad", "CamshaftLoads"),
                produces=("ElasticCamshaft",), rank=1,
                key_metrics=("shaft_deflection_max", "shaft_twist_max"),
+               panels=("shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"),
                sheets=("camshaft", "lobes"),
                knobs=("shaft_stations", "steps_per_degree", "coupling_iterations"),
                accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
@@ -321,6 +338,18 @@ def planned_products(plan) -> frozenset[str]:
     if plan is None:
         return frozenset()
     return frozenset(p for spec in declared_effects(plan) for p in spec.produces)
+
+
+#: the panels of a result without a plan: the lift law's columns alone (``camtrain lift``)
+LIFT_PANELS = ("lift", "velocity", "acceleration", "jerk")
+
+
+def declared_panels(plan) -> frozenset[str]:
+    """The cycle panels the effects of a plan declare (EffectSpec.panels); without a plan
+    (a lift-only run) the lift law's, LIFT_PANELS."""
+    if plan is None:
+        return frozenset(LIFT_PANELS)
+    return frozenset(p for spec in declared_effects(plan) for p in spec.panels)
 
 
 def kind_of(deck) -> DeckKind:

@@ -1,7 +1,9 @@
-"""The plot panels: each draws one Ball-style graph into an axes, if its columns exist.
+"""The plot panels: each draws one Ball-style graph into an axes.
 
-Every panel function takes (ax, result, ctx) and returns False, drawing nothing, when the result
-lacks what it needs; sheets then simply leave it out. Values are shown in display units.
+A sheet calls the panels the effects that ran declare (EffectSpec.panels). Every panel function
+takes (ax, result, ctx) and draws the curves of its panel the run has; it returns False, drawing
+nothing, when it has none (a flat follower's pressure angle, a film run without the transient
+film's steady reference), and the sheet leaves it out. Values are shown in display units.
 """
 from __future__ import annotations
 
@@ -262,8 +264,6 @@ def film_position(ax, r, ctx):
 # --------------------------------------------------------------------------- loads and friction
 
 def load(ax, r, ctx):
-    if "ContactLoad" not in made(r):
-        return False
     _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
     _shade(ax, ctx.findings.clearance, COLORS["clearance"], "no load (clearance)")
     return _cycle(ax, r, ctx, ["load", "valve_force"], ylabel="force", legend=True, zero=True)
@@ -274,8 +274,6 @@ def hertz(ax, r, ctx):
 
 
 def friction_coefficient(ax, r, ctx):
-    if "ContactFriction" not in made(r):
-        return False
     _shade(ax, ctx.findings.boundary, COLORS["boundary"], "boundary (λ < 1)")
     return _cycle(ax, r, ctx, ["friction_coefficient"], legend=bool(ctx.findings.boundary))
 
@@ -290,8 +288,6 @@ def torque(ax, r, ctx):
 
 
 def power(ax, r, ctx):
-    if "CamTorque" not in made(r):
-        return False
     y, unit = shown(r, "power_loss")
     ax.plot(ctx.theta, _finite(y), color=COLORS["main"], label="instantaneous")
     mean = float(np.nanmean(y))
@@ -359,8 +355,6 @@ def film_pressures(ax, r, ctx):
 #: name -> (title, function); the order is the order on the sheets
 def dynamic_load(ax, r, ctx):
     """The elastic train's contact load over the rigid train's (its quasi-static limit)."""
-    if not has(r, "load", "rigid_load"):
-        return False
     _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
     return _cycle(ax, r, ctx, ["load", "rigid_load"], ylabel="contact load", zero=True,
                   labels={"load": "elastic train", "rigid_load": "rigid train"}, legend=True)
@@ -368,8 +362,6 @@ def dynamic_load(ax, r, ctx):
 
 def valve_motion(ax, r, ctx):
     """Valve lift of the elastic train over the cam's (rigid) valve lift, and the follower."""
-    if "valve_lift_dynamic" not in r.columns:
-        return False
     return _cycle(ax, r, ctx, ["valve_lift", "valve_lift_dynamic", "follower_lift"],
                   ylabel="lift", labels={"valve_lift": "rigid (cam)",
                                          "valve_lift_dynamic": "valve, elastic",
@@ -377,8 +369,6 @@ def valve_motion(ax, r, ctx):
 
 
 def valve_acceleration(ax, r, ctx):
-    if "valve_lift_dynamic" not in r.columns:   # the rigid train's kinematics have one too
-        return False
     return _cycle(ax, r, ctx, ["valve_acceleration", "follower_acceleration"],
                   ylabel="acceleration", zero=True, legend=True,
                   labels={"valve_acceleration": "valve", "follower_acceleration": "follower"})
@@ -386,8 +376,6 @@ def valve_acceleration(ax, r, ctx):
 
 def spring_forces(ax, r, ctx):
     """Spring force at the head and the retainer (they differ by surge) and the seat force."""
-    if "seat_force" not in r.columns:
-        return False
     return _cycle(ax, r, ctx, ["spring_force", "spring_force_retainer", "seat_force"],
                   ylabel="force", legend=True,
                   labels={"spring_force": "spring at the head",

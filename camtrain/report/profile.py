@@ -10,13 +10,10 @@ import math
 
 import numpy as np
 
-from camtrain.report.findings import Findings
+from camtrain.catalogue import declared_panels, planned_products
+from camtrain.report.findings import Findings, in_contact
 from camtrain.report.style import COLORS
 from camtrain.result import Result
-
-
-def can_draw(r: Result) -> bool:
-    return "contact_x" in r.columns and "contact_y" in r.columns
 
 
 def _nice(x: float) -> float:
@@ -42,7 +39,7 @@ def _outward_normals(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
 def draw(ax, r: Result, findings: Findings, base_radius: float | None = None) -> bool:
     """Profile [mm] with the scaled film; returns False when the contact locus is missing."""
-    if not can_draw(r):
+    if "profile" not in declared_panels(r.plan):   # the kinematics effect's contact locus
         return False
     from matplotlib.collections import PolyCollection
 
@@ -57,10 +54,11 @@ def draw(ax, r: Result, findings: Findings, base_radius: float | None = None) ->
                 label=f"base circle r_B = {rb:g} mm", zorder=2)
     ax.plot([0], [0], "+", color="black", ms=8)
     scale_text = ""
-    if "film_min" in r.columns:
+    if "ContactFilm" in planned_products(r.plan):
         h_um = np.nan_to_num(r["film_min"] * 1e6, nan=0.0, posinf=0.0)
-        if "load" in r.columns:
-            h_um = np.where(r["load"] > 0, h_um, 0.0)    # no film drawn where contact is lost
+        contact = in_contact(r)   # with a ContactLoad: no film drawn where contact is lost
+        if contact is not None:
+            h_um = np.where(contact, h_um, 0.0)
         top = float(np.percentile(h_um, 98)) if np.any(h_um > 0) else 0.0
         if top > 0:
             mag = _nice(0.2 * size / (top * 1e-3))

@@ -1,7 +1,8 @@
 """Plot sheets like Ball's GRAFIT pages (A4, header block, panels) and each panel on its own.
 
-A sheet holds only the panels whose columns the run produced, so a lift-only or no-load run gets
-clean, shorter sheets; a sheet with no panels at all is not written. Files: ``sheet_<name>.png``
+A sheet holds only the panels the effects that ran declare (EffectSpec.panels) and that have
+something to draw, so a lift-only or no-load run gets clean, shorter sheets; a sheet with no
+panels at all is not written. Files: ``sheet_<name>.png``
 and ``.pdf``, and ``panels/<panel>.png`` and ``.pdf``.
 """
 from __future__ import annotations
@@ -11,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from camtrain.catalogue import declared_panels
 from camtrain.report import profile
 from camtrain.report.findings import Findings, find
 from camtrain.report.header import title_line
@@ -93,8 +95,9 @@ def _sheet(page: Page, result: Result, deck, name: str, ctx: Ctx, sha: str | Non
     size = page.size
     header(page.fig, _frac(PAGE_IN, size[1] - PAGE_IN - HEADER_IN, size[0] - 2 * PAGE_IN,
                             HEADER_IN - 0.1, size), deck, result, heading, sha, title)
+    declared = declared_panels(result.plan)   # the panels the effects that ran feed
     if name == "profile":
-        if not profile.can_draw(result):
+        if "profile" not in declared:
             return 0
         side = size[0] - 2 * PAGE_IN - LEFT_IN - RIGHT_IN
         ax = page.panel()
@@ -104,7 +107,7 @@ def _sheet(page: Page, result: Result, deck, name: str, ctx: Ctx, sha: str | Non
         ax.set_title("Cam profile to scale, film thickness laid around it")
         return 1
     drawn = []
-    for pname in SHEETS[name][1]:
+    for pname in (p for p in SHEETS[name][1] if p in declared):
         ax = page.panel()
         panel_title, func = PANELS[pname]
         if func(ax, result, ctx):
@@ -225,6 +228,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
     written: list[Path] = []
     with matplotlib.rc_context({**RC, **({"savefig.dpi": dpi} if dpi else {})}):
         ctx = _ctx(result)
+        declared = declared_panels(result.plan)
         page = Page(A4_PORTRAIT)
         panels = [(sheet, p) for sheet in cycle for p in SHEETS[sheet][1]]
         total = len(cycle) + (len(panels) if single_panels else 0)
@@ -242,7 +246,7 @@ def write_plots(result: Result, deck, out_dir: Path, *, single_panels: bool = Tr
             for sheet, pname in panels:
                 f = square_fig if pname == "profile" else panel_fig
                 wipe(f)
-                if sheet in drawn and _panel(f, result, deck, pname, ctx):
+                if sheet in drawn and pname in declared and _panel(f, result, deck, pname, ctx):
                     written += _save(f, out_dir / "panels" / pname, formats)
                 done += 1
                 if progress:

@@ -11,6 +11,7 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
+from camtrain.catalogue import planned_products
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 from camtrain.study.sweep import Case, Parameter
 
@@ -66,7 +67,8 @@ def run_case(job: Job) -> dict:
         # Ball cuts his curves at valve bounce: the case ran, but its results are not physical
         why = [w for w in result.warnings if "contact" in w or "bounce" in w]
         record.update(status="lost_contact", message=why[0] if why else "minimum load <= 0")
-    if job.keep_curves and "cam_angle" in result.columns:
+    # the kinematics effect made the cam-angle grid the overlay curves are drawn on
+    if job.keep_curves and "TrainKinematics" in planned_products(result.plan):
         import math
 
         curves = {"cam_angle": ("deg", [math.degrees(v) for v in result["cam_angle"]])}

@@ -1,5 +1,6 @@
 """What the top floors make of every shipped deck: the accuracy knobs offered, the metrics the
-accuracy study reads, the terminal's key results and (with ``--sheets``) the plot sheets written.
+accuracy study reads, the terminal's key results and (with ``--sheets``) the plot sheets written
+and the panels each holds.
 
     PYTHONPATH=. python -m tests.report.declarations                    # show differences only
     PYTHONPATH=. python -m tests.report.declarations --write            # rewrite the fixture
@@ -24,7 +25,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DECKS = ROOT / "decks"
 GOLDEN = ROOT / "tests" / "golden" / "data"
 FIXTURE = Path(__file__).resolve().parent / "data" / "declarations.json"
-KEYS = ("plan", "sheets", "knobs", "accuracy_metrics", "key_metrics")
+KEYS = ("plan", "sheets", "panels", "knobs", "accuracy_metrics", "key_metrics")
 
 
 class StoredPlan:
@@ -52,14 +53,34 @@ def from_golden(name: str) -> dict:
             "key_metrics": [m for m in declared if m in produced]}
 
 
-def sheets_written(name: str) -> list[str]:
-    """The PNG files a run of deck ``name`` writes with ``--plots sheets`` (by stem)."""
+def axes_drawn(fig) -> list[str]:
+    """The visible axes of a saved figure, each as ``title: lines, collections, images``
+    (the panels a sheet holds and how many curves, fills or maps each drew)."""
+    return [f"{ax.get_title()}: {len(ax.lines)}, {len(ax.collections)}, {len(ax.images)}"
+            for ax in fig.axes if ax.get_visible()]
+
+
+def sheets_written(name: str) -> tuple[list[str], dict[str, list[str]]]:
+    """The PNG files a run of deck ``name`` writes with ``--plots sheets`` (by stem), and the
+    panels each holds (:func:`axes_drawn`, recorded as every sheet is saved)."""
     from camtrain import api
+    from camtrain.report import canvas
 
     loaded = api.load(DECKS / f"{name}.toml")
-    with tempfile.TemporaryDirectory() as tmp:
-        written = api.write(api.run(loaded), loaded, Path(tmp), 0.0, plots="sheets")
-    return sorted(p.stem for p in written if p.suffix == ".png")
+    panels: dict[str, list[str]] = {}
+    save = canvas.save_sheet
+
+    def recording(fig, stem, formats):
+        panels[Path(stem).name] = axes_drawn(fig)
+        return save(fig, stem, formats)
+
+    canvas.save_sheet = recording
+    try:
+        with tempfile.TemporaryDirectory() as tmp:
+            written = api.write(api.run(loaded), loaded, Path(tmp), 0.0, plots="sheets")
+    finally:
+        canvas.save_sheet = save
+    return sorted(p.stem for p in written if p.suffix == ".png"), dict(sorted(panels.items()))
 
 
 def main(argv: list[str]) -> int:
@@ -67,8 +88,11 @@ def main(argv: list[str]) -> int:
     got = {}
     for path in sorted(DECKS.glob("*.toml")):
         got[path.stem] = from_golden(path.stem)
-        got[path.stem]["sheets"] = (sheets_written(path.stem) if "--sheets" in argv
-                                    else old.get(path.stem, {}).get("sheets"))
+        if "--sheets" in argv:
+            got[path.stem]["sheets"], got[path.stem]["panels"] = sheets_written(path.stem)
+        else:
+            for key in ("sheets", "panels"):
+                got[path.stem][key] = old.get(path.stem, {}).get(key)
     changed = 0
     for name in sorted(set(got) | set(old)):
         for key in KEYS:

@@ -25,12 +25,14 @@ DECK_FILES = sorted(p.name for p in DECKS.glob("*.toml"))
 def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     import camtrain.report.canvas as canvas
     from camtrain.report.layout import layout_problems
+    from tests.report.declarations import axes_drawn
 
-    problems, save_png = {}, canvas.save_png
+    problems, panels, save_png = {}, {}, canvas.save_png
 
     def checked_save_png(fig, path, software=""):
         save_png(fig, path, software)
         problems[path.name] = layout_problems(fig, draw=False)   # as it was just drawn
+        panels[path.stem] = axes_drawn(fig)
 
     monkeypatch.setattr(canvas, "save_png", checked_save_png)
     loaded = api.load(DECKS / name)
@@ -48,6 +50,8 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
     # (tests/report/declarations.py wrote the fixture)
     fixture = json.loads((Path(__file__).parent / "data" / "declarations.json").read_text())
     assert sorted(p.stem for p in pngs) == fixture[name.removesuffix(".toml")]["sheets"]
+    # and each holds the panels (and curves) it held then
+    assert panels == fixture[name.removesuffix(".toml")]["panels"]
     for png in pngs:
         # a blank A4 sheet is a few kB; an orbit plot is a small figure
         assert png.stat().st_size > (8_000 if png.name.startswith("orbit_") else 20_000), png.name

@@ -46,6 +46,33 @@ def test_no_load_result_has_no_friction_sheet(tmp_path):
                                          "sheet_profile.png"}
 
 
+def test_the_plan_picks_the_panels_not_the_columns(tmp_path):
+    """A panel is drawn when an effect that ran declares it (EffectSpec.panels): the Hertz
+    stress column alone, without the hertz effect in the plan, draws no Hertz panel."""
+    from tests.report.conftest import chain_plan
+
+    r = synthetic(120)
+    r.plan = chain_plan("kinematics", "loads", "film", "friction", "power")
+    written = write_plots(r, None, tmp_path, formats=("png",))
+    names = {p.relative_to(tmp_path).as_posix() for p in written}
+    assert "hertz_pmax" in r.columns and "panels/hertz.png" not in names
+    assert {"panels/load.png", "panels/film_angle.png", "panels/power.png"} <= names
+
+
+def test_every_panel_is_declared_by_an_effect_and_every_declared_panel_exists():
+    """The panels the effects declare are those the sheets register (a name misspelt in the
+    catalogue would draw nothing), and every panel of a cycle sheet has an effect that feeds
+    it (one without would never be drawn)."""
+    from camtrain.catalogue import KINDS, LIFT_PANELS
+    from camtrain.report.sheets import PANELS, SHEETS
+
+    declared = {p for kind in KINDS.values() for spec in kind.effects for p in spec.panels}
+    on_sheets = {p for _, panels in SHEETS.values() for p in panels}
+    assert on_sheets == set(PANELS) | {"profile"}
+    assert declared == on_sheets
+    assert set(LIFT_PANELS) <= declared
+
+
 def test_progress_reports_every_file_set(tmp_path):
     seen = []
     write_plots(synthetic(120, level="lift"), None, tmp_path, formats=("png",),
