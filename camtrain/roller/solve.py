@@ -7,7 +7,9 @@ Torque balance of the roller on its pin (Chiu 1992, Tribol. Trans. 35:261; Alakh
 
 ``quasi_static`` drops the inertia and solves F_t r_r = T_pin per angle (bisection on
 w_r in [0, V_s0/r_r]: the traction falls and the pin torque rises with w_r, so the root is
-unique; where the traction at w_r = 0 cannot beat the pin's breakaway torque the roller stands).
+unique; where the traction at w_r = 0 cannot beat the pin's breakaway torque the roller stands);
+the angles of a needle pin in a full film are solved by the same steps compiled per angle
+(:mod:`._balance`), the others on arrays.
 ``inertial`` marches the equation over revolutions to a periodic state
 (:mod:`._kernel`, implicit Euler, first order in the step), started from the quasi-static speed.
 The pin carries the normal load W (the traction's share of the pin load is left out).
