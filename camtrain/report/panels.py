@@ -1,9 +1,10 @@
 """The plot panels: each draws one Ball-style graph into an axes.
 
-A sheet calls the panels the effects that ran declare (EffectSpec.panels). Every panel function
-takes (ax, result, ctx) and draws the curves of its panel the run has; it returns False, drawing
-nothing, when it has none (a flat follower's pressure angle, a film run without the transient
-film's steady reference), and the sheet leaves it out. Values are shown in display units.
+A sheet calls the panels the effects that ran declare (EffectSpec.panels, and the
+EffectSpec.model_panels of the model a step ran: the transient film's panels for a transient
+film). Every panel function takes (ax, result, ctx) and draws the curves of its panel the run
+has; it returns False, drawing nothing, when it has none (a flat follower's pressure angle), and
+the sheet leaves it out. Values are shown in display units.
 """
 from __future__ import annotations
 
