@@ -3,6 +3,9 @@
     PYTHONPATH=. python -m tests.golden.regenerate            # review the differences only
     PYTHONPATH=. python -m tests.golden.regenerate --write    # then write the new files
 
+The regeneration compiles every kernel into an empty, temporary cache (a stale cached kernel would
+otherwise pin numbers a clean checkout does not compute); ``--reuse-cache`` skips that.
+
 Each deck ``decks/<name>.toml``, and each variant in :data:`VARIANTS` (a shipped deck with a few
 fields changed: the conventions the literature tests discuss), has two files in
 ``tests/golden/data``: ``<name>.json`` (plan, metrics with units and angles, column units and
@@ -204,6 +207,8 @@ def write(name: str, meta: dict, arrays: dict[str, np.ndarray]) -> None:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--write", action="store_true", help="write the new golden files")
+    parser.add_argument("--reuse-cache", action="store_true",
+                        help="use the compiled kernels already on disk (may be stale after an edit)")
     parser.add_argument("decks", nargs="*", help="deck names (default: every shipped deck)")
     args = parser.parse_args(argv)
     paths = [p for p in deck_paths() if not args.decks or p.stem in args.decks]
@@ -222,5 +227,25 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
+def fresh_kernel_cache() -> None:
+    """Run again in a new process whose compiled kernels start from an empty disk cache.
+
+    numba keys a cached kernel by its own source file only: after an edit to a kernel it calls
+    from another module, a cached caller still runs the old code. Golden files written from such a
+    stale cache would pin numbers no clean checkout computes, so the regeneration always compiles
+    afresh (``--reuse-cache`` skips this, for a quick look).
+    """
+    import subprocess
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="golden-kernels-") as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+        argv = [a for a in sys.argv[1:] if a != "--reuse-cache"]
+        command = [sys.executable, "-m", "tests.golden.regenerate", "--reuse-cache", *argv]
+        sys.exit(subprocess.call(command, env=env, cwd=ROOT))
+
+
 if __name__ == "__main__":
+    if "--reuse-cache" not in sys.argv[1:]:
+        fresh_kernel_cache()
     sys.exit(main())
