@@ -42,6 +42,9 @@ ratio in a push-rod lifter; the lever ratio at the pivot of a finger follower) a
 with its force times ``ratio`` (virtual work).
 """
 from camtrain.dynamics.hla.chamber import (
+    ball_end,
+    chamber_advance,
+    chamber_start,
     chamber_step,
     extension,
     hydraulic_record,
@@ -51,16 +54,20 @@ from camtrain.dynamics.hla.chamber import (
 from camtrain.dynamics.hla.element import (
     BULK_MODELS,
     CHAMBER_SCHEMES,
+    CHECK_VALVES,
     P_ATM,
     LashAdjuster,
+    ball_cracking_pressure,
     chamber_stiffness,
     check_valve_flow,
+    curtain_area,
     couette_coefficient,
     effective_bulk_modulus,
     leak_conductance,
     leakdown_time,
     mixture_volume,
     pivot_ratio,
+    quasi_static_equivalent,
 )
 from camtrain.dynamics.hla.leakdown import leakdown_test
 from camtrain.dynamics.hla.placement import _spring_at_rest, rigid_adjuster, with_lash_adjuster
@@ -69,4 +76,6 @@ __all__ = ["LashAdjuster", "BULK_MODELS", "CHAMBER_SCHEMES", "P_ATM", "effective
            "mixture_volume", "leak_conductance", "couette_coefficient", "check_valve_flow",
            "chamber_stiffness", "leakdown_time", "leakdown_test", "hydraulic_record",
            "no_adjuster", "pivot_ratio", "with_lash_adjuster", "rigid_adjuster", "chamber_step",
-           "extension", "plunger_force", "_spring_at_rest"]
+           "extension", "plunger_force", "_spring_at_rest", "CHECK_VALVES", "ball_end",
+           "chamber_advance", "chamber_start", "ball_cracking_pressure", "curtain_area",
+           "quasi_static_equivalent"]
