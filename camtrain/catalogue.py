@@ -127,7 +127,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                knobs=("steps_per_degree", "spring_elements", "dynamics_rtol",
                       "adjuster_cycles"),
                accuracy_metrics=("load_max", "separation_angle", "hla_pressure_max",
-                                 "hla_collapse", "valve_lift_loss_at_max_lift")),
+                                 "hla_collapse", "hla_refill", "valve_lift_loss_at_max_lift")),
     EffectSpec("hertz", "camtrain.effects.hertz",
                "Hertz contact half-width and maximum pressure",
                needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",),

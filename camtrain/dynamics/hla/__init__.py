@@ -26,6 +26,14 @@ leak-down test) and the chamber's gauge pressure p. Physics, each one function b
   linearly from nothing at cracking to the full area ``full_open`` above it (the ball's spring
   lift, quasi-static), and the flow is a sharp-edged orifice, Q_in = C_d A_v sqrt(2 (p_s - p) /
   rho) (Merritt 1967 eq. 3-9). Closed: no reverse flow.
+* **Check valve** (``ball``): the ball's own motion, m y'' = (p_s - p) A_seat - F_0 - k y - c y'
+  (Newton's second law; A_seat = pi d^2/4 of the seat's bore d, F_0 the spring's preload on the
+  seat, so it cracks at F_0/A_seat), between its seat and its lift stop (both inelastic); the
+  flow through the curtain pi d y (at most pi d^2/4) as a sharp-edged orifice either way
+  (Merritt eq. 3-9), back out of the chamber while the ball is off its seat above the supply.
+  Its lift and speed are states of the chamber, marched in the chamber's implicit step
+  (:func:`.chamber.ball_end`); the massless ball is the quasi-static orifice
+  (:func:`.element.quasi_static_equivalent`).
 * **Plunger**: its spring (rate and preload at the rest extension) pushes it out of the body; its
   mass; stops at full collapse (x = 0) and full extension (x = stroke), stiff linear springs.
 
