@@ -140,11 +140,11 @@ def zeta_ball(zeta_hla):
 
 def test_ball_stays_shut_over_the_lift_and_closes_on_the_base_circle(zeta_hla, zeta_ball):
     """With the chamber above the supply the ball is pushed onto its seat: shut while the cam
-    lifts the valve (above 5 % of its lift: the chamber carries the train's load), open only in the pressure dips of the
-    valve's landing, and shut again on the base circle, where the chamber stays above the supply
-    up to the next opening. While it is still off its seat with the chamber above the supply,
-    oil flows back out through it (negative check flow), which the quasi-static orifice cannot
-    show."""
+    lifts the valve (above 5 % of its lift: the chamber carries the train's load), open only in
+    the pressure dips of the valve's landing, and shut again on the base circle, where the
+    chamber stays above the supply up to the next opening. While it is still off its seat with
+    the chamber above the supply, oil flows back out through it (negative check flow), which
+    the quasi-static orifice cannot show."""
     s, r = zeta_hla, zeta_ball
     h = r.hydraulic
     supply = s.model.hla.supply_pressure

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
 import numpy as np
+from numba import njit
 
 from camtrain.dynamics.hla.element import (
     BULK_MODELS,

@@ -134,6 +134,15 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("hla_held_open", found.held_open, "m", "lowest valve lift on the base circle (pump-up "
          "when the valve stays open)"),
     ]
+    if model.hla.check_valve == "ball":
+        from camtrain.dynamics.hla.element import ball_cracking_pressure
+
+        mets.append(("hla_check_cracking_pressure", ball_cracking_pressure(model.hla), "Pa",
+                     "check ball's cracking pressure (spring preload over seat area)"))
+        mets.append(("hla_check_frequency", model.hla.ball_frequency() / (2.0 * math.pi), "Hz",
+                     "check ball's natural frequency on its spring, sqrt(k/m)/(2 pi)"))
+        mets.append(("hla_check_lift_max", float(np.max(h[6])), "m", "check ball's largest "
+                     "lift (at its stop: the valve fully open)"))
     for name, value, rigid in (("valve_opening_check", found.opening, found.opening_rigid),
                                ("valve_closing_check", found.closing, found.closing_rigid)):
         mets.append((name, value, "rad", f"valve at the checking height {height * 1e3:g} mm"))
