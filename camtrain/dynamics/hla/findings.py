@@ -107,7 +107,7 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
     cols = (
         ("hla_pressure", h[0], "Pa", "adjuster chamber pressure (gauge)"),
         ("hla_check_flow", h[1], "m^3/s", "flow through the adjuster's check valve into the "
-         "chamber"),
+         "chamber (negative: back out past a check ball not yet seated)"),
         ("hla_check_open", (h[1] > 0.0).astype(float) if model.hla.check_valve ==
          "quasi_static" else (h[6] > 0.0).astype(float), "-", "1 while the check valve is open"),
         ("hla_leak_flow", h[2], "m^3/s", "leak-down flow out of the chamber through the "
@@ -123,8 +123,8 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("hla_pressure_max", float(np.max(h[0])), "Pa", "highest chamber pressure (gauge)"),
         ("hla_collapse", found.collapse, "m", "plunger collapse per event (below its extension "
          "at the valve's opening)"),
-        ("hla_refill", found.refill, "m", "oil drawn through the check valve per revolution, "
-         "as plunger travel (volume / plunger area)"),
+        ("hla_refill", found.refill, "m", "oil drawn through the check valve per revolution "
+         "(net), as plunger travel (volume / plunger area)"),
         ("hla_leakdown", found.leakdown, "m", "oil pushed out through the plunger annulus per "
          "revolution, as plunger travel (balances the refill in the periodic state)"),
         ("valve_lift_loss_at_max_lift", float(found.lift_loss[i]), "m", "valve lift lost to the "
