@@ -98,6 +98,9 @@ PRODUCTS: dict[str, str] = {
     "FrictionCorrelations": "camtrain.engine.correlations:FrictionCorrelations",
 }
 
+#: the lash adjuster's panels (its sheet), declared by the dynamics effect when its train has one
+LASH_ADJUSTER_PANELS = ("adjuster_pressure", "adjuster_extension", "adjuster_lift_loss", "check_flow")
+
 VALVE_TRAIN: tuple[EffectSpec, ...] = (
     EffectSpec("kinematics", "camtrain.effects.kinematics",
                "lift law and follower kinematics: lift and derivatives, contact point, r_c, R, "
@@ -123,11 +126,13 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
                             "valve_acceleration_max"),
                panels=("load", "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"),
-               sheets=("contact", "dynamics"),
+               sheets=("contact", "dynamics", "lash_adjuster"),
+               model_panels=(("lash_adjuster", LASH_ADJUSTER_PANELS),
+                             ("lash_adjuster_ball", LASH_ADJUSTER_PANELS + ("check_lift",))),
                knobs=("steps_per_degree", "spring_elements", "dynamics_rtol",
                       "adjuster_cycles"),
                accuracy_metrics=("load_max", "separation_angle", "hla_pressure_max",
-                                 "hla_collapse", "valve_lift_loss_at_max_lift")),
+                                 "hla_collapse", "hla_refill", "valve_lift_loss_at_max_lift")),
     EffectSpec("hertz", "camtrain.effects.hertz",
                "Hertz contact half-width and maximum pressure",
                needs=("TrainKinematics", "ContactLoad"), produces=("ContactHertz",),

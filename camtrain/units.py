@@ -23,6 +23,7 @@ UNITS: dict[str, tuple[float, str]] = {
     "N/mm²": (1e6, "N/m^2"),  # progressive spring: force per compression squared
     "N/mm³": (1e9, "N/m^3"),  # progressive spring: force per compression cubed
     "kg": (1.0, "kg"),
+    "g": (1e-3, "kg"),
     "kg·m²": (1.0, "kg*m^2"),
     "GPa": (1e9, "Pa"),
     "MPa": (1e6, "Pa"),

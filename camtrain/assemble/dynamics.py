@@ -134,7 +134,10 @@ def lash_adjuster(deck):
         full_open=h.full_open_pressure, discharge_coefficient=h.discharge_coefficient,
         oil_density=h.oil_density, bulk_modulus=h.bulk_modulus, air_fraction=h.air_fraction,
         polytropic_index=h.polytropic_index, stop_stiffness=h.stop_stiffness,
-        vapour_pressure=h.vapour_pressure, bulk_model=h.bulk_model, scheme=h.chamber_scheme)
+        vapour_pressure=h.vapour_pressure, bulk_model=h.bulk_model, scheme=h.chamber_scheme,
+        check_valve=h.check_valve, ball_mass=h.ball_mass, ball_spring_rate=h.ball_spring_rate,
+        ball_preload=h.ball_preload, seat_diameter=h.seat_diameter, ball_lift=h.ball_lift,
+        ball_damping_ratio=h.ball_damping_ratio)
 
 
 def adjuster_ratio(deck, kin=None) -> float:

@@ -46,18 +46,31 @@ class LashAdjusterSection:
                                      default=10.0, ge=0)
     supply_pressure: float = quantity("Gallery (supply) pressure feeding the check valve, "
                                       "gauge; also the reservoir's", "bar", gt=0, example=2.5)
-    check_valve: Literal["quasi_static"] = option(
+    check_valve: Literal["quasi_static", "ball"] = option(
         "Check valve model: quasi_static (sharp-edged orifice opening linearly above its "
-        "cracking pressure)", default="quasi_static")
-    cracking_pressure: float = quantity("Check valve cracking pressure (supply above chamber)",
-                                        "kPa", default=2.0, ge=0)
-    check_valve_area: float = quantity("Check valve flow area, fully open", "mm²", default=1.5,
-                                       gt=0)
+        "cracking pressure, default) or ball (the ball's own dynamics: mass, spring, seat, lift "
+        "stop; the cracking pressure follows from its preload)", default="quasi_static")
+    cracking_pressure: float = quantity("Check valve cracking pressure (supply above chamber; "
+                                        "quasi_static)", "kPa", default=2.0, ge=0)
+    check_valve_area: float = quantity("Check valve flow area, fully open (quasi_static)",
+                                       "mm²", default=1.5, gt=0)
     full_open_pressure: float = quantity(
-        "Pressure drop above cracking at which the check valve is fully open", "kPa",
-        default=20.0, gt=0)
+        "Pressure drop above cracking at which the check valve is fully open (quasi_static)",
+        "kPa", default=20.0, gt=0)
     discharge_coefficient: float = quantity("Check valve discharge coefficient", "-",
                                             default=0.6, gt=0, le=1)
+    ball_mass: float = quantity("Check ball mass (ball; a 2.5 mm steel ball: 0.064 g)", "g",
+                                default=0.064, gt=0)
+    ball_spring_rate: float = quantity("Check ball spring rate (ball)", "N/mm", default=0.1,
+                                       gt=0)
+    ball_preload: float = quantity("Check ball spring force on its seat (ball; cracking "
+                                   "pressure = preload / seat area)", "N", default=0.0063, ge=0)
+    seat_diameter: float = quantity("Check valve seat bore (ball: pressure area and curtain "
+                                    "pi d lift)", "mm", default=2.0, gt=0)
+    ball_lift: float = quantity("Check ball lift at its stop (ball)", "mm", default=0.3, gt=0)
+    ball_damping_ratio: float = quantity(
+        "Viscous damping ratio of the check ball on its spring (ball; 0: its losses are the "
+        "inelastic seat and stop and the flow)", "-", default=0.0, ge=0)
     oil_density: float = quantity("Oil density", "kg/m³", default=850.0, gt=0)
     bulk_model: Literal["free_air_polytropic"] = option(
         "Effective bulk modulus of oil with free air: free_air_polytropic (liquid of constant "

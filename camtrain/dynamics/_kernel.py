@@ -31,7 +31,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_step, extension, plunger_force
+from camtrain.dynamics.hla.chamber import chamber_advance, chamber_step, extension, plunger_force
 from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
@@ -185,7 +185,8 @@ def _matrix(tr, uni, act, h, law):
 def _hydraulic(tr, hp, u, Ainv, A, h, out, work):
     """A hydraulic lash adjuster's force in the Newmark step: a1 += F z (z = A^-1 (e_q - e_f)),
     the chamber's pressure and F solved together (hla.chamber_step) with the plunger's end
-    extension x1 = X + sigma F; the chamber's end state into ``out[3]``."""
+    extension x1 = X + sigma F; the chamber's end state (hla.chamber_advance) into
+    ``out[3]``."""
     hla, pu, pv, a1, z = tr.hla, work.pu, work.pv, out[2], work.zh
     f, q = hla.f, hla.q
     if Ainv.shape[0] > 0:
@@ -204,8 +205,7 @@ def _hydraulic(tr, hp, u, Ainv, A, h, out, work):
                                         -hla.ratio * wd_end, sigma, h)
     for i in range(z.size):
         a1[i] += hla.ratio * force * z[i]
-    out[3][0], out[3][1], out[3][2] = p1, qin, qout
-    out[3][3] = (p1 - hp[0]) / h if h > 0.0 else hp[3]   # the next step's first guess
+    chamber_advance(hla, hp, p1, qin, qout, h, out[3])
 
 
 @njit(cache=True)
@@ -344,6 +344,11 @@ def _sample(tr, uni, cl, inp, st, out, n):
             out.f[j, r] = 0.0
     out.h[0, r], out.h[1, r], out.h[2, r] = st.hp[0], st.hp[1], st.hp[2]
     out.h[3, r] = extension(st.u[tr.hla.f], st.u[tr.hla.q], tr.hla) if tr.hla.on else 0.0
+    if out.h.shape[0] > 6 and st.hp.size > 7:
+        # the volumes over the sample's interval (the accumulators restart), the ball's lift
+        out.h[4, r], out.h[5, r], out.h[6, r] = st.hp[4], st.hp[5], st.hp[6]
+        st.hp[4] = 0.0
+        st.hp[5] = 0.0
 
 
 @njit(cache=True)

@@ -96,8 +96,10 @@ class TrainResponse:
     steps: int
     integrator: str
     cut_switches: int = 0
-    #: a hydraulic lash adjuster's chamber pressure [Pa, gauge], check-valve and leak flows
-    #: [m^3/s] and plunger extension [m] (4 x grid), None without one
+    #: a hydraulic lash adjuster's rows (records.H_ROWS x grid): chamber pressure [Pa, gauge],
+    #: check-valve and leak flows [m^3/s], plunger extension [m], the volumes [m^3] through the
+    #: check valve and the annulus over each sample's interval, the check ball's lift [m]; None
+    #: without one
     hydraulic: np.ndarray | None = None
 
     def events_of(self, kind: str) -> list[DynamicEvent]:
@@ -183,8 +185,9 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
             runner.a = np.array(start.a[:, i0], dtype=float)
             runner.act = start.contact_force[:, i0] > 0.0
             if start.hydraulic is not None and model.hla is not None:
-                runner.hp[:] = (start.hydraulic[0, i0], start.hydraulic[1, i0],
-                                start.hydraulic[2, i0], 0.0)
+                runner.hp[:] = 0.0   # no rate guess, no volumes yet, the ball at rest
+                runner.hp[:3] = start.hydraulic[:3, i0]
+                runner.hp[6] = start.hydraulic[6, i0]
     else:
         from camtrain.dynamics.adaptive import Adaptive
 
@@ -306,7 +309,15 @@ class _FixedStep:
                              "integrator only")
 
     def revolution(self):
-        from camtrain.dynamics.records import CamLaw, Inputs, Marched, Train, TrainState, unilateral
+        from camtrain.dynamics.records import (
+            H_ROWS,
+            CamLaw,
+            Inputs,
+            Marched,
+            Train,
+            TrainState,
+            unilateral,
+        )
 
         m = self.model
         grid = (self.inputs.shape[1] - 1) // self.stride
@@ -314,7 +325,7 @@ class _FixedStep:
         cap = 10_000
         out = Marched(np.empty((n, grid)), np.empty((n, grid)), np.empty((n, grid)),
                       np.empty((2, grid)), np.empty(cap), np.empty(cap, dtype=np.int64),
-                      np.empty(cap), np.zeros((4, grid)))
+                      np.empty(cap), np.zeros((len(H_ROWS), grid)))
         train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr,
                       self.hla)
         inputs = Inputs(self.inputs, self.rates, self.dt, self.stride, 0.0)
@@ -334,13 +345,14 @@ class _FixedStep:
 
 def _hydraulic_start(model: TrainModel, u0):
     """The march's adjuster record and its chamber at rest: the supply pressure, no flow."""
-    from camtrain.dynamics.hla import hydraulic_record, no_adjuster
+    from camtrain.dynamics.hla import chamber_start, hydraulic_record, no_adjuster
+    from camtrain.dynamics.records import HP_SIZE
 
     if model.hla is None:
-        return no_adjuster(), np.zeros(4)
+        return no_adjuster(), np.zeros(HP_SIZE)
     w0 = float(u0[model.follower] - u0[model.plunger])
     record = hydraulic_record(model.hla, model.follower, model.plunger, model.hla_ratio, w0)
-    return record, np.array([model.hla.supply_pressure, 0.0, 0.0, 0.0])
+    return record, chamber_start(record, model.hla.supply_pressure)
 
 
 def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:

@@ -26,7 +26,7 @@ from collections import namedtuple
 import numpy as np
 
 __all__ = ["Unilateral", "Train", "Inputs", "CamLaw", "Marched", "TrainState", "Hydraulic",
-           "unilateral", "linear_law"]
+           "HP_SIZE", "HP_SLOTS", "H_ROWS", "unilateral", "linear_law"]
 
 #: the unilateral contacts (cam, seat) of a train: k [N/m], c [N s/m], off [m] (arrays of 2)
 Unilateral = namedtuple("Unilateral", "k c off")
@@ -42,10 +42,23 @@ Train = namedtuple("Train", "m K C f0 node thr hla")
 #: ``stroke``, valve-referred rest compression ``w0``, end-stop stiffness ``k_stop``, leak
 #: conductance ``g_leak`` and Couette coefficient ``c_couette``, ``p_supply``, check valve
 #: ``p_crack``, ``check_k`` = C_d A sqrt(2/rho), ``full_open``; oil modulus ``k_liq``, free
-#: ``air`` fraction, polytropic ``n_poly``, pressure floor ``p_floor``, chamber scheme ``theta``
+#: ``air`` fraction, polytropic ``n_poly``, pressure floor ``p_floor``, chamber scheme ``theta``;
+#: the check valve's model ``valve`` (0 the quasi-static orifice, 1 the dynamic ball) and the
+#: ball's mass ``ball_m`` [kg], spring rate ``ball_k`` [N/m] and preload ``ball_f0`` [N] on its
+#: seat, viscous damping ``ball_c`` [N s/m], pressure area ``seat_area`` [m^2], lift stop
+#: ``ball_lift`` [m] and ``curtain_k`` = C_d pi d_seat sqrt(2/rho) (flow per lift and root Pa)
 Hydraulic = namedtuple("Hydraulic", "on f q ratio area v_dead x_rest stroke w0 k_stop g_leak "
                        "c_couette p_supply p_crack check_k full_open k_liq air n_poly p_floor "
-                       "theta")
+                       "theta valve ball_m ball_k ball_f0 ball_c seat_area ball_lift curtain_k")
+
+#: length of a chamber state ``hp`` (:data:`TrainState`): the slots of :data:`HP_SLOTS`
+HP_SIZE = 8
+#: the chamber state's slots: pressure [Pa, gauge], check-valve flow, leak flow [m^3/s], the last
+#: step's pressure rate [Pa/s] (the chamber solve's first guess), the volumes [m^3] through the
+#: check valve and through the annulus since the last output sample, the check ball's lift [m]
+#: and speed [m/s] (zero with the quasi-static valve)
+HP_SLOTS = ("pressure", "check_flow", "leak_flow", "rate", "check_volume", "leak_volume",
+            "ball_lift", "ball_speed")
 
 #: the contacts' inputs b [m] and b' [m/s] (contacts, steps + 1) at the step times of a batch,
 #: the step ``dt`` [s], the output ``stride`` (steps per sample) and the batch's start time t0
@@ -57,13 +70,18 @@ CamLaw = namedtuple("CamLaw", "law hz rad rat")
 
 #: the march's samples every stride: displacement, velocity, acceleration (n, samples), contact
 #: forces (2, samples), its events: time, kind (2 j + closing), approach speed, and the
-#: adjuster's chamber pressure, check-valve and leak flows, plunger extension ``h`` (4, samples)
+#: adjuster's ``h`` (:data:`H_ROWS`, samples)
 Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h")
+
+#: the adjuster's sampled rows: chamber pressure [Pa], check-valve and leak flows [m^3/s],
+#: plunger extension [m], the volumes [m^3] through the check valve and the annulus over the
+#: sample's interval (their sums over a revolution are exact step sums), the check ball's lift
+H_ROWS = ("pressure", "check_flow", "leak_flow", "extension", "check_volume", "leak_volume",
+          "ball_lift")
 
 #: the single train's state, updated in place: u, v, a, the contact states ``act``; the
 #: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``; the
-#: adjuster's chamber ``hp`` = (pressure [Pa], check-valve flow, leak flow [m^3/s], the last
-#: step's pressure rate [Pa/s]: the chamber solve's first guess)
+#: adjuster's chamber ``hp`` (:data:`HP_SLOTS`, :data:`HP_SIZE` long)
 TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp")
 
 

@@ -23,6 +23,16 @@ def missing(deck) -> list[str]:
     return out
 
 
+def model(deck, planned) -> str:
+    """The train this effect marches, as far as the report's panels follow from it: with a
+    hydraulic lash adjuster (``lash_adjuster``, ``lash_adjuster_ball`` with the dynamic check
+    ball) or without ("")."""
+    h = deck.dynamics.lash_adjuster if getattr(deck, "dynamics", None) is not None else None
+    if h is None:
+        return ""
+    return "lash_adjuster_ball" if h.check_valve == "ball" else "lash_adjuster"
+
+
 def reason(deck, planned) -> str:
     d = deck.dynamics
     spring = (f"{d.spring_elements}-element spring chain" if d.spring_elements else

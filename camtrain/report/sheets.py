@@ -19,6 +19,7 @@ from camtrain.report.header import title_line
 from camtrain.report.page import Page
 from camtrain.report.panels import PANELS as CYCLE_PANELS
 from camtrain.report.panels import Ctx
+from camtrain.report.panels_adjuster import ADJUSTER_PANELS
 from camtrain.report.panels_ehl import EHL_PANELS
 from camtrain.report.panels_shaft import SHAFT_PANELS
 from camtrain.report.sheet_header import (
@@ -37,7 +38,7 @@ from camtrain.report.sheet_header import (
 from camtrain.report.style import A4_PORTRAIT, PANEL_SIZE, RC
 from camtrain.result import Result
 
-PANELS = {**CYCLE_PANELS, **SHAFT_PANELS, **EHL_PANELS}
+PANELS = {**CYCLE_PANELS, **SHAFT_PANELS, **EHL_PANELS, **ADJUSTER_PANELS}
 
 #: name -> (heading, panels); "profile" is the cam drawn to scale
 SHEETS = {
@@ -53,6 +54,9 @@ SHEETS = {
     "profile": ("Cam profile and film around it", ["profile"]),
     "dynamics": ("Valve-train dynamics", [
         "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),
+    "lash_adjuster": ("Hydraulic lash adjuster", [
+        "adjuster_pressure", "adjuster_extension", "adjuster_lift_loss", "check_flow",
+        "check_lift"]),
     "camshaft": ("Elastic camshaft: bearing loads, orders, lobes", [
         "shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"]),
 }

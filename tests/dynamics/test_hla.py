@@ -195,7 +195,7 @@ def test_plunger_on_the_closed_chamber_rings_at_sqrt_k_over_m():
     """A load set suddenly on the plunger of a closed chamber (no leak, no air, no spring):
     x = D (1 - cos wt), w = sqrt(K A^2 / (V m)); it passes D at T/4 and 1.5 D at T/3, so the
     time between them is T/12 (the chamber's own step, 2000 steps per period)."""
-    from camtrain.dynamics.hla import hydraulic_record
+    from camtrain.dynamics.hla import chamber_start, hydraulic_record
     from camtrain.dynamics.hla.leakdown import _leakdown_march
 
     adj = replace(ADJUSTER, air_fraction=0.0, radial_clearance=0.0, spring_rate=0.0,
@@ -206,7 +206,8 @@ def test_plunger_on_the_closed_chamber_rings_at_sqrt_k_over_m():
     period = 2 * math.pi * math.sqrt(adj.plunger_mass / k)
     deflection = load / k
     out = np.zeros(3)
-    _leakdown_march(hydraulic_record(adj, 0, 0, 1.0, 0.0),
+    record = hydraulic_record(adj, 0, 0, 1.0, 0.0)
+    _leakdown_march(record, chamber_start(record, 0.0),
                     np.array([adj.plunger_mass, 0.0, 0.0, load]),
                     np.array([period / 2000, 10 * period, period / 2000, 0.0]),
                     np.array([deflection, 1.5 * deflection]), out)

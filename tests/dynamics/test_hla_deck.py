@@ -123,3 +123,32 @@ def test_roller_finger_deck_with_its_adjuster_at_the_pivot_collapses_and_loses_l
     assert 0.0 < collapse < 3.0e-3   # m: some collapse, less than the 3 mm stroke
     assert metrics["valve_lift_loss_max"].value > 0.0
     assert np.all(np.isfinite(result.columns["valve_lift_loss"].values))
+
+
+def test_deck_with_the_ball_check_valve_writes_its_lift_and_cracking_pressure():
+    """check_valve = "ball" on the shipped Zeta adjuster deck: the run writes the ball's lift
+    column, its cracking pressure (preload over seat area: 6.3 mN on a 2 mm bore, 2.005 kPa),
+    its natural frequency sqrt(k/m)/(2 pi) (0.1 N/mm on 0.064 g: 198.9 Hz) and a refill; a
+    massless ball is refused with the field named."""
+    import math
+
+    import numpy as np
+
+    from camtrain import api
+    from camtrain.deck.load import validate
+    from camtrain.errors import CamtrainError
+
+    raw = tomllib.loads((DECKS / "zeta_intake_hla.toml").read_text(encoding="utf-8"))
+    raw["dynamics"]["lash_adjuster"]["check_valve"] = "ball"
+    result = api.run(validate(raw, "zeta_ball", DECKS))
+    lift = result.columns["hla_check_lift"].values
+    assert 0.0 < np.max(lift) <= 0.3e-3 and np.min(lift) == 0.0
+    metrics = result.metrics
+    assert metrics["hla_check_cracking_pressure"].value == pytest.approx(
+        6.3e-3 / (math.pi / 4 * 2e-3 ** 2), rel=1e-12)
+    assert metrics["hla_check_frequency"].value == pytest.approx(
+        math.sqrt(100.0 / 6.4e-5) / (2 * math.pi), rel=1e-12)
+    assert metrics["hla_refill"].value > 1e-6
+    raw["dynamics"]["lash_adjuster"]["ball_mass"] = 0.0
+    with pytest.raises(CamtrainError, match="dynamics.lash_adjuster.ball_mass"):
+        validate(raw, "bad", DECKS)

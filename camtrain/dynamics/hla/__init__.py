@@ -26,6 +26,14 @@ leak-down test) and the chamber's gauge pressure p. Physics, each one function b
   linearly from nothing at cracking to the full area ``full_open`` above it (the ball's spring
   lift, quasi-static), and the flow is a sharp-edged orifice, Q_in = C_d A_v sqrt(2 (p_s - p) /
   rho) (Merritt 1967 eq. 3-9). Closed: no reverse flow.
+* **Check valve** (``ball``): the ball's own motion, m y'' = (p_s - p) A_seat - F_0 - k y - c y'
+  (Newton's second law; A_seat = pi d^2/4 of the seat's bore d, F_0 the spring's preload on the
+  seat, so it cracks at F_0/A_seat), between its seat and its lift stop (both inelastic); the
+  flow through the curtain pi d y (at most pi d^2/4) as a sharp-edged orifice either way
+  (Merritt eq. 3-9), back out of the chamber while the ball is off its seat above the supply.
+  Its lift and speed are states of the chamber, marched in the chamber's implicit step
+  (:func:`.chamber.ball_end`); the massless ball is the quasi-static orifice
+  (:func:`.element.quasi_static_equivalent`).
 * **Plunger**: its spring (rate and preload at the rest extension) pushes it out of the body; its
   mass; stops at full collapse (x = 0) and full extension (x = stroke), stiff linear springs.
 
@@ -42,6 +50,9 @@ ratio in a push-rod lifter; the lever ratio at the pivot of a finger follower) a
 with its force times ``ratio`` (virtual work).
 """
 from camtrain.dynamics.hla.chamber import (
+    ball_end,
+    chamber_advance,
+    chamber_start,
     chamber_step,
     extension,
     hydraulic_record,
@@ -51,16 +62,20 @@ from camtrain.dynamics.hla.chamber import (
 from camtrain.dynamics.hla.element import (
     BULK_MODELS,
     CHAMBER_SCHEMES,
+    CHECK_VALVES,
     P_ATM,
     LashAdjuster,
+    ball_cracking_pressure,
     chamber_stiffness,
     check_valve_flow,
     couette_coefficient,
+    curtain_area,
     effective_bulk_modulus,
     leak_conductance,
     leakdown_time,
     mixture_volume,
     pivot_ratio,
+    quasi_static_equivalent,
 )
 from camtrain.dynamics.hla.leakdown import leakdown_test
 from camtrain.dynamics.hla.placement import _spring_at_rest, rigid_adjuster, with_lash_adjuster
@@ -69,4 +84,6 @@ __all__ = ["LashAdjuster", "BULK_MODELS", "CHAMBER_SCHEMES", "P_ATM", "effective
            "mixture_volume", "leak_conductance", "couette_coefficient", "check_valve_flow",
            "chamber_stiffness", "leakdown_time", "leakdown_test", "hydraulic_record",
            "no_adjuster", "pivot_ratio", "with_lash_adjuster", "rigid_adjuster", "chamber_step",
-           "extension", "plunger_force", "_spring_at_rest"]
+           "extension", "plunger_force", "_spring_at_rest", "CHECK_VALVES", "ball_end",
+           "chamber_advance", "chamber_start", "ball_cracking_pressure", "curtain_area",
+           "quasi_static_equivalent"]

@@ -11,6 +11,8 @@ import numpy as np
 P_ATM = 101_325.0
 BULK_MODELS = ("free_air_polytropic",)
 CHAMBER_SCHEMES = {"backward_euler": 1.0, "trapezoidal": 0.5}
+#: check-valve models and their code in the compiled record
+CHECK_VALVES = {"quasi_static": 0, "ball": 1}
 
 
 @dataclass(frozen=True)
@@ -25,7 +27,13 @@ class LashAdjuster:
     cracking at full opening), ``discharge_coefficient``, ``oil_density``; ``bulk_modulus`` of
     the oil (inf: incompressible), ``air_fraction`` (free air by volume at atmospheric pressure),
     ``polytropic_index``; ``stop_stiffness`` of the two end stops; ``vapour_pressure``
-    (absolute, the floor of the chamber's pressure); ``scheme`` of the chamber equation."""
+    (absolute, the floor of the chamber's pressure); ``scheme`` of the chamber equation.
+
+    ``check_valve`` names the valve's model: ``quasi_static`` (the orifice of ``cracking_pressure``,
+    ``check_area``, ``full_open``) or ``ball`` (its own dynamics: ``ball_mass``,
+    ``ball_spring_rate`` and ``ball_preload`` on the seat, ``seat_diameter`` (pressure area and
+    curtain), ``ball_lift`` (lift stop), ``ball_damping_ratio``; the cracking pressure follows as
+    preload over seat area, :func:`ball_cracking_pressure`)."""
 
     plunger_diameter: float
     radial_clearance: float
@@ -51,6 +59,13 @@ class LashAdjuster:
     vapour_pressure: float = 2.0e3
     bulk_model: str = "free_air_polytropic"
     scheme: str = "backward_euler"
+    check_valve: str = "quasi_static"
+    ball_mass: float = 6.4e-5
+    ball_spring_rate: float = 100.0
+    ball_preload: float = 6.3e-3
+    seat_diameter: float = 2.0e-3
+    ball_lift: float = 0.3e-3
+    ball_damping_ratio: float = 0.0
 
     @property
     def area(self) -> float:
@@ -68,6 +83,15 @@ class LashAdjuster:
         """Force [N] the adjuster pushes with on the base circle: chamber at the supply pressure
         (the annulus fills it to the reservoir's pressure) on the plunger, plus its spring."""
         return self.supply_pressure * self.area + self.spring_preload
+
+    @property
+    def seat_area(self) -> float:
+        """Pressure area of the check ball on its seat [m^2]: the seat's bore."""
+        return math.pi * self.seat_diameter ** 2 / 4.0
+
+    def ball_frequency(self) -> float:
+        """Natural angular frequency sqrt(k/m) [rad/s] of the check ball on its spring."""
+        return math.sqrt(self.ball_spring_rate / self.ball_mass)
 
     def stiffness(self, pressure: float | None = None) -> float:
         """Closed-chamber stiffness K_e A^2 / V [N/m] at the rest extension and ``pressure``
@@ -125,6 +149,34 @@ def check_valve_flow(p, adj: LashAdjuster):
     above = np.clip((drop - adj.cracking_pressure) / adj.full_open, 0.0, 1.0)
     return adj.discharge_coefficient * adj.check_area * above * np.sqrt(
         2.0 * np.maximum(drop, 0.0) / adj.oil_density)
+
+
+def curtain_area(lift, seat_diameter):
+    """Flow area [m^2] of a check ball lifted ``lift`` off a seat of bore d: the curtain
+    pi d y, at most the bore's own area pi d^2/4 (the seat then throttles no more)."""
+    return np.minimum(math.pi * seat_diameter * np.maximum(lift, 0.0),
+                      math.pi * seat_diameter ** 2 / 4.0)
+
+
+def ball_cracking_pressure(adj: LashAdjuster) -> float:
+    """Cracking pressure [Pa] of the ball check valve: its spring's preload over the seat's
+    area (the supply lifts the ball once (p_s - p) A_seat exceeds the preload)."""
+    return adj.ball_preload / adj.seat_area
+
+
+def quasi_static_equivalent(adj: LashAdjuster) -> LashAdjuster:
+    """The quasi-static orifice a massless ball tends to: the ball in force balance, lift y =
+    ((p_s - p) A_seat - F_0)/k, so its curtain pi d y grows linearly from the cracking pressure
+    F_0/A_seat to the lift stop at k y_max/A_seat above it (the full open area pi d y_max, or
+    the bore's when smaller)."""
+    from dataclasses import replace
+
+    if adj.ball_lift > adj.seat_diameter / 4.0:
+        raise ValueError("the curtain of a lift above a quarter of the seat's bore is not linear "
+                         "in the lift: no quasi-static orifice of linear area matches it")
+    return replace(adj, check_valve="quasi_static", cracking_pressure=ball_cracking_pressure(adj),
+                   full_open=adj.ball_spring_rate * adj.ball_lift / adj.seat_area,
+                   check_area=float(curtain_area(adj.ball_lift, adj.seat_diameter)))
 
 
 def chamber_stiffness(bulk_modulus, area, volume):

@@ -1,5 +1,6 @@
 """What an adjuster did over the periodic revolution: plunger travel per event (collapse during
-the lift, refill on the base circle), valve lift lost against the constant-load adjuster, the
+the lift; the oil refilled through the check valve and leaked down through the annulus, as
+plunger travel), valve lift lost against the constant-load adjuster, the
 valve's opening and closing at a checking height, and pump-up (the valve held off its seat on the
 base circle because the adjuster extended after a separation). Plain rows and numbers: the
 dynamics effect writes them."""
@@ -20,7 +21,10 @@ PUMP_UP_LIFT = 20e-6
 @dataclass(frozen=True)
 class AdjusterFindings:
     """``collapse`` [m]: the plunger's largest collapse below its extension at the valve's
-    opening; ``refill`` [m]: its extension regained while the valve is closed; ``lift_loss``
+    opening (leak-down and the chamber's compression together); ``refill`` [m]: the oil drawn
+    through the check valve over the revolution, as plunger travel (volume / plunger area);
+    ``leakdown`` [m]: the oil pushed out through the annulus over it, alike (in the periodic
+    state the two balance: the chamber's mass balance); ``lift_loss``
     [m] per angle (constant-load adjuster's valve lift minus this one's); ``opening``,
     ``closing`` [rad] at the checking height (NaN when not crossed), and the constant-load
     adjuster's; ``held_open`` [m]: the valve's lowest lift on the base circle (pump-up when
@@ -28,6 +32,7 @@ class AdjusterFindings:
 
     collapse: float
     refill: float
+    leakdown: float
     lift_loss: np.ndarray
     opening: float
     closing: float
@@ -74,22 +79,24 @@ def adjuster_findings(resp, rigid, model, height: float) -> AdjusterFindings:
     v = model.valve
     x = resp.hydraulic[3]
     lift = resp.u[v]
-    seated = resp.contact_force[1] > 0.0
-    open_ = ~seated
-    collapse = refill = 0.0
-    if open_.any() and seated.any():
-        # the valve's opening and closing: the seated -> open and open -> seated samples
-        opens = np.flatnonzero(open_ & ~np.roll(open_, 1))
-        closes = np.flatnonzero(~open_ & np.roll(open_, 1))
-        first, last = int(opens[0]), int(closes[-1])
+    open_ = ~(resp.contact_force[1] > 0.0)
+    collapse = 0.0
+    if open_.any() and not open_.all():
+        # from the valve's first opening (a seated -> open sample) to the lowest extension
+        first = int(np.flatnonzero(open_ & ~np.roll(open_, 1))[0])
         collapse = float(x[first] - np.min(np.where(open_, x, np.inf)))
-        refill = float(x[first] - x[last])
+    # the refill is a volume, summed over the march's steps (resp.hydraulic rows 4, 5): it comes
+    # through the check valve in the pressure dips of the valve's landing, often while the
+    # valve bounces, not only while it rests closed
+    area = model.hla.area
+    refill = float(np.sum(resp.hydraulic[4])) / area
+    leakdown = float(np.sum(resp.hydraulic[5])) / area
     base = np.asarray(resp.cam[0]) <= 1e-9 * max(float(np.max(resp.cam[0])), 1e-300)
     held = float(np.min(lift[base])) if base.any() else 0.0
     gain = float(np.min(x[base]) - model.hla.rest_extension) if base.any() else 0.0
     opening, closing = crossings(resp.theta, lift, height)
     opening_r, closing_r = crossings(rigid.theta, rigid.u[v], height)
-    return AdjusterFindings(collapse, max(refill, 0.0), rigid.u[v] - lift, opening, closing,
+    return AdjusterFindings(collapse, refill, leakdown, rigid.u[v] - lift, opening, closing,
                             opening_r, closing_r, held, gain)
 
 
@@ -100,21 +107,26 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
     cols = (
         ("hla_pressure", h[0], "Pa", "adjuster chamber pressure (gauge)"),
         ("hla_check_flow", h[1], "m^3/s", "flow through the adjuster's check valve into the "
-         "chamber"),
-        ("hla_check_open", (h[1] > 0.0).astype(float), "-", "1 while the check valve is open"),
+         "chamber (negative: back out past a check ball not yet seated)"),
+        ("hla_check_open", (h[1] > 0.0).astype(float) if model.hla.check_valve ==
+         "quasi_static" else (h[6] > 0.0).astype(float), "-", "1 while the check valve is open"),
         ("hla_leak_flow", h[2], "m^3/s", "leak-down flow out of the chamber through the "
          "plunger annulus (negative: drawn in)"),
         ("hla_extension", h[3], "m", "plunger extension from full collapse"),
         ("valve_lift_loss", found.lift_loss, "m", "valve lift of the train with the "
          "constant-load adjuster minus this one's (lost to the adjuster)"),
     )
+    if model.hla.check_valve == "ball":
+        cols += (("hla_check_lift", h[6], "m", "check ball's lift off its seat"),)
     i = int(np.argmax(resp.u[model.valve]))
     mets = [
         ("hla_pressure_max", float(np.max(h[0])), "Pa", "highest chamber pressure (gauge)"),
         ("hla_collapse", found.collapse, "m", "plunger collapse per event (below its extension "
          "at the valve's opening)"),
-        ("hla_refill", found.refill, "m", "plunger extension regained while the valve is "
-         "closed"),
+        ("hla_refill", found.refill, "m", "oil drawn through the check valve per revolution "
+         "(net), as plunger travel (volume / plunger area)"),
+        ("hla_leakdown", found.leakdown, "m", "oil pushed out through the plunger annulus per "
+         "revolution, as plunger travel (balances the refill in the periodic state)"),
         ("valve_lift_loss_at_max_lift", float(found.lift_loss[i]), "m", "valve lift lost to the "
          "adjuster at maximum lift"),
         ("valve_lift_loss_max", float(np.max(found.lift_loss)), "m", "largest valve lift lost "
@@ -122,6 +134,15 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("hla_held_open", found.held_open, "m", "lowest valve lift on the base circle (pump-up "
          "when the valve stays open)"),
     ]
+    if model.hla.check_valve == "ball":
+        from camtrain.dynamics.hla.element import ball_cracking_pressure
+
+        mets.append(("hla_check_cracking_pressure", ball_cracking_pressure(model.hla), "Pa",
+                     "check ball's cracking pressure (spring preload over seat area)"))
+        mets.append(("hla_check_frequency", model.hla.ball_frequency() / (2.0 * math.pi), "Hz",
+                     "check ball's natural frequency on its spring, sqrt(k/m)/(2 pi)"))
+        mets.append(("hla_check_lift_max", float(np.max(h[6])), "m", "check ball's largest "
+                     "lift (at its stop: the valve fully open)"))
     for name, value, rigid in (("valve_opening_check", found.opening, found.opening_rigid),
                                ("valve_closing_check", found.closing, found.closing_rigid)):
         mets.append((name, value, "rad", f"valve at the checking height {height * 1e3:g} mm"))

@@ -7,7 +7,12 @@ import math
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_step, hydraulic_record
+from camtrain.dynamics.hla.chamber import (
+    chamber_advance,
+    chamber_start,
+    chamber_step,
+    hydraulic_record,
+)
 from camtrain.dynamics.hla.element import LashAdjuster, leakdown_time
 
 
@@ -36,7 +41,8 @@ def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3
     if estimate / (period / per_period) > 5e7:
         raise ValueError(f"the leak-down would take {estimate:.3g} s, more than 5e7 steps of "
                          f"the plunger's period {period:.3g} s")
-    _leakdown_march(hydraulic_record(adj, 0, 0, 1.0, 0.0), plunger,
+    record = hydraulic_record(adj, 0, 0, 1.0, 0.0)
+    _leakdown_march(record, chamber_start(record, 0.0), plunger,
                     np.array([period / 20.0, 400.0 * period, period / per_period,
                               200.0 * period]), marks, out)
     if not out[1] > out[0] > 0.0:
@@ -45,15 +51,13 @@ def leakdown_test(adj: LashAdjuster, load: float = 222.0, travel: float = 1.0e-3
 
 
 @njit(cache=True)
-def _leakdown_march(hr, plunger, steps, marks, out):
+def _leakdown_march(hr, hp, plunger, steps, marks, out):
     """The loaded plunger (``plunger`` = mass, spring rate, spring preload at full extension,
     load) over time steps ``steps`` = (fast step, fast span, slow step, load ramp; 0: sudden),
     until its collapse passes both ``marks``; ``out`` = times at the marks, pressure at the
-    second."""
+    second; ``hp`` the chamber's state (records.HP_SLOTS), updated."""
     m, k_s, f_s0, load = plunger[0], plunger[1], plunger[2], plunger[3]
     x, xd, acc, t = hr.stroke, 0.0, 0.0, 0.0
-    hp = np.zeros(4)
-    hp[0] = 0.0
     sudden = steps[3] <= 0.0   # no ramp: the full load from t = 0 (the stop takes no pull)
     acc = min(f_s0 - load, 0.0) / m if sudden else 0.0
     found = 0
@@ -77,4 +81,4 @@ def _leakdown_march(hr, plunger, steps, marks, out):
             out[2] = p1
             return
         x, xd, acc, t = x1, xd + 0.5 * h * (acc + a1), a1, t + h
-        hp[0], hp[1], hp[2], hp[3] = p1, qin, qout, (p1 - hp[0]) / h
+        chamber_advance(hr, hp, p1, qin, qout, h, hp)
