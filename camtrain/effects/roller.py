@@ -158,7 +158,7 @@ def run(deck, inputs, res):
     traction = Traction(contact, kin, load, hz, r.traction, r.rolling_resistance)
     field = solve_roller(traction, pin_of(deck), radius, r.moment_of_inertia(radius, face_mass(deck)),
                          settings_of(deck))
-    film = contact.film(traction.kinematics(field.sliding), load)
+    film = traction.film(field.sliding)
     force = cam_force(field, traction.v_s0)
     used = (load > 0.0) & np.isfinite(film.for_shear) & np.isfinite(hz.pmax)
     force = np.where(used, force, 0.0)

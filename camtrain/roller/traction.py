@@ -96,18 +96,52 @@ class Traction:
             return np.where(h > 0.0, self.unit_shear[idx] / h, np.inf)
 
     @cached_property
-    def _rolling_film(self) -> tuple[np.ndarray, float | None]:
-        """The shear film at pure rolling (entrainment V_c) at every angle, and the speed
-        exponent a_u of the steady film formula when it is a power law h/R = C U^a_u G^a_g W^a_w
-        (None otherwise)."""
+    def _rolling(self) -> tuple[FilmField, float | None, float | None]:
+        """The film at pure rolling (entrainment V_c) at every angle, and the speed exponents
+        a_u of its minimum- and central-film formulas where the film law is the steady one and
+        the formula a power law h/R = C U^a_u G^a_g W^a_w (None otherwise)."""
         from camtrain.formulas.film import FILM_METHODS
 
         every = np.arange(self.load.size)
         film = self.contact.film(_RollerView(self.kin, every, np.zeros(every.size)), self.load)
-        law = getattr(FILM_METHODS.get_method(film.central_method or film.method).func,
-                      "power_law", None)
         steady = self.contact.film_law == "steady"
-        return film.for_shear, (law[1] if steady and law is not None else None)
+
+        def exponent(method):
+            law = getattr(FILM_METHODS.get_method(method).func, "power_law", None) if method \
+                else None
+            return law[1] if steady and law is not None else None
+
+        return film, exponent(film.method), exponent(film.central_method)
+
+    @property
+    def _rolling_film(self) -> tuple[np.ndarray, float | None]:
+        """The shear film at pure rolling at every angle and its speed exponent a_u (None
+        where the film is not a steady power law)."""
+        film, a_min, a_central = self._rolling
+        return film.for_shear, (a_central if film.central is not None else a_min)
+
+    def film(self, sliding) -> FilmField:
+        """The cam-roller film at sliding speeds u_s at every angle (the roller's entrainment
+        u_e = V_c - u_s/2). Power-law steady films are the rolling film scaled by
+        (|u_e| / |V_c|)^a_u, exact as :meth:`shear_film` (one film evaluation per run); other
+        film laws, and the angles where V_c = 0, are evaluated in full."""
+        rolling, a_min, a_central = self._rolling
+        if a_min is None or (rolling.central is not None and a_central is None):
+            return self.contact.film(self.kinematics(sliding), self.load)
+        u_s = np.asarray(sliding, dtype=float)
+        u_roll = np.abs(self.kin.v_cam)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.abs(self.kin.v_cam - 0.5 * u_s) / u_roll
+            h_min = rolling.min * ratio ** a_min
+            h_cen = None if rolling.central is None else rolling.central * ratio ** a_central
+        still = np.flatnonzero(u_roll == 0.0)
+        if still.size:
+            part = _RollerView(self.kin, still, u_s[still])
+            full = self.contact.film(part, self.load[still])
+            h_min[still] = full.min
+            if h_cen is not None:
+                h_cen[still] = full.central
+        return replace(rolling, min=h_min, central=h_cen)
 
     def shear_film(self, view, idx, load) -> np.ndarray:
         """The film the shear reads [m] at the roller's speeds of ``view`` (angles ``idx``).
@@ -137,9 +171,6 @@ class Traction:
     def kinematics(self, sliding) -> object:
         """The roller's kinematics at sliding speed u_s: V_f replaced by V_roll = V_c - u_s."""
         return replace(self.kin, v_follower=self.kin.v_cam - np.asarray(sliding, dtype=float))
-
-    def film(self, sliding) -> FilmField:
-        return self.contact.film(self.kinematics(sliding), self.load)
 
     def force(self, sliding, at_angles=None) -> np.ndarray:
         """Traction on the roller [N] at sliding speeds u_s, signed as u_s: at every angle, or
