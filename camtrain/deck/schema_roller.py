@@ -63,6 +63,11 @@ class Roller:
         "(plus Greenwood-Tripp asperity friction where the minimum film c (1 - eps) falls below "
         "3 pin_roughness, with the tribology section's asperity and boundary parameters)",
         default="hydrodynamic", applies="pin = bushing")
+    pin_terms: Literal["all", "shear"] = option(
+        "Friction torque of the plain bushing's film: all (Couette shear plus the pressure term "
+        "W e sin(attitude)/2 on the turning roller, the standard journal-bearing friction, "
+        "Raimondi & Boyd 1958; Yang 1992 eq. 1.20) or shear (the Couette term alone)",
+        default="all", applies="pin = bushing")
     pin_roughness: float | None = quantity(
         "Composite RMS roughness of pin and bore, for mixed pin friction; omit for "
         "lubricant.roughness", "µm", default=None, gt=0, applies="pin = bushing")

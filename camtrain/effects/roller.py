@@ -55,7 +55,7 @@ def pin_of(deck):
     if r.pin == "bushing":
         return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
                                                      r.pin_clearance, eta, name="roller"),
-                   model=r.pin_model, asperities=bushing_asperities(deck))
+                   model=r.pin_model, asperities=bushing_asperities(deck), terms=r.pin_terms)
     return Pin(r.pin)
 
 
