@@ -155,10 +155,6 @@ def roller_problems(deck) -> list[Problem]:
         out.append(Problem("mechanism.follower_shape", "a roller makes a line contact",
                            m.follower_shape, "cylindrical"))
     face = getattr(m, "roller", None)
-    if face is not None and face.crown_radius is not None:
-        out.append(Problem("mechanism.roller.crown_radius", "a turning roller is modelled as a "
-                           "straight roller (line contact)", f"{face.crown_radius * 1e3:g} mm",
-                           "no crown radius with a [roller] section"))
     face_mass = face.mass if face is not None else 0.0
     if r.solver == "inertial" and r.pin != "locked" and not face_mass \
             and (r.inertia, r.mass, r.width) == (None, None, None):

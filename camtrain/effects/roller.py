@@ -135,7 +135,6 @@ def run(deck, inputs, res):
     import numpy as np
 
     from camtrain.components import MAIN
-    from camtrain.contact.hertz import is_line
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz, FrictionField
     from camtrain.errors import field_error
@@ -149,10 +148,9 @@ def run(deck, inputs, res):
     load = np.maximum(inputs[ContactLoad].load, 0.0)
     hz = inputs[ContactHertz].main
     radius = float(np.max(kin.follower_radius))
-    if not (is_line(kin) and np.isfinite(radius)):
-        raise field_error("roller", "the mechanism's contact is not a line contact on a "
-                          "curved follower", deck.mechanism.type,
-                          "a cylindrical follower face (roller)")
+    if not np.isfinite(radius):
+        raise field_error("roller", "the mechanism's follower face is not curved",
+                          deck.mechanism.type, "a cylindrical or crowned follower face (roller)")
     r = deck.roller
     contact = CamContact.from_deck(deck)
     traction = Traction(contact, kin, load, hz, r.traction, r.rolling_resistance)
@@ -163,6 +161,8 @@ def run(deck, inputs, res):
     used = (load > 0.0) & np.isfinite(film.for_shear) & np.isfinite(hz.pmax)
     force = np.where(used, force, 0.0)
     write_columns(res, kin, load, field, film, force, contact)
+    if not hz.line:
+        warn_crown_edge(res, kin.theta, hz, load > 0.0, deck.cam.width)
     res.add_metrics(one_case(roller_metrics(kin.theta, field, load > 0.0)))
     warn_zero_entrainment(res, kin.theta, field.entrainment, load > 0.0, deck)
     if field.revolutions and field.periodic_change > r.periodic_tolerance:
@@ -172,6 +172,23 @@ def run(deck, inputs, res):
     return (RollerMotion(((MAIN, field),)), ContactFilm(((MAIN, film),), with_load=True),
             ContactFriction(((MAIN, FrictionField(force=force, hertz=hz, film=film, used=used)),),
                             model=f"roller ({r.traction})"))
+
+
+def warn_crown_edge(res, theta, hz, loaded, width) -> None:
+    """A crowned roller whose Hertz ellipse 2 a_y is longer than the contact width cam.width:
+    there the crown is too flat for the load, the ellipse is cut by the roller's edges and the
+    elliptical contact no longer holds (edge loading)."""
+    import numpy as np
+
+    length = np.where(loaded, 2.0 * np.nan_to_num(hz.half_length), 0.0)
+    i = int(length.argmax())
+    if length[i] > width:
+        over = int(np.count_nonzero(length > width))
+        res.warn(f"crowned roller: the Hertz ellipse (2 a_y up to {length[i] * 1e3:.3g} mm at "
+                 f"{np.degrees(theta[i]):.1f} deg) is longer than cam.width "
+                 f"({width * 1e3:.3g} mm) at {over} angles: the crown is too flat for the load "
+                 "and the roller's edges carry load the elliptical contact does not describe; "
+                 "a smaller mechanism.roller.crown_radius keeps the ellipse on the roller")
 
 
 def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:

@@ -97,7 +97,7 @@ def _compiled_records(traction, pin, radius, idx):
     v0, v_cam, h = traction.v_s0[idx], traction.kin.v_cam[idx], h_roll[idx]
     with np.errstate(divide="ignore", invalid="ignore"):
         h_slide = h * (np.abs(v_cam - 0.5 * v0) / np.abs(v_cam)) ** exponent
-        area = 2.0 * hz.half_width[idx] * np.broadcast_to(at(c.width, every), every.shape)[idx]
+        area = traction.area[idx]
         fast = ((v_cam != 0.0) & ((v_cam - 0.5 * v0) * v_cam > 0.0) & np.isfinite(h) & (h > 0.0)
                 & (np.minimum(h, h_slide) / sigma >= LAMBDA_LIMIT) & np.isfinite(hz.pmax[idx])
                 & (area > 0.0) & np.isfinite(traction.unit_shear[idx]))
