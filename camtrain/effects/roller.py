@@ -98,14 +98,23 @@ def cam_force(field, v_s0):
     return field.traction * s + rolling
 
 
+def _nan_to_zero(values):
+    """``np.nan_to_num(values, nan=0.0)`` (infinities to the largest floats), with its Python
+    wrapper only where a value is not finite."""
+    import numpy as np
+
+    out = np.where(values == values, values, 0.0)
+    return out if np.isfinite(out).all() else np.nan_to_num(out)
+
+
 def roller_metrics(theta, field, loaded) -> list:
     """The roller's metrics (:class:`camtrain.metric_rows.CaseMetric`)."""
     import numpy as np
 
     from camtrain.formulas.cycle import cycle_mean
 
-    slip = np.where(loaded, np.abs(np.nan_to_num(field.slip, nan=0.0)), 0.0)
-    srr = np.where(loaded, np.nan_to_num(field.slide_roll_ratio, nan=0.0), 0.0)
+    slip = np.where(loaded, np.abs(_nan_to_zero(field.slip)), 0.0)
+    srr = np.where(loaded, _nan_to_zero(field.slide_roll_ratio), 0.0)
     i, j, k = int(slip.argmax()), int(srr.argmin()), int(srr.argmax())
     n = max(int(np.count_nonzero(loaded)), 1)
     parts = (field.sliding_power, field.rolling_power, field.pin_power)
@@ -198,12 +207,15 @@ def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:
     import numpy as np
 
     from camtrain.effects.entrainment import zero_entrainment_warning
+    from camtrain.roller.speeds import periodic_next
 
     if not deck.speed.omega > 0:
         return
-    u = np.nan_to_num(entrainment)
-    nxt = np.roll(u, -1)
-    i = np.flatnonzero(loaded & np.roll(loaded, -1) & (u * nxt < 0.0))
+    u = _nan_to_zero(entrainment)
+    nxt = periodic_next(u)
+    i = np.flatnonzero(loaded & periodic_next(loaded) & (u * nxt < 0.0))
+    if not i.size:
+        return
     step = np.diff(theta).mean()
     zeros = [float(theta[j] + step * u[j] / (u[j] - nxt[j])) for j in i]
     for angle in zeros:

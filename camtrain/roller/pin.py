@@ -122,6 +122,15 @@ class Pin:
                                               self.kinematic_viscosity, self.f0, self.f1)
         return bushing_torque(self.bearing, w, F, self.model, self.asperities, self.terms)
 
+    def free_at(self, omega_roller, load) -> np.ndarray:
+        """Where the pin holds no torque at ``omega_roller`` (``torque(...) == 0``). A needle
+        bearing with f_0 > 0 holds torque at every nonzero speed (its M_0 > 0), so there it
+        is w_r = 0 alone, without evaluating the torque."""
+        w = np.asarray(omega_roller, dtype=float)
+        if self.kind == "needle" and self.f0 > 0.0 and self.pitch_diameter > 0.0:
+            return w == 0.0
+        return self.torque(w, load) == 0.0
+
     def breakaway(self, load) -> np.ndarray:
         """Torque [N m] the pin holds at rest (the limit of |T| as w_r -> 0+)."""
         F = np.maximum(np.asarray(load, dtype=float), 0.0)

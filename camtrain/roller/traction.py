@@ -91,9 +91,7 @@ class Traction:
         """Newtonian Barus shear over the Hertz zone per unit shear rate u_s/h [N s/m * m] at
         every loaded angle (Ball 1988 eq. 4.7 is linear in u_s/h; the zone integral is the
         costly part and does not change with the roller's speed): F_N = this x |u_s| / h."""
-        from camtrain.formulas import ball_1988_shear_force
-
-        from camtrain.formulas import yang_1992_shear_force
+        from camtrain.formulas import ball_1988_shear_force, yang_1992_shear_force
 
         c, lub, hz = self.contact, self.contact.lubricant, self.hertz
         use = (self.load > 0.0) & np.isfinite(hz.pmax)
