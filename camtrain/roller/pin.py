@@ -10,29 +10,28 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
 * ``needle``: the catalogue form of Palmgren's bearing friction, M = M_0 + M_1 [N mm] with
   M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 for nu n >= 2000 and 160e-7 f_0 d_m^3 below (nu in cSt,
   n in rpm, d_m the pitch diameter in mm) and M_1 = f_1 F d_m (F in N): Palmgren, *Ball and
-  Roller Bearing Engineering* (1959), as the bearing makers' catalogues state it (e.g. the
-  INA/Schaeffler technical principles "Friction and increases in temperature"; Harris &
-  Kotzalas, *Rolling Bearing Analysis*, 2006, ch. 9). The form is checked against the
-  Schaeffler (INA) technical principles "Rolling bearings - Friction and increases in
-  temperature" (medias.ina.de), which state M_0 = f_0 (nu n)^(2/3) d_M^3 10^-7 for
-  nu n >= 2000 and 160 10^-7 f_0 d_M^3 below, and M_1 = f_1 P_1 d_M, with f_0 and f_1 read
-  from a table by bearing series and lubrication. That table was not available to this work,
-  so the default factors f_0 = 3 and f_1 = 0.0005 (typical of needle roller and cage
-  assemblies under oil) remain UNCHECKED: a deck should give its bearing's. Cross-checks of
-  the order of magnitude, both lumping the whole torque into one coefficient: JTEKT/Koyo's
-  technical page "Friction coefficient of bearings" (catalogue section 5) gives M = mu P d/2
-  with mu = 0.0020-0.0030 for needle roller and cage assemblies (d the bore), and RoyMech's
-  table of rolling-bearing friction mu_m = 0.003 on the mean diameter for caged needle roller
-  bearings. With a 10 mm pitch diameter, 1 kN and 60 cSt at 7600 rpm (the roller deck's
-  nose) the defaults give 1.8 + 5.0 = 6.8 N mm, the lumped coefficients 8-15 N mm (8 mm
-  bore).
+  Roller Bearing Engineering* (1959), as the bearing makers' catalogues state it (Harris &
+  Kotzalas, *Rolling Bearing Analysis*, 2006, ch. 9). The Schaeffler (INA) technical
+  principles "Rolling bearings - Friction and increases in temperature" (medias.ina.de) give
+  this form with f_0 and f_1 read from a table by bearing series and lubrication; a search of
+  the public material available to this work (2026) found that page's introduction but neither
+  its formula text nor its table, so the default factors f_0 = 3 and f_1 = 0.0005 (typical of
+  needle roller and cage assemblies under oil) remain UNCHECKED: a deck should give its
+  bearing's. Cross-checks of the order of magnitude, both lumping the whole torque into one
+  coefficient: JTEKT/Koyo's technical page "Friction coefficient of bearings" (catalogue
+  section 5, Table 4-1) gives M = mu P d/2 with mu = 0.0020-0.0030 for needle roller and cage
+  assemblies (d the bore), and RoyMech's table of rolling-bearing friction mu_m = 0.003 on the
+  mean diameter for caged needle roller bearings. With a 10 mm pitch diameter, 1 kN and
+  60 cSt at 7600 rpm (the roller deck's nose) the defaults give 1.8 + 5.0 = 6.8 N mm, the
+  lumped coefficients 8-15 N mm (8 mm bore).
 * ``bushing``: a plain journal bearing between pin and roller bore under the roller's load at the
   roller's speed: the steady eccentricity of the Ocvirk short bearing
   (:func:`camtrain.bearings.steady.steady_eccentricity`, mean speed w_r/2 with the pin at rest)
   or of the finite-length Reynolds film (``model = "finite"``,
   :func:`camtrain.bearings.models.finite_steady_eccentricity`, held at eps 0.99 beyond its
   curve), and its Couette shear power over the complete film
-  (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r.
+  (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r,
+  plus the pressure term below (``terms``).
   Hydrodynamic by default. With ``asperities`` (the deck's ``roller.pin_friction = "mixed"``)
   the Greenwood-Tripp asperity friction of the bushing is added where the minimum film
   h_min = c (1 - eps) falls below lambda = 3 composite roughnesses: F_b = tau_0 A_a + m W_a
