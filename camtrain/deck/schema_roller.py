@@ -152,8 +152,9 @@ def roller_problems(deck) -> list[Problem]:
                            "domed (follower_shape = cylindrical), finger, rocker or pushrod "
                            "with mechanism.follower_radius"))
     elif m.type == "domed" and m.follower_shape != "cylindrical" and m.follower != "roller":
-        out.append(Problem("mechanism.follower_shape", "a roller makes a line contact",
-                           m.follower_shape, "cylindrical"))
+        out.append(Problem("mechanism.follower_shape", "a roller's face is a cylinder (a line "
+                           "contact; mechanism.follower = roller with mechanism.roller."
+                           "crown_radius crowns it)", m.follower_shape, "cylindrical"))
     face = getattr(m, "roller", None)
     face_mass = face.mass if face is not None else 0.0
     if r.solver == "inertial" and r.pin != "locked" and not face_mass \
