@@ -30,7 +30,9 @@ by Chiu (1992) and Alakhramsing et al. (2018):
     W = w / (E' R L)
 
 (constant and exponents as those papers quote them; not checked against the 1978 original
-here).
+here). camtrain charges the rolling loss F_R |u_e| to the cam's drive and keeps it out of the
+roller's torque balance (a named choice: the pressure-centre shift it stands for acts on both
+bodies, and its moment on the roller is small beside the pin's); ``none`` leaves it out.
 
 A **crowned roller** (``mechanism.roller.crown_radius``: the Kinematics carry R_y = the crown
 radius) makes an elliptical contact, and every part above takes its point-contact form: the
@@ -45,10 +47,9 @@ y carries the Hertz load per unit length w(y) = (3 W / 4 a_y)(1 - y^2/a_y^2), so
     F_R = 4.318 (G U)^0.658 (w_0 / (E' R))^0.0126 R a_y I / alpha,
     w_0 = 3 W / (4 a_y),  I = int_{-1}^{1} (1 - s^2)^0.0126 ds = B(1/2, 1.0126),
 
-which for a slender ellipse is within 1 % of the line formula over the ellipse's length 2 a_y
-(the load exponent 0.0126 makes F_R nearly indifferent to how the load is spread). camtrain charges the rolling loss F_R |u_e| to the cam's drive and keeps it out of the
-roller's torque balance (a named choice: the pressure-centre shift it stands for acts on both
-bodies, and its moment on the roller is small beside the pin's); ``none`` leaves it out.
+which is (3/2)^0.0126 B(1/2, 1.0126)/2 = 0.9974 of the line formula over the ellipse's
+length 2 a_y at any crown (the load exponent 0.0126 makes F_R nearly indifferent to how the
+load is spread).
 """
 from __future__ import annotations
 
