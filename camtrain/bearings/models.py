@@ -93,6 +93,16 @@ def finite_steady_eccentricity(bearing: JournalBearing, load, wbar, *,
     return np.where(target < force_t[1], target / force_t[1] * eps_t[1], 1.0 - gap)
 
 
+def finite_steady_attitude(bearing: JournalBearing, eps, *, cavitation: str = "reynolds",
+                           n_theta: int = 120, n_z: int = 12) -> np.ndarray:
+    """Attitude angle [rad] of the finite-length film in steady rotation at eccentricity ratio
+    ``eps``, interpolated on the cached steady curve of :func:`finite_steady_eccentricity`
+    (held at its last point, eps 0.99, beyond it)."""
+    eps_t, _, att_t = _steady_curve(round(bearing.land / bearing.diameter, 12), cavitation,
+                                    int(n_theta), int(n_z))
+    return np.interp(np.asarray(eps, dtype=float), eps_t, att_t)
+
+
 def finite_steady_orbit(bearing: JournalBearing, load_x, load_y, angle_grid, omega_journal,
                         omega_bearing=0.0, *, angle_rate=None, period: float = 2.0 * math.pi,
                         film: str = "2pi", terms: str = "shear", cavitation: str = "reynolds",

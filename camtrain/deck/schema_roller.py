@@ -63,6 +63,11 @@ class Roller:
         "(plus Greenwood-Tripp asperity friction where the minimum film c (1 - eps) falls below "
         "3 pin_roughness, with the tribology section's asperity and boundary parameters)",
         default="hydrodynamic", applies="pin = bushing")
+    pin_terms: Literal["all", "shear"] = option(
+        "Friction torque of the plain bushing's film: all (Couette shear plus the pressure term "
+        "W e sin(attitude)/2 on the turning roller, the standard journal-bearing friction, "
+        "Raimondi & Boyd 1958; Yang 1992 eq. 1.20) or shear (the Couette term alone)",
+        default="all", applies="pin = bushing")
     pin_roughness: float | None = quantity(
         "Composite RMS roughness of pin and bore, for mixed pin friction; omit for "
         "lubricant.roughness", "µm", default=None, gt=0, applies="pin = bushing")
@@ -147,13 +152,10 @@ def roller_problems(deck) -> list[Problem]:
                            "domed (follower_shape = cylindrical), finger, rocker or pushrod "
                            "with mechanism.follower_radius"))
     elif m.type == "domed" and m.follower_shape != "cylindrical" and m.follower != "roller":
-        out.append(Problem("mechanism.follower_shape", "a roller makes a line contact",
-                           m.follower_shape, "cylindrical"))
+        out.append(Problem("mechanism.follower_shape", "a roller's face is a cylinder (a line "
+                           "contact; mechanism.follower = roller with mechanism.roller."
+                           "crown_radius crowns it)", m.follower_shape, "cylindrical"))
     face = getattr(m, "roller", None)
-    if face is not None and face.crown_radius is not None:
-        out.append(Problem("mechanism.roller.crown_radius", "a turning roller is modelled as a "
-                           "straight roller (line contact)", f"{face.crown_radius * 1e3:g} mm",
-                           "no crown radius with a [roller] section"))
     face_mass = face.mass if face is not None else 0.0
     if r.solver == "inertial" and r.pin != "locked" and not face_mass \
             and (r.inertia, r.mass, r.width) == (None, None, None):

@@ -55,7 +55,7 @@ def pin_of(deck):
     if r.pin == "bushing":
         return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
                                                      r.pin_clearance, eta, name="roller"),
-                   model=r.pin_model, asperities=bushing_asperities(deck))
+                   model=r.pin_model, asperities=bushing_asperities(deck), terms=r.pin_terms)
     return Pin(r.pin)
 
 
@@ -98,14 +98,23 @@ def cam_force(field, v_s0):
     return field.traction * s + rolling
 
 
+def _nan_to_zero(values):
+    """``np.nan_to_num(values, nan=0.0)`` (infinities to the largest floats), with its Python
+    wrapper only where a value is not finite."""
+    import numpy as np
+
+    out = np.where(values == values, values, 0.0)
+    return out if np.isfinite(out).all() else np.nan_to_num(out)
+
+
 def roller_metrics(theta, field, loaded) -> list:
     """The roller's metrics (:class:`camtrain.metric_rows.CaseMetric`)."""
     import numpy as np
 
     from camtrain.formulas.cycle import cycle_mean
 
-    slip = np.where(loaded, np.abs(np.nan_to_num(field.slip, nan=0.0)), 0.0)
-    srr = np.where(loaded, np.nan_to_num(field.slide_roll_ratio, nan=0.0), 0.0)
+    slip = np.where(loaded, np.abs(_nan_to_zero(field.slip)), 0.0)
+    srr = np.where(loaded, _nan_to_zero(field.slide_roll_ratio), 0.0)
     i, j, k = int(slip.argmax()), int(srr.argmin()), int(srr.argmax())
     n = max(int(np.count_nonzero(loaded)), 1)
     parts = (field.sliding_power, field.rolling_power, field.pin_power)
@@ -135,7 +144,6 @@ def run(deck, inputs, res):
     import numpy as np
 
     from camtrain.components import MAIN
-    from camtrain.contact.hertz import is_line
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz, FrictionField
     from camtrain.errors import field_error
@@ -149,20 +157,21 @@ def run(deck, inputs, res):
     load = np.maximum(inputs[ContactLoad].load, 0.0)
     hz = inputs[ContactHertz].main
     radius = float(np.max(kin.follower_radius))
-    if not (is_line(kin) and np.isfinite(radius)):
-        raise field_error("roller", "the mechanism's contact is not a line contact on a "
-                          "curved follower", deck.mechanism.type,
-                          "a cylindrical follower face (roller)")
+    if not np.isfinite(radius):
+        raise field_error("roller", "the mechanism's follower face is not curved",
+                          deck.mechanism.type, "a cylindrical or crowned follower face (roller)")
     r = deck.roller
     contact = CamContact.from_deck(deck)
     traction = Traction(contact, kin, load, hz, r.traction, r.rolling_resistance)
     field = solve_roller(traction, pin_of(deck), radius, r.moment_of_inertia(radius, face_mass(deck)),
                          settings_of(deck))
-    film = contact.film(traction.kinematics(field.sliding), load)
+    film = traction.film(field.sliding)
     force = cam_force(field, traction.v_s0)
     used = (load > 0.0) & np.isfinite(film.for_shear) & np.isfinite(hz.pmax)
     force = np.where(used, force, 0.0)
     write_columns(res, kin, load, field, film, force, contact)
+    if not hz.line:
+        warn_crown_edge(res, kin.theta, hz, load > 0.0, deck.cam.width)
     res.add_metrics(one_case(roller_metrics(kin.theta, field, load > 0.0)))
     warn_zero_entrainment(res, kin.theta, field.entrainment, load > 0.0, deck)
     if field.revolutions and field.periodic_change > r.periodic_tolerance:
@@ -174,6 +183,23 @@ def run(deck, inputs, res):
                             model=f"roller ({r.traction})"))
 
 
+def warn_crown_edge(res, theta, hz, loaded, width) -> None:
+    """A crowned roller whose Hertz ellipse 2 a_y is longer than the contact width cam.width:
+    there the crown is too flat for the load, the ellipse is cut by the roller's edges and the
+    elliptical contact no longer holds (edge loading)."""
+    import numpy as np
+
+    length = np.where(loaded, 2.0 * np.nan_to_num(hz.half_length), 0.0)
+    i = int(length.argmax())
+    if length[i] > width:
+        over = int(np.count_nonzero(length > width))
+        res.warn(f"crowned roller: the Hertz ellipse (2 a_y up to {length[i] * 1e3:.3g} mm at "
+                 f"{np.degrees(theta[i]):.1f} deg) is longer than cam.width "
+                 f"({width * 1e3:.3g} mm) at {over} angles: the crown is too flat for the load "
+                 "and the roller's edges carry load the elliptical contact does not describe; "
+                 "a smaller mechanism.roller.crown_radius keeps the ellipse on the roller")
+
+
 def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:
     """The zero-entrainment finding of the cam contact at the roller's entrainment (V_c +
     V_roll)/2, in the kinematics effect's words, on loaded angles: a locked roller's is the
@@ -181,12 +207,15 @@ def warn_zero_entrainment(res, theta, entrainment, loaded, deck) -> None:
     import numpy as np
 
     from camtrain.effects.entrainment import zero_entrainment_warning
+    from camtrain.roller.speeds import periodic_next
 
     if not deck.speed.omega > 0:
         return
-    u = np.nan_to_num(entrainment)
-    nxt = np.roll(u, -1)
-    i = np.flatnonzero(loaded & np.roll(loaded, -1) & (u * nxt < 0.0))
+    u = _nan_to_zero(entrainment)
+    nxt = periodic_next(u)
+    i = np.flatnonzero(loaded & periodic_next(loaded) & (u * nxt < 0.0))
+    if not i.size:
+        return
     step = np.diff(theta).mean()
     zeros = [float(theta[j] + step * u[j] / (u[j] - nxt[j])) for j in i]
     for angle in zeros:

@@ -53,6 +53,16 @@ def _k(k, Rx, Ry):
     return check("k", k, lambda v: np.isfinite(v) & (v > 0), "an ellipticity > 0")
 
 
+def _speed_exponent(a_u):
+    """Mark a point-contact formula whose film goes as U^a_u at fixed geometry and load (the
+    roller's film at another entrainment speed is then a scaling of one evaluation)."""
+    def mark(fn):
+        fn.speed_exponent = a_u
+        return fn
+    return mark
+
+
+@_speed_exponent(0.68)
 def hamrock_dowson_1977_min(W, Rx, Ry, u, eta0, alpha, E_r, k=None):
     r"""Hamrock & Dowson minimum film thickness, elliptical contact (entrainment along x).
 
@@ -73,6 +83,7 @@ def hamrock_dowson_1977_min(W, Rx, Ry, u, eta0, alpha, E_r, k=None):
     return _film(3.63, 0.68, 0.49, -0.073, 1.0 - safe_exp(-0.68 * k), radius("Rx", Rx), U, G, Wd)
 
 
+@_speed_exponent(0.67)
 def hamrock_dowson_1977_cen(W, Rx, Ry, u, eta0, alpha, E_r, k=None):
     r"""Hamrock & Dowson central film thickness, elliptical contact (entrainment along x).
 
@@ -101,6 +112,7 @@ def _chittenden(C, c_exp, W, R_e, R_s, u, eta0, alpha, E_r):
     return _film(C, 0.68, 0.49, -0.073, factor, R_e, U, G, Wd)
 
 
+@_speed_exponent(0.68)
 def chittenden_1985_min(W, R_e, R_s, u, eta0, alpha, E_r):
     r"""Chittenden et al. minimum film for entrainment at any angle to the ellipse axes.
 
@@ -118,6 +130,7 @@ def chittenden_1985_min(W, R_e, R_s, u, eta0, alpha, E_r):
     return _chittenden(3.68, 0.67, W, R_e, R_s, u, eta0, alpha, E_r)
 
 
+@_speed_exponent(0.68)
 def chittenden_1985_cen(W, R_e, R_s, u, eta0, alpha, E_r):
     r"""Chittenden et al. central film for entrainment at any angle to the ellipse axes.
 

@@ -19,7 +19,8 @@ __all__ = ["CaseLoads", "LoadSolution", "iterate_cases", "iterate_load"]
 
 @dataclass(frozen=True)
 class LoadSolution:
-    """Converged load W [N], friction force F [N], coefficient mu = F/W [-] per angle."""
+    """Converged load W [N] per angle, and the friction force F [N] and coefficient mu = F/W [-]
+    it was solved with (F at the previous iterate of the load, within the tolerance of W)."""
 
     load: np.ndarray
     friction: np.ndarray | None
@@ -89,11 +90,14 @@ def iterate_cases(load_of_mu: Callable[[np.ndarray], np.ndarray],
     done = np.zeros(cases, dtype=bool)
     iterations = np.zeros(cases, dtype=int)
     residual = np.full(cases, np.inf)
+    solved_with = None
     for k in range(1, max_iterations + 1):
         force = np.asarray(friction_of_load(load), dtype=float)
         positive = load > 0.0
         step = np.where(positive, force / np.where(positive, load, 1.0), mu)
-        mu = np.where(done[..., None], mu, step) if k > 1 else step
+        held = done[..., None]
+        mu = np.where(held, mu, step) if k > 1 else step
+        solved_with = np.where(held, solved_with, force) if k > 1 else force
         if not depends_on_mu:
             return CaseLoads(load, force, mu, np.full(cases, k), np.zeros(cases),
                              np.ones(cases, dtype=bool))
@@ -108,5 +112,7 @@ def iterate_cases(load_of_mu: Callable[[np.ndarray], np.ndarray],
         if done.all():
             break
     iterations[~done] = max_iterations
-    force = np.asarray(friction_of_load(load), dtype=float)
-    return CaseLoads(load, force, mu, iterations, residual, done)
+    # the friction the final load was solved with (mu = F/W of the iterate before it): no
+    # further evaluation at the final load, which the chain's hertz, film and friction effects
+    # (or the roller) evaluate for themselves
+    return CaseLoads(load, solved_with, mu, iterations, residual, done)

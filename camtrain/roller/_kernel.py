@@ -48,7 +48,7 @@ class Scheme(NamedTuple):
     speed_ref: float
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _lookup(grid, row, x):
     """Linear interpolation of ``row`` on ``grid`` at x, held at the ends."""
     n = grid.size
@@ -61,29 +61,32 @@ def _lookup(grid, row, x):
     return (1.0 - t) * row[k] + t * row[k + 1]
 
 
-@njit(cache=True)
-def _residual(tab, sch, i, j, t, w0, w1):
-    """J (w1 - w0)/h - r F_t + T_pin at the blend t between grid angles i and j."""
-    v0 = (1.0 - t) * tab.v_s0[i] + t * tab.v_s0[j]
-    u = v0 - sch.radius * w1
-    f = ((1.0 - t) * _lookup(tab.grid, tab.traction[i], u / tab.sliding_scale[i])
-         + t * _lookup(tab.grid, tab.traction[j], u / tab.sliding_scale[j]))
-    x = w1 / tab.speed_scale
-    tp = (1.0 - t) * _lookup(tab.grid, tab.pin[i], x) + t * _lookup(tab.grid, tab.pin[j], x)
-    h = sch.dt / sch.substeps
-    return sch.inertia * (w1 - w0) / h - sch.radius * f + tp
+@njit(cache=True, inline="always")
+def _blend(grid, row_i, row_j, t, x_i, x_j):
+    """(1 - t) row_i(x_i) + t row_j(x_j), each row interpolated on ``grid``."""
+    return (1.0 - t) * _lookup(grid, row_i, x_i) + t * _lookup(grid, row_j, x_j)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _step(tab, sch, i, j, t, w0):
-    """w at the end of one implicit step (bisection on the increasing residual)."""
+    """w at the end of one implicit step (bisection on the increasing residual
+    J (w1 - w0)/h - r F_t + T_pin at the blend t between grid angles i and j). The rows and
+    scales of the two angles are read once per step, not once per bisection."""
     v0 = (1.0 - t) * tab.v_s0[i] + t * tab.v_s0[j]
     ws = v0 / sch.radius
     lo = min(w0, 0.0, ws) - 1e-9 * sch.speed_ref
     hi = max(w0, 0.0, ws) + 1e-9 * sch.speed_ref
+    grid, trac_i, trac_j = tab.grid, tab.traction[i], tab.traction[j]
+    pin_i, pin_j = tab.pin[i], tab.pin[j]
+    scale_i, scale_j, speed_scale = tab.sliding_scale[i], tab.sliding_scale[j], tab.speed_scale
+    radius, inertia, h = sch.radius, sch.inertia, sch.dt / sch.substeps
     for _ in range(BISECTIONS):
         mid = 0.5 * (lo + hi)
-        if _residual(tab, sch, i, j, t, w0, mid) > 0.0:
+        u = v0 - radius * mid
+        f = _blend(grid, trac_i, trac_j, t, u / scale_i, u / scale_j)
+        x = mid / speed_scale
+        tp = _blend(grid, pin_i, pin_j, t, x, x)
+        if inertia * (mid - w0) / h - radius * f + tp > 0.0:
             hi = mid
         else:
             lo = mid

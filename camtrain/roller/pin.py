@@ -10,22 +10,28 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
 * ``needle``: the catalogue form of Palmgren's bearing friction, M = M_0 + M_1 [N mm] with
   M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 for nu n >= 2000 and 160e-7 f_0 d_m^3 below (nu in cSt,
   n in rpm, d_m the pitch diameter in mm) and M_1 = f_1 F d_m (F in N): Palmgren, *Ball and
-  Roller Bearing Engineering* (1959), as the bearing makers' catalogues state it (e.g. the
-  INA/Schaeffler technical principles "Friction and increases in temperature"; Harris &
-  Kotzalas, *Rolling Bearing Analysis*, 2006, ch. 9). The default factors f_0 = 3 and
-  f_1 = 0.0005 are typical catalogue values for needle roller and cage assemblies under oil
-  that this work could NOT check against a published table: a deck should give its bearing's.
-  A cross-check of the order of magnitude: JTEKT/Koyo's technical page "Friction coefficient
-  of bearings" (koyousa.com, catalogue section 5) gives the lumped M = mu P d/2 with
-  mu = 0.0020-0.0030 for needle roller and cage assemblies, i.e. 0.0010-0.0015 in the form
-  f_1 F d_m if all the torque were load-dependent (d ~ d_m).
+  Roller Bearing Engineering* (1959), as the bearing makers' catalogues state it (Harris &
+  Kotzalas, *Rolling Bearing Analysis*, 2006, ch. 9). The Schaeffler (INA) technical
+  principles "Rolling bearings - Friction and increases in temperature" (medias.ina.de) give
+  this form with f_0 and f_1 read from a table by bearing series and lubrication; a search of
+  the public material available to this work (2026) found that page's introduction but neither
+  its formula text nor its table, so the default factors f_0 = 3 and f_1 = 0.0005 (typical of
+  needle roller and cage assemblies under oil) remain UNCHECKED: a deck should give its
+  bearing's. Cross-checks of the order of magnitude, both lumping the whole torque into one
+  coefficient: JTEKT/Koyo's technical page "Friction coefficient of bearings" (catalogue
+  section 5, Table 4-1) gives M = mu P d/2 with mu = 0.0020-0.0030 for needle roller and cage
+  assemblies (d the bore), and RoyMech's table of rolling-bearing friction mu_m = 0.003 on the
+  mean diameter for caged needle roller bearings. With a 10 mm pitch diameter, 1 kN and
+  60 cSt at 7600 rpm (the roller deck's nose) the defaults give 1.8 + 5.0 = 6.8 N mm, the
+  lumped coefficients 8-15 N mm (8 mm bore).
 * ``bushing``: a plain journal bearing between pin and roller bore under the roller's load at the
   roller's speed: the steady eccentricity of the Ocvirk short bearing
   (:func:`camtrain.bearings.steady.steady_eccentricity`, mean speed w_r/2 with the pin at rest)
   or of the finite-length Reynolds film (``model = "finite"``,
   :func:`camtrain.bearings.models.finite_steady_eccentricity`, held at eps 0.99 beyond its
   curve), and its Couette shear power over the complete film
-  (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r.
+  (:func:`camtrain.bearings.power.shear_power`, Martin 1985, Yang 1992 eq. 1.22), T = P / w_r,
+  plus the pressure term below (``terms``).
   Hydrodynamic by default. With ``asperities`` (the deck's ``roller.pin_friction = "mixed"``)
   the Greenwood-Tripp asperity friction of the bushing is added where the minimum film
   h_min = c (1 - eps) falls below lambda = 3 composite roughnesses: F_b = tau_0 A_a + m W_a
@@ -36,6 +42,20 @@ opposes the rotation) and zero at w_r = 0 except where the model has a breakaway
   projection), W_a capped at the pin load. The Couette torque is kept whole (the film's share
   of the area is not taken off: an upper bound of the viscous part). At rest no film carries
   load and the asperities carry all of it: the breakaway torque (tau_0 A_a(0) + m W) d/2.
+
+  ``terms`` (the deck's ``roller.pin_terms``): the friction torque of a loaded journal bearing
+  on its turning member is the Couette shear **plus the pressure (Poiseuille) term**
+  W e sin(phi) / 2, e = c eps, phi the attitude angle: Yang (1992) eq. 1.20 with no
+  translation, power wbar W e sin(phi) at the mean speed wbar = w_r / 2, which is the standard
+  friction coefficient of a journal bearing, mu r/c = 2 pi^2 S / sqrt(1 - eps^2)
+  + eps sin(phi) / 2 (Raimondi & Boyd 1958; Hamrock, *Fundamentals of Fluid Film
+  Lubrication*, 2004, ch. 10-11). ``all`` (default) keeps both; ``shear`` the Couette term
+  alone (camtrain's earlier bushing, and the bearings' ``terms = "shear"``). Under a heavy load
+  the pressure term dominates (for the short bearing near eps -> 1 it is about
+  L^2 / (16 R^2 (1 - eps^2)) times the Couette term), so leaving it out underrates the pin's
+  loss exactly where Alakhramsing et al. (2018) find the pin the largest loss. phi is Ocvirk's
+  atan[pi sqrt(1 - eps^2) / (4 eps)] for ``model = "short"`` and the finite film's steady
+  attitude for ``"finite"``.
 """
 from __future__ import annotations
 
@@ -45,6 +65,8 @@ from dataclasses import dataclass
 import numpy as np
 
 PIN_KINDS = ("frictionless", "locked", "needle", "bushing")
+#: bushing torque terms: Couette shear and pressure (standard), or the shear alone
+PIN_TERMS = ("all", "shear")
 #: nu n [cSt rpm] below which the catalogue form holds M_0 at its low-speed value
 NU_N_LIMIT = 2000.0
 
@@ -78,12 +100,15 @@ class Pin:
     bearing: object = None
     model: str = "short"
     asperities: Asperities | None = None
+    terms: str = "all"
 
     def __post_init__(self):
         if self.kind not in PIN_KINDS:
             raise ValueError(f"pin kind {self.kind!r}: expected one of {PIN_KINDS}")
         if self.kind == "bushing" and self.bearing is None:
             raise ValueError("a bushing pin needs its journal bearing")
+        if self.terms not in PIN_TERMS:
+            raise ValueError(f"pin torque terms {self.terms!r}: expected one of {PIN_TERMS}")
 
     def torque(self, omega_roller, load) -> np.ndarray:
         """T [N m] opposing w_r (signed as w_r) under the pin load ``load`` [N]."""
@@ -94,7 +119,16 @@ class Pin:
         if self.kind == "needle":
             return np.sign(w) * needle_torque(np.abs(w), F, self.pitch_diameter,
                                               self.kinematic_viscosity, self.f0, self.f1)
-        return bushing_torque(self.bearing, w, F, self.model, self.asperities)
+        return bushing_torque(self.bearing, w, F, self.model, self.asperities, self.terms)
+
+    def free_at(self, omega_roller, load) -> np.ndarray:
+        """Where the pin holds no torque at ``omega_roller`` (``torque(...) == 0``). A needle
+        bearing with f_0 > 0 holds torque at every nonzero speed (its M_0 > 0), so there it
+        is w_r = 0 alone, without evaluating the torque."""
+        w = np.asarray(omega_roller, dtype=float)
+        if self.kind == "needle" and self.f0 > 0.0 and self.pitch_diameter > 0.0:
+            return w == 0.0
+        return self.torque(w, load) == 0.0
 
     def breakaway(self, load) -> np.ndarray:
         """Torque [N m] the pin holds at rest (the limit of |T| as w_r -> 0+)."""
@@ -119,10 +153,11 @@ def needle_torque(speed, load, pitch_diameter, kinematic_viscosity, f0, f1):
 
 
 def bushing_torque(bearing, omega_roller, load, model: str = "short",
-                   asperities: Asperities | None = None) -> np.ndarray:
+                   asperities: Asperities | None = None, terms: str = "all") -> np.ndarray:
     """Friction torque [N m] of a plain bushing (see the module docstring), signed as w_r;
     ``model`` short (Ocvirk) or finite (the finite-length Reynolds film's steady curve);
-    ``asperities`` adds the Greenwood-Tripp asperity friction of a mixed film."""
+    ``asperities`` adds the Greenwood-Tripp asperity friction of a mixed film; ``terms`` all
+    (Couette shear and the pressure term) or shear."""
     from camtrain.bearings.models import finite_steady_eccentricity
     from camtrain.bearings.power import shear_power
     from camtrain.bearings.steady import steady_eccentricity
@@ -139,10 +174,26 @@ def bushing_torque(bearing, omega_roller, load, model: str = "short",
             eps = np.atleast_1d(steady_eccentricity(bearing, F, 0.5 * ww))
         power = shear_power(bearing, eps, -0.5 * np.pi, ww, film="2pi")
         out[turning] = power / ww
+        if terms == "all":
+            out[turning] += np.sign(ww) * pressure_torque(bearing, eps, F, model)
         if asperities is not None:
             out[turning] += np.sign(ww) * asperity_torque(
                 bearing, asperities, np.minimum(eps, 1.0), F)
     return out
+
+
+def pressure_torque(bearing, eccentricity, load, model: str = "short") -> np.ndarray:
+    """Pressure (Poiseuille) part of a journal bearing's friction torque on its turning member
+    [N m], W c eps sin(phi) / 2 (Yang 1992 eq. 1.20 with no translation, over the speed; the
+    eps sin(phi) / 2 term of the friction coefficient mu r/c of Raimondi & Boyd 1958), with
+    the attitude phi of the short (Ocvirk) or the finite film (see the module docstring)."""
+    from camtrain.bearings.models import finite_steady_attitude
+    from camtrain.formulas.bearings import ocvirk_attitude_angle
+
+    eps = np.minimum(np.asarray(eccentricity, dtype=float), np.nextafter(1.0, 0.0))
+    phi = (finite_steady_attitude(bearing, eps) if model == "finite"
+           else ocvirk_attitude_angle(eps))
+    return 0.5 * np.asarray(load, dtype=float) * bearing.clearance * eps * np.sin(phi)
 
 
 def rest_torque(bearing, asperities: Asperities, load) -> np.ndarray:

@@ -56,17 +56,24 @@ class RollerSettings:
 
 def quasi_static_speed(traction: Traction, pin: Pin, radius: float) -> np.ndarray:
     """w_r [rad/s] per angle with F_t r = T_pin (J = 0); see the module docstring."""
+    return _quasi_static(traction, pin, radius)[0]
+
+
+def _quasi_static(traction: Traction, pin: Pin, radius: float):
+    """:func:`quasi_static_speed` and the angles the compiled balance solved with its records
+    ``(angles, (BalanceAngles, BalanceLaw))`` (None where it solved none)."""
     v0 = traction.v_s0
     w_star = v0 / radius
     if pin.kind == "locked":
-        return np.zeros(v0.shape)
+        return np.zeros(v0.shape), None
     if pin.kind == "frictionless":
-        return w_star.copy()
+        return w_star.copy(), None
     load = traction.load
     # a pin without torque at the rolling speed lets the roller roll (also unloaded: J = 0)
-    free = pin.torque(w_star, load) == 0.0
+    free = pin.free_at(w_star, load)
     x = np.where(free, 1.0, 0.0)
     loaded = np.flatnonzero(~free & (load > 0.0) & (v0 != 0.0))
+    known = None
     if loaded.size:
         compiled = _compiled_records(traction, pin, radius, loaded)
         if compiled is not None:
@@ -74,17 +81,17 @@ def quasi_static_speed(traction: Traction, pin: Pin, radius: float) -> np.ndarra
 
             fast, records = compiled
             x[loaded[fast]] = balance_roots(*records)
+            known = (loaded[fast], records)
             loaded = loaded[~fast]
         if loaded.size:
             x[loaded] = _balance_roots(traction, pin, radius, loaded)
-    return x * w_star
+    return x * w_star, known
 
 
 def _compiled_records(traction, pin, radius, idx):
     """The angles of ``idx`` the compiled balance solves (a mask over ``idx``: a needle pin,
     the full-film traction law, a power-law film, the film parameter at or above the mixed limit
     over the whole bracket; :mod:`._balance`) and its records, or None where it solves none."""
-    from camtrain.contact._points import at
     from camtrain.roller._balance import BalanceAngles, BalanceLaw
     from camtrain.roller.traction import LAMBDA_LIMIT
 
@@ -92,12 +99,12 @@ def _compiled_records(traction, pin, radius, idx):
     if pin.kind != "needle" or traction.law == "contact" or exponent is None:
         return None
     c, trib, hz = traction.contact, traction.contact.tribology, traction.hertz
-    every = np.ones(traction.load.shape, dtype=bool)
-    sigma = np.broadcast_to(at(c.lubricant.roughness, every), every.shape)[idx]
+    shape = traction.load.shape
+    sigma = _per_angle(c.lubricant.roughness, shape, idx)
     v0, v_cam, h = traction.v_s0[idx], traction.kin.v_cam[idx], h_roll[idx]
     with np.errstate(divide="ignore", invalid="ignore"):
         h_slide = h * (np.abs(v_cam - 0.5 * v0) / np.abs(v_cam)) ** exponent
-        area = 2.0 * hz.half_width[idx] * np.broadcast_to(at(c.width, every), every.shape)[idx]
+        area = traction.area[idx]
         fast = ((v_cam != 0.0) & ((v_cam - 0.5 * v0) * v_cam > 0.0) & np.isfinite(h) & (h > 0.0)
                 & (np.minimum(h, h_slide) / sigma >= LAMBDA_LIMIT) & np.isfinite(hz.pmax[idx])
                 & (area > 0.0) & np.isfinite(traction.unit_shear[idx]))
@@ -105,7 +112,7 @@ def _compiled_records(traction, pin, radius, idx):
         return None
     k, load = idx[fast], traction.load[idx][fast]
     area = area[fast]
-    mu_b = np.broadcast_to(at(trib.boundary_friction, every), every.shape)[k]
+    mu_b = _per_angle(trib.boundary_friction, shape, k)
     angles = BalanceAngles(
         np.ascontiguousarray(v0[fast]), np.ascontiguousarray(v_cam[fast]), load,
         np.ascontiguousarray(h[fast]), traction.unit_shear[k], area,
@@ -116,6 +123,14 @@ def _compiled_records(traction, pin, radius, idx):
                      float(pin.kinematic_viscosity), float(pin.f0), float(pin.f1), RESIDUAL,
                      BRACKET, SLIP_MIN, HALVINGS, NU_N_LIMIT)
     return fast, (angles, law)
+
+
+def _per_angle(value, shape, idx):
+    """A contact parameter at the angles ``idx``: a plain number as it is, a per-case array
+    (a sweep batch's) broadcast to the field's ``shape`` and selected."""
+    if np.ndim(value) == 0:
+        return value
+    return np.broadcast_to(value, shape)[idx]
 
 
 def _balance_roots(traction, pin, radius, idx) -> np.ndarray:
@@ -228,34 +243,63 @@ def solve_roller(traction: Traction, pin: Pin, radius: float, inertia: float,
         label = (f"inertial: periodic implicit-Euler march, {settings.substeps} substeps per "
                  f"grid step, {revs} revolutions")
     elif settings.solver in SOLVERS:
-        w = quasi_static_speed(traction, pin, radius)
+        w, known = _quasi_static(traction, pin, radius)
         label = "quasi_static: J = 0, traction x radius = pin torque per angle"
+        return motion_of(traction, pin, radius, inertia, w, label, revs, change,
+                         settings.skid_slip, known)
     else:
         raise ValueError(f"roller solver {settings.solver!r}: expected one of {SOLVERS}")
     return motion_of(traction, pin, radius, inertia, w, label, revs, change, settings.skid_slip)
 
 
+def forces(traction: Traction, pin: Pin, w, u_s, known=None):
+    """Traction [N] at sliding speeds ``u_s`` and pin torque [N m] at roller speeds ``w``, per
+    angle: on the angles the compiled balance solved (``known``, from :func:`_quasi_static`)
+    by its compiled laws, the same steps; elsewhere by the array laws. Every pin holds no torque
+    at w = 0 and an unloaded contact carries no traction, so those are not evaluated."""
+    if known is None:
+        return traction.force(u_s), pin.torque(w, traction.load)
+    from camtrain.roller._balance import forces_at
+
+    idx, (angles, law) = known
+    f_t, t_pin = np.zeros(w.shape), np.zeros(w.shape)
+    f_t[idx], t_pin[idx] = forces_at(angles, law, u_s[idx], w[idx])
+    rest = np.ones(w.shape, dtype=bool)
+    rest[idx] = False
+    others = np.flatnonzero(rest & (traction.load > 0.0))
+    if others.size:
+        f_t[others] = traction.force(u_s[others], others)
+    turning = np.flatnonzero(rest & (w != 0.0))
+    if turning.size:
+        t_pin[turning] = pin.torque(w[turning], traction.load[turning])
+    return f_t, t_pin
+
+
 def motion_of(traction: Traction, pin: Pin, radius, inertia, w, label, revs, change,
-              skid_slip) -> RollerField:
-    """Every per-angle quantity of the roller at speeds ``w`` [rad/s]."""
+              skid_slip, known=None) -> RollerField:
+    """Every per-angle quantity of the roller at speeds ``w`` [rad/s] (``known``: see
+    :func:`forces`)."""
     kin = traction.kin
     u_s = speeds.sliding_speed(kin.v_cam, kin.v_follower, w, radius)
     if pin.kind == "frictionless":
         u_s = np.where(traction.load > 0.0, 0.0, u_s)   # exact rolling, no round-off
     u_e = speeds.entrainment_speed(kin.v_cam, u_s)
     slip = speeds.slip(u_s, traction.v_s0)
-    f_t = traction.force(u_s)
+    f_t, t_pin = forces(traction, pin, w, u_s, known)
     f_r = traction.rolling_force(u_s)
-    t_pin = pin.torque(w, traction.load)
-    dtheta = 2.0 * math.pi / w.size
-    dw = (np.roll(w, -1) - np.roll(w, 1)) / (2.0 * dtheta) * abs(kin.omega)
+    kinetic = np.zeros(w.shape)
+    if inertia:
+        dtheta = 2.0 * math.pi / w.size
+        dw = (speeds.periodic_next(w) - speeds.periodic_previous(w)) / (2.0 * dtheta) \
+            * abs(kin.omega)
+        kinetic = inertia * w * dw
     loaded = traction.load > 0.0
     return RollerField(
         omega_roller=w, sliding=u_s, entrainment=u_e, slip=slip,
         slide_roll_ratio=speeds.slide_roll_ratio(u_s, u_e),
-        rolls=loaded & (np.abs(np.nan_to_num(slip, nan=0.0)) <= skid_slip),
+        rolls=loaded & ~(np.abs(slip) > skid_slip),   # NaN slip (V_s0 = 0) counts as rolling
         traction=f_t, rolling_force=f_r, pin_torque=t_pin,
         sliding_power=np.abs(f_t * u_s), rolling_power=f_r * np.abs(u_e),
-        pin_power=t_pin * w, kinetic_power=inertia * w * dw if inertia else np.zeros(w.shape),
+        pin_power=t_pin * w, kinetic_power=kinetic,
         solver=label, revolutions=revs, periodic_change=change, radius=float(radius),
         inertia=float(inertia), skid_slip=float(skid_slip))

@@ -55,3 +55,21 @@ def slide_roll_ratio(sliding, entrainment):
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(u != 0.0, np.asarray(sliding, dtype=float) / np.where(u != 0.0, u, 1.0),
                         np.nan)
+
+
+def periodic_next(values) -> np.ndarray:
+    """The next angle's value on a periodic grid, ``np.roll(values, -1)`` by slicing."""
+    v = np.asarray(values)
+    out = np.empty_like(v)
+    out[:-1] = v[1:]
+    out[-1:] = v[:1]
+    return out
+
+
+def periodic_previous(values) -> np.ndarray:
+    """The previous angle's value on a periodic grid, ``np.roll(values, 1)`` by slicing."""
+    v = np.asarray(values)
+    out = np.empty_like(v)
+    out[1:] = v[:-1]
+    out[:1] = v[-1:]
+    return out

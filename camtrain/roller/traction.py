@@ -33,9 +33,27 @@ by Chiu (1992) and Alakhramsing et al. (2018):
 here). camtrain charges the rolling loss F_R |u_e| to the cam's drive and keeps it out of the
 roller's torque balance (a named choice: the pressure-centre shift it stands for acts on both
 bodies, and its moment on the roller is small beside the pin's); ``none`` leaves it out.
+
+A **crowned roller** (``mechanism.roller.crown_radius``: the Kinematics carry R_y = the crown
+radius) makes an elliptical contact, and every part above takes its point-contact form: the
+Hertz ellipse (semi-axes a_x along the rolling direction, a_y across; exact Hertz, Hamrock &
+Dowson 1981 ch. 3), the Hamrock & Dowson (1977) point-contact film, the Newtonian Barus shear
+over the ellipse (Yang 1992 eq. 3.24) and the area pi a_x a_y in the limiting shear and the
+asperity terms. The rolling resistance of the ellipse is the line formula above on its slices
+across the rolling direction (strip theory, side leakage neglected, as roller-profile analyses
+slice a crowned roller: Harris & Kotzalas, *Rolling Bearing Analysis*, 2006): each slice at
+y carries the Hertz load per unit length w(y) = (3 W / 4 a_y)(1 - y^2/a_y^2), so
+
+    F_R = 4.318 (G U)^0.658 (w_0 / (E' R))^0.0126 R a_y I / alpha,
+    w_0 = 3 W / (4 a_y),  I = int_{-1}^{1} (1 - s^2)^0.0126 ds = B(1/2, 1.0126),
+
+which is (3/2)^0.0126 B(1/2, 1.0126)/2 = 0.9974 of the line formula over the ellipse's
+length 2 a_y at any crown (the load exponent 0.0126 makes F_R nearly indifferent to how the
+load is spread).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from functools import cached_property
 
@@ -74,17 +92,32 @@ class Traction:
         """Newtonian Barus shear over the Hertz zone per unit shear rate u_s/h [N s/m * m] at
         every loaded angle (Ball 1988 eq. 4.7 is linear in u_s/h; the zone integral is the
         costly part and does not change with the roller's speed): F_N = this x |u_s| / h."""
-        from camtrain.formulas import ball_1988_shear_force
+        from camtrain.formulas import ball_1988_shear_force, yang_1992_shear_force
 
         c, lub, hz = self.contact, self.contact.lubricant, self.hertz
         use = (self.load > 0.0) & np.isfinite(hz.pmax)
         out = np.zeros(self.load.shape)
         if np.count_nonzero(use):
-            out[use] = ball_1988_shear_force(
-                1.0, 1.0, at(lub.viscosity, use), at(lub.pressure_viscosity, use), hz.pmax[use],
-                hz.half_width[use], at(c.width, use),
-                viscosity_law=c.tribology.viscosity_law)
+            common = dict(eta0=at(lub.viscosity, use), alpha=at(lub.pressure_viscosity, use),
+                          p_max=hz.pmax[use], viscosity_law=c.tribology.viscosity_law)
+            if hz.line:
+                out[use] = ball_1988_shear_force(1.0, 1.0, b=hz.half_width[use],
+                                                 L=at(c.width, use), **common)
+            else:   # a crowned roller's ellipse (Yang 1992 eq. 3.24)
+                out[use] = yang_1992_shear_force(1.0, 1.0, a_x=hz.half_width[use],
+                                                 a_y=hz.half_length[use], **common)
         return out
+
+    @cached_property
+    def area(self) -> np.ndarray:
+        """Hertz area at every angle [m^2]: 2 b L of the line contact, pi a_x a_y of a crowned
+        roller's ellipse (0 unloaded)."""
+        hz = self.hertz
+        if hz.line:
+            every = np.ones(self.load.shape, dtype=bool)
+            return 2.0 * hz.half_width * np.broadcast_to(at(self.contact.width, every),
+                                                          self.load.shape)
+        return np.pi * hz.half_width * hz.half_length
 
     def rolling_slope(self, at_angles) -> np.ndarray:
         """dF_N/du_s at zero sliding [N s/m] at the angles ``at_angles``: the Newtonian shear's
@@ -96,18 +129,54 @@ class Traction:
             return np.where(h > 0.0, self.unit_shear[idx] / h, np.inf)
 
     @cached_property
-    def _rolling_film(self) -> tuple[np.ndarray, float | None]:
-        """The shear film at pure rolling (entrainment V_c) at every angle, and the speed
-        exponent a_u of the steady film formula when it is a power law h/R = C U^a_u G^a_g W^a_w
-        (None otherwise)."""
+    def _rolling(self) -> tuple[FilmField, float | None, float | None]:
+        """The film at pure rolling (entrainment V_c) at every angle, and the speed exponents
+        a_u of its minimum- and central-film formulas where the film law is the steady one and
+        the formula a power law h/R = C U^a_u G^a_g W^a_w (None otherwise)."""
         from camtrain.formulas.film import FILM_METHODS
 
         every = np.arange(self.load.size)
         film = self.contact.film(_RollerView(self.kin, every, np.zeros(every.size)), self.load)
-        law = getattr(FILM_METHODS.get_method(film.central_method or film.method).func,
-                      "power_law", None)
         steady = self.contact.film_law == "steady"
-        return film.for_shear, (law[1] if steady and law is not None else None)
+
+        def exponent(method):
+            if not (steady and method):
+                return None
+            func = FILM_METHODS.get_method(method).func
+            law = getattr(func, "power_law", None)
+            return law[1] if law is not None else getattr(func, "speed_exponent", None)
+
+        return film, exponent(film.method), exponent(film.central_method)
+
+    @property
+    def _rolling_film(self) -> tuple[np.ndarray, float | None]:
+        """The shear film at pure rolling at every angle and its speed exponent a_u (None
+        where the film is not a steady power law)."""
+        film, a_min, a_central = self._rolling
+        return film.for_shear, (a_central if film.central is not None else a_min)
+
+    def film(self, sliding) -> FilmField:
+        """The cam-roller film at sliding speeds u_s at every angle (the roller's entrainment
+        u_e = V_c - u_s/2). Power-law steady films are the rolling film scaled by
+        (|u_e| / |V_c|)^a_u, exact as :meth:`shear_film` (one film evaluation per run); other
+        film laws, and the angles where V_c = 0, are evaluated in full."""
+        rolling, a_min, a_central = self._rolling
+        if a_min is None or (rolling.central is not None and a_central is None):
+            return self.contact.film(self.kinematics(sliding), self.load)
+        u_s = np.asarray(sliding, dtype=float)
+        u_roll = np.abs(self.kin.v_cam)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.abs(self.kin.v_cam - 0.5 * u_s) / u_roll
+            h_min = rolling.min * ratio ** a_min
+            h_cen = None if rolling.central is None else rolling.central * ratio ** a_central
+        still = np.flatnonzero(u_roll == 0.0)
+        if still.size:
+            part = _RollerView(self.kin, still, u_s[still])
+            full = self.contact.film(part, self.load[still])
+            h_min[still] = full.min
+            if h_cen is not None:
+                h_cen[still] = full.central
+        return replace(rolling, min=h_min, central=h_cen)
 
     def shear_film(self, view, idx, load) -> np.ndarray:
         """The film the shear reads [m] at the roller's speeds of ``view`` (angles ``idx``).
@@ -138,9 +207,6 @@ class Traction:
         """The roller's kinematics at sliding speed u_s: V_f replaced by V_roll = V_c - u_s."""
         return replace(self.kin, v_follower=self.kin.v_cam - np.asarray(sliding, dtype=float))
 
-    def film(self, sliding) -> FilmField:
-        return self.contact.film(self.kinematics(sliding), self.load)
-
     def force(self, sliding, at_angles=None) -> np.ndarray:
         """Traction on the roller [N] at sliding speeds u_s, signed as u_s: at every angle, or
         at the angles ``at_angles`` (an index array; ``sliding`` then has one value each)."""
@@ -164,7 +230,8 @@ class Traction:
                 with np.errstate(divide="ignore", invalid="ignore"):
                     rate = np.where(hu > 0.0, rate / hu, np.where(rate > 0.0, np.inf, 0.0))
                 newton = self.unit_shear[idx][use] * rate
-                mag = mixed_traction(self.contact, hz, load, h, newton, use, self.law)
+                mag = mixed_traction(self.contact, self.area[idx][use], load, h, newton, use,
+                                     self.law)
             out[use] = np.sign(u_s[use]) * mag
         return out
 
@@ -178,9 +245,13 @@ class Traction:
         R = self.kin.radius_x
         use = (self.load > 0.0) & (R > 0.0) & np.isfinite(R)
         if np.count_nonzero(use):
-            out[use] = goksem_hargreaves_rolling(
-                u_e[use], at(lub.viscosity, use), at(lub.pressure_viscosity, use),
-                at(c.reduced_modulus, use), R[use], at(c.width, use), self.load[use])
+            common = (u_e[use], at(lub.viscosity, use), at(lub.pressure_viscosity, use),
+                      at(c.reduced_modulus, use), R[use])
+            if self.hertz.line:
+                out[use] = goksem_hargreaves_rolling(*common, at(c.width, use), self.load[use])
+            else:
+                out[use] = goksem_hargreaves_ellipse_rolling(
+                    *common, self.hertz.half_length[use], self.load[use])
         return out
 
 
@@ -188,9 +259,8 @@ class _RollerView:
     """The speeds and radii the film and friction laws read, at some angles, with the roller's
     surface speed: a light stand-in for the roller's Kinematics inside the speed solvers."""
 
-    line_contact = True
-
     def __init__(self, kin, idx, sliding):
+        self.line_contact = kin.line_contact
         self.v_cam = kin.v_cam[idx]
         self.sliding = sliding
         self.v_follower = self.v_cam - sliding
@@ -216,19 +286,35 @@ def goksem_hargreaves_rolling(u_e, eta0, alpha, E_r, R, L, W):
     return np.where(alpha > 0.0, F, 0.0)
 
 
-def mixed_traction(contact, hz: HertzField, load, h, newtonian, use, law: str) -> np.ndarray:
+#: int_{-1}^{1} (1 - s^2)^0.0126 ds = B(1/2, 1.0126): the slices' load factor of the ellipse
+_SLICE_INTEGRAL = math.sqrt(math.pi) * math.gamma(1.0126) / math.gamma(1.5126)
+
+
+def goksem_hargreaves_ellipse_rolling(u_e, eta0, alpha, E_r, R, a_y, W):
+    """Hydrodynamic rolling force of an elliptical EHL contact [N]: the line formula on slices
+    across the rolling direction, each with the Hertz load per length (3 W / 4 a_y)(1 - s^2)
+    (see the module docstring); ``a_y`` the ellipse's semi-axis across the rolling direction."""
+    alpha = np.asarray(alpha, dtype=float)
+    safe = np.where(alpha > 0.0, alpha, 1.0)
+    U = eta0 * np.abs(u_e) / (E_r * R)
+    w0 = 0.75 * W / a_y
+    F = (4.318 * (safe * E_r * U) ** 0.658 * (w0 / (E_r * R)) ** 0.0126 * R * a_y
+         * _SLICE_INTEGRAL / safe)
+    return np.where(alpha > 0.0, F, 0.0)
+
+
+def mixed_traction(contact, area, load, h, newtonian, use, law: str) -> np.ndarray:
     """|F| [N] on the angles ``use``: fluid shear (Newtonian ``newtonian`` [N] over the whole
     zone, or its Eyring form, below the limiting shear) on the fluid share plus Greenwood-Tripp
-    asperity friction, capped at mu_b W."""
+    asperity friction, capped at mu_b W; ``area`` the Hertz area of those angles
+    (:attr:`Traction.area`)."""
     from camtrain.formulas import teodorescu_2005_friction
 
     lub, trib = contact.lubricant, contact.tribology
     sigma = at(lub.roughness, use)
     beta = sigma / trib.roughness_slope
     zeta = trib.asperity_density_product / (beta * sigma)
-    b, W, hu = hz.half_width[use], load[use], h[use]
-    L = at(contact.width, use)
-    area = 2.0 * b * L
+    W, hu = load[use], h[use]
     lam = hu / sigma
     # Greenwood-Tripp asperities only below the limit (the integrals are the costly part)
     mixed = lam < LAMBDA_LIMIT

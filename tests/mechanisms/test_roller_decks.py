@@ -136,8 +136,8 @@ def test_roller_inertia_in_the_elastic_train():
 
 
 def test_crowned_roller_is_an_elliptical_contact():
-    """A crowned roller, not turning (a turning roller is a straight one: [roller] refuses a
-    crown radius): the deck without its [roller] section."""
+    """A crowned roller, not turning: the deck without its [roller] section (a turning crowned
+    roller: tests/roller/test_crowned_roller.py)."""
     raw = _raw()
     raw.pop("roller")
     raw["mechanism"]["roller"]["crown_radius"] = 500.0
