@@ -228,6 +228,32 @@ class Result:
     def events_of(self, kind: str) -> list[Event]:
         return [e for e in self.events if e.kind == kind]
 
+    # ------------------------------------------------------------------ names a user gave
+
+    def column(self, name: str, *, field: str, axis: str | None = None) -> Column:
+        """The column a user named (a fit's data file, a design limit, a study option), on
+        ``axis`` when given: the one place such a name is checked against the run. A name the
+        run does not have raises InputError naming ``field``, the name and what the run has."""
+        from camtrain.errors import InputError, Problem
+
+        on = self.on_axis(axis) if axis is not None else self.columns
+        if name not in on:
+            where = f" on the {axis} axis" if axis is not None else ""
+            raise InputError(Problem(field, f"{name} is not a column{where} of this run", name,
+                                     "one of " + ", ".join(on)))
+        return on[name]
+
+    def metric(self, name: str, *, field: str) -> Metric:
+        """The metric a user named (a study's metric, a fit's quantity against speed): the one
+        place such a name is checked against the run; an unknown name raises InputError naming
+        ``field``, the name and the metrics the run has."""
+        from camtrain.errors import InputError, Problem
+
+        if name not in self.metrics:
+            raise InputError(Problem(field, f"{name} is not a metric of this run", name,
+                                     "one of " + ", ".join(self.metrics)))
+        return self.metrics[name]
+
     @property
     def _default_axis(self) -> str:
         return self.axes[0] if self.axes else ""

@@ -60,25 +60,12 @@ CURVES_AND_ROWS: dict[str, tuple[int, str]] = {
                                 "report.txt (a lift-only run has no load)"),
     "camtrain/report/console.py": (1, "the key results the plan's effects declare, of those "
                                    "the run produced"),
-    "camtrain/study/sweep_output.py": (3, "a cell of a metric column of the sweep table or "
-                                       "a point of its plots, none for a failed case"),
-    "camtrain/study/optimize.py": (1, "the rows of the gain table: the powers of the datum "
-                                   "that the optimum also has"),
-    "camtrain/study/executors.py": (1, "the overlay curves a kept case has (a no-load case "
-                                    "has no film)"),
 }
 
 #: USER_NAMES: a column or metric the user named (a design limit in the deck, a metric or
 #: curve on the command line, a quantity in a fit's data file) is looked up to check that the
 #: run has it: validation of the user's input, not a choice of what to compute or draw.
 USER_NAMES: dict[str, tuple[int, str]] = {
-    "camtrain/report/limits.py": (2, "a design limit names its own column or metric in the "
-                                  "deck: the check reads what the user named"),
-    "camtrain/study/fit_model.py": (4, "a fit reads the quantities its data file names"),
-    "camtrain/study/sensitivity_analysis.py": (2, "the metric the user named, in the cases "
-                                               "that produced it"),
-    "camtrain/study/trends.py": (2, "the trend of the metric the user named, over the cases "
-                                 "that produced it"),
 }
 
 #: file -> (number of membership tests left, why none of them picks a sheet, table, knob or
