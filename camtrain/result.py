@@ -324,6 +324,8 @@ class Result:
             "warnings": self.warnings,
             "timings": self.timings,
             "plan": self.plan.as_dict() if self.plan is not None else None,
+            "makes": {s.effect: list(s.makes) for s in getattr(self.plan, "steps", ())
+                      if getattr(s, "makes", ())},
             "kind": getattr(self.plan, "kind", None),
         }
         arrays = {f"c{i}": c.values for i, c in enumerate(self.columns.values())}
@@ -347,9 +349,10 @@ class Result:
         res.metrics = {k: Metric(**m) for k, m in meta["metrics"].items()}
         res.events = [Event(**e) for e in meta["events"]]
         if meta["plan"] is not None:
-            p = meta["plan"]
+            p, makes = meta["plan"], meta.get("makes", {})
             res.plan = Plan(p["mode"], tuple(Step(s["effect"], s["chosen"], s["reason"],
-                                                  model=s.get("model", ""))
+                                                  model=s.get("model", ""),
+                                                  makes=tuple(makes.get(s["effect"], ())))
                                              for s in p["steps"]), meta["kind"] or "valve_train")
         return res
 
