@@ -94,10 +94,9 @@ def test_non_finite_metric_is_named_in_a_warning():
 
 def test_limit_check_fails_an_infinite_hertz_stress():
     from camtrain.deck.schema_tribology import Limits
+    from camtrain.plan import Plan, Step
     from camtrain.report.limits import evaluate
     from camtrain.result import Result
-
-    from camtrain.plan import Plan, Step
 
     res = Result(plan=Plan("auto", (Step("kinematics", True, ""), Step("loads", True, ""),
                                     Step("hertz", True, ""))))

@@ -50,10 +50,10 @@ FOUND_BY_THE_RUN: dict[str, tuple[int, str]] = {
     "camtrain/report/summaries.py": (1, "the camshaft bearings with an orbit in the declared "
                                      "bearing table: none for one whose orbit did not "
                                      "converge (warned) or of method petroff"),
-    "camtrain/report/bearing_plots.py": (3, "which parts of a declared orbit sheet have an "
-                                         "orbit (one that did not converge is warned, not "
-                                         "drawn), and the two extremes of a partially grooved "
-                                         "main, each an orbit of its own"),
+    "camtrain/report/bearing_plots.py": (1, "which of the declared bearings of an orbit "
+                                         "sheet have an orbit: a camshaft bearing whose orbit "
+                                         "did not converge is warned, not drawn, and a "
+                                         "partially grooved main has its two extremes"),
     "camtrain/report/console.py": (1, "the key results the plan's effects declare, of those "
                                    "the run stated: a separation angle or a seat-impact speed "
                                    "only when the train separated or the valve landed"),

@@ -17,7 +17,6 @@ from camtrain import api
 from camtrain.cli import main
 from camtrain.report.tables import atomic_write
 from camtrain.report.text import report_text
-from camtrain.result import Result
 from tests.conftest import DECKS
 
 
