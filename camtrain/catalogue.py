@@ -74,6 +74,15 @@ class EffectSpec:
     #: them before it runs, and it states its own (the roller's entrainment replaces the
     #: non-rotating face's "zero_entrainment")
     supersedes: tuple[str, ...] = ()
+    #: the columns this effect writes for some decks only that the top floors draw or tabulate
+    #: (``{k}`` stands for a number: ``inter_ring_pressure_{k}``): those it writes for a deck
+    #: are what its module's optional ``makes(deck, planned)`` names (every one when the
+    #: module has none); the plan's step records them (``Step.makes``), and a sheet asks
+    #: :func:`makes`, never the result's columns
+    optional_columns: tuple[str, ...] = ()
+    #: the result components this effect writes, by name (``{k}`` a number: ``bearing_{k}``):
+    #: the rows of its summary table and the parts of its sheets (:func:`components_of`)
+    components: tuple[str, ...] = ()
 
 
 #: product name -> "module:Class" (imported by the runner to check what an effect returns)
@@ -116,7 +125,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "contact load from the rigid-train D'Alembert balance; loss of contact",
                needs=("TrainKinematics",), produces=("ContactLoad",),
                key_metrics=("load_max", "load_min", "bounce_speed"),
-               panels=("load",),
+               panels=("load",), optional_columns=("valve_force",),
                sheets=("contact",), accuracy_metrics=("load_max", "bounce_speed")),
     EffectSpec("dynamics", "camtrain.effects.dynamics",
                "contact load of the elastic train in time: separation, spring surge, valve "
@@ -126,6 +135,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
                             "valve_acceleration_max"),
                panels=("load", "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"),
+               optional_columns=("spring_force_retainer",),
                sheets=("contact", "dynamics", "lash_adjuster"),
                model_panels=(("lash_adjuster", LASH_ADJUSTER_PANELS),
                              ("lash_adjuster_ball", LASH_ADJUSTER_PANELS + ("check_lift",))),
@@ -160,6 +170,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                              ("averaged_reynolds", ("transient_film", "film_pressures")),
                              ("ehl", ("transient_film", "film_pressures", "elastic_films",
                                       "film_map", "pressure_over_hertz"))),
+               optional_columns=("film_steady", "film_transient"),
                sheets=("contact", "transient_film", "elastic_film", "profile"),
                knobs=("film_angle_step", "film_nodes", "film_zone_width", "film_tolerance",
                       "ehl_nodes", "ehl_inlet", "ehl_angle_step", "ehl_tolerance"),
@@ -203,6 +214,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                key_metrics=("shaft_deflection_max", "shaft_twist_max"),
                panels=("shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"),
                sheets=("camshaft", "lobes"), knobs=("shaft_stations",),
+               components=("bearing_{k}",),
                accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
                                  "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
                                  "bearing_{k}_reaction_order_4")),
@@ -213,7 +225,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                produces=("ElasticCamshaft",), rank=1,
                key_metrics=("shaft_deflection_max", "shaft_twist_max"),
                panels=("shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"),
-               sheets=("camshaft", "lobes"),
+               sheets=("camshaft", "lobes"), components=("bearing_{k}",),
                knobs=("shaft_stations", "steps_per_degree", "coupling_iterations"),
                accuracy_metrics=("shaft_deflection_max", "shaft_twist_max",
                                  "bearing_{k}_reaction_max", "bearing_{k}_reaction_order_1",
@@ -224,7 +236,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                needs=("CamshaftLoads",), uses=("ElasticCamshaft",), produces=("BearingOrbits",),
                key_metrics=("bearings_power_total",),
                summary="camtrain.report.summaries:bearing_orbits",
-               sheets=("camshaft", "orbits"),
+               sheets=("camshaft", "orbits"), components=("bearing_{k}",),
                knobs=("bearing_mesh", "bearing_model", "orbit_points"),
                accuracy_metrics=("bearings_power_total", "bearing_{k}_min_film",
                                  "bearing_{k}_max_eccentricity", "bearing_{k}_power_mean",
@@ -248,6 +260,7 @@ ENGINE: tuple[EffectSpec, ...] = (
                produces=("CrankLoads",),
                key_metrics=("big_end_max_load",),
                sheets=("engine_loads",), knobs=("crank_step", "pressure_interpolation"),
+               components=("big_end_{k}", "main_{k}"),
                accuracy_metrics=("big_end_max_load",)),
     EffectSpec("crank_bearings", "camtrain.effects.crank_bearings",
                "big-end and main bearings: orbits to a periodic cycle, steady and Petroff "
@@ -255,7 +268,7 @@ ENGINE: tuple[EffectSpec, ...] = (
                needs=("CrankLoads",), produces=("EngineBearings",),
                key_metrics=("total_power_dynamic",),
                summary="camtrain.report.summaries:crank_bearings",
-               sheets=("orbits",),
+               sheets=("orbits",), components=("big_end_{k}", "main_{k}"),
                knobs=("bearing_mesh", "bearing_model", "period_tolerance", "step_tolerance",
                       "mobility"),
                accuracy_metrics=("big_end_1_min_film_dynamic", "main_3_min_film_dynamic",
@@ -266,7 +279,9 @@ ENGINE: tuple[EffectSpec, ...] = (
                produces=("PistonFriction",),
                key_metrics=("piston_power_mean", "piston_power_total"),
                summary="camtrain.report.summaries:piston_rings",
-               sheets=("piston",),
+               sheets=("piston",), components=("ring_{k}",),
+               optional_columns=("inter_ring_pressure_{k}", "oil_control_ring_friction",
+                                 "skirt_friction"),
                knobs=("piston_crank_step", "ring_tolerance", "pass_tolerance",
                       "gas_tolerance"),
                accuracy_metrics=("piston_power_total", "ring_1_min_film_flooded",
@@ -351,6 +366,40 @@ def planned_products(plan) -> frozenset[str]:
     if plan is None:
         return frozenset()
     return frozenset(p for spec in declared_effects(plan) for p in spec.produces)
+
+
+def makes(plan, column: str) -> bool:
+    """Whether an effect of the plan wrote ``column``, one of the optional columns the effects
+    declare (EffectSpec.optional_columns; each step records those it writes for its deck,
+    ``Step.makes``): what a sheet or table asks before it draws or lists an optional curve.
+    No plan (a lift-only run) makes none; a name no effect declares is a ValueError."""
+    kind = KINDS[getattr(plan, "kind", None) or DEFAULT_KIND]
+    declared = {c for spec in kind.effects for c in spec.optional_columns}
+    if not any(_named(column, c) for c in declared):
+        raise ValueError(f"{column!r} is not an optional column an effect of the "
+                         f"{kind.name} kind declares (EffectSpec.optional_columns)")
+    if plan is None:
+        return False
+    return any(_named(column, c) for step in plan.steps if step.chosen
+               for c in getattr(step, "makes", ()))
+
+
+def components_of(plan, product: str, components) -> list[str]:
+    """Those of a result's ``components`` that the effect of the plan making ``product``
+    writes (EffectSpec.components), in their order: the bearings of a crank-bearing table, the
+    rings of a piston sheet."""
+    declared = [c for spec in declared_effects(plan) if product in spec.produces
+                for c in spec.components] if plan is not None else []
+    return [c for c in components if any(_named(c, d) for d in declared)]
+
+
+def _named(column: str, declared: str) -> bool:
+    """``column`` is ``declared``, or one of its numbered names (``{k}``: 1, 2, ...)."""
+    head, k, tail = declared.partition("{k}")
+    if not k:
+        return column == declared
+    number = column[len(head):len(column) - len(tail)] if column.endswith(tail) else ""
+    return column.startswith(head) and number.isdigit()
 
 
 #: the panels of a result without a plan: the lift law's columns alone (``camtrain lift``)

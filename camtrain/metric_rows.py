@@ -75,3 +75,12 @@ def per_case(metrics, n: int) -> list[list[tuple[str, float, str]]]:
         columns.append((m.name, m.unit, values, present))
     return [[(name, values[r], unit) for name, unit, values, present in columns
              if present is None or present[r]] for r in range(n)]
+
+
+def case_metric(metrics: dict, name: str) -> tuple[float, str] | None:
+    """(value, unit) of metric ``name`` among one sweep case's ``metrics`` (a case record's
+    name -> (value, unit)), None when the case has none: a case that failed has no metrics,
+    and a case whose plan ran no effect stating ``name`` has not that one. The one place a
+    sweep's tables, plots and studies read a metric of a case by name; a blank cell or a
+    missing point follows from it, never a choice of what to compute or draw."""
+    return metrics.get(name)

@@ -20,6 +20,10 @@ class Step:
     #: it runs: "steady" without contact loads); "" for an effect of one model. The panels it
     #: feeds follow from it (EffectSpec.model_panels)
     model: str = ""
+    #: the optional columns (EffectSpec.optional_columns) a chosen effect writes for the deck,
+    #: numbered ones by their names (``inter_ring_pressure_1``): what the sheets draw of them
+    #: (kept with a saved result, Result.save; not in summary.json, which lists the columns)
+    makes: tuple[str, ...] = ()
 
     def as_dict(self) -> dict:
         out = {"effect": self.effect, "chosen": self.chosen, "reason": self.reason}

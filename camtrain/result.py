@@ -228,6 +228,32 @@ class Result:
     def events_of(self, kind: str) -> list[Event]:
         return [e for e in self.events if e.kind == kind]
 
+    # ------------------------------------------------------------------ names a user gave
+
+    def column(self, name: str, *, field: str, axis: str | None = None) -> Column:
+        """The column a user named (a fit's data file, a design limit, a study option), on
+        ``axis`` when given: the one place such a name is checked against the run. A name the
+        run does not have raises InputError naming ``field``, the name and what the run has."""
+        from camtrain.errors import InputError, Problem
+
+        on = self.on_axis(axis) if axis is not None else self.columns
+        if name not in on:
+            where = f" on the {axis} axis" if axis is not None else ""
+            raise InputError(Problem(field, f"{name} is not a column{where} of this run", name,
+                                     "one of " + ", ".join(on)))
+        return on[name]
+
+    def metric(self, name: str, *, field: str) -> Metric:
+        """The metric a user named (a study's metric, a fit's quantity against speed): the one
+        place such a name is checked against the run; an unknown name raises InputError naming
+        ``field``, the name and the metrics the run has."""
+        from camtrain.errors import InputError, Problem
+
+        if name not in self.metrics:
+            raise InputError(Problem(field, f"{name} is not a metric of this run", name,
+                                     "one of " + ", ".join(self.metrics)))
+        return self.metrics[name]
+
     @property
     def _default_axis(self) -> str:
         return self.axes[0] if self.axes else ""
@@ -298,6 +324,8 @@ class Result:
             "warnings": self.warnings,
             "timings": self.timings,
             "plan": self.plan.as_dict() if self.plan is not None else None,
+            "makes": {s.effect: list(s.makes) for s in getattr(self.plan, "steps", ())
+                      if getattr(s, "makes", ())},
             "kind": getattr(self.plan, "kind", None),
         }
         arrays = {f"c{i}": c.values for i, c in enumerate(self.columns.values())}
@@ -321,9 +349,10 @@ class Result:
         res.metrics = {k: Metric(**m) for k, m in meta["metrics"].items()}
         res.events = [Event(**e) for e in meta["events"]]
         if meta["plan"] is not None:
-            p = meta["plan"]
+            p, makes = meta["plan"], meta.get("makes", {})
             res.plan = Plan(p["mode"], tuple(Step(s["effect"], s["chosen"], s["reason"],
-                                                  model=s.get("model", ""))
+                                                  model=s.get("model", ""),
+                                                  makes=tuple(makes.get(s["effect"], ())))
                                              for s in p["steps"]), meta["kind"] or "valve_train")
         return res
 

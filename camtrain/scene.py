@@ -117,6 +117,15 @@ def _model(module, deck, planned) -> str:
     return model(deck, frozenset(planned)) if model is not None else ""
 
 
+def _makes(module, spec: EffectSpec, deck, planned) -> tuple[str, ...]:
+    """The optional columns the effect writes for this deck (its module's ``makes(deck,
+    planned)``, every one it declares when the module has none)."""
+    makes = getattr(module, "makes", None)
+    if makes is None:
+        return spec.optional_columns
+    return tuple(makes(deck, frozenset(planned)))
+
+
 def _resolve_auto(deck, specs, rivals_of: dict[str, tuple[str, ...]]) -> tuple[Step, ...]:
     planned: dict[str, str] = {}  # product -> effect that provides it
     steps = []
@@ -138,13 +147,13 @@ def _resolve_auto(deck, specs, rivals_of: dict[str, tuple[str, ...]]) -> tuple[S
             steps.append(Step(spec.name, False, "no data: " + "; ".join(missing), spec))
             continue
         reason = module.reason(deck, frozenset(planned))
-        model = _model(module, deck, planned)
+        model, made = _model(module, deck, planned), _makes(module, spec, deck, planned)
         rivals = rivals_of[spec.name]
         if rivals:
             reason += f" (chosen over {', '.join(rivals)} for {', '.join(spec.produces)})"
         for p in spec.produces:
             planned[p] = spec.name
-        steps.append(Step(spec.name, True, reason, spec, model))
+        steps.append(Step(spec.name, True, reason, spec, model, made))
     return tuple(steps)
 
 
@@ -190,7 +199,8 @@ def _resolve_explicit(deck, specs: list[EffectSpec], requested: tuple[str, ...])
         if spec.name in wanted:
             module = effect_module(spec)
             reason = wanted[spec.name] + "; " + module.reason(deck, planned)
-            steps.append(Step(spec.name, True, reason, spec, _model(module, deck, planned)))
+            steps.append(Step(spec.name, True, reason, spec, _model(module, deck, planned),
+                              _makes(module, spec, deck, planned)))
         else:
             steps.append(Step(spec.name, False, "not requested", spec))
     return tuple(steps)

@@ -94,12 +94,15 @@ def test_non_finite_metric_is_named_in_a_warning():
 
 def test_limit_check_fails_an_infinite_hertz_stress():
     from camtrain.deck.schema_tribology import Limits
+    from camtrain.plan import Plan, Step
     from camtrain.report.limits import evaluate
     from camtrain.result import Result
 
-    res = Result()
+    res = Result(plan=Plan("auto", (Step("kinematics", True, ""), Step("loads", True, ""),
+                                    Step("hertz", True, ""))))
     theta = np.linspace(-np.pi, np.pi, 5)
     res.add_axis("cam_angle", theta, "rad", "cam angle")
+    res.add_column("load", np.full(5, 100.0), "N", "contact load")
     res.add_column("hertz_pmax", np.array([1e8, np.inf, 2e8, np.nan, 1e8]), "Pa", "p")
     [check] = evaluate(Limits(max_hertz=650e6), res)
     assert not check.ok and check.value == math.inf

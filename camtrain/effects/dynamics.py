@@ -41,6 +41,13 @@ def reason(deck, planned) -> str:
     return f"[dynamics] given: elastic train, {d.integrator}, {spring}{hla}"
 
 
+def makes(deck, planned) -> tuple[str, ...]:
+    """The optional columns it writes (EffectSpec.optional_columns): the spring force at the
+    retainer end of a spring chain (dynamics.spring_elements > 0), where surge sets it apart
+    from the head's."""
+    return ("spring_force_retainer",) if deck.dynamics.spring_elements > 0 else ()
+
+
 def _separations(res, found) -> None:
     """Separations are the cam losing the follower while the valve is in flight (a jump); the
     contact opening after the valve has landed on its seat (taking up the lash at the end of the

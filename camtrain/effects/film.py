@@ -45,6 +45,14 @@ def model(deck, planned) -> str:
     return "steady"
 
 
+def makes(deck, planned) -> tuple[str, ...]:
+    """The optional columns it writes (EffectSpec.optional_columns), from the model it runs: a
+    transient film writes the steady film of the same angles beside its own, the averaged
+    Reynolds film also its own film before the steady-film floor."""
+    return {"squeeze": ("film_steady",), "ehl": ("film_steady",),
+            "averaged_reynolds": ("film_steady", "film_transient")}.get(model(deck, planned), ())
+
+
 def reason(deck, planned) -> str:
     model = deck.tribology.film_model
     if "ContactLoad" in planned and deck.cam.width is None:

@@ -27,6 +27,19 @@ def reason(deck, planned) -> str:
     return "; ".join(parts)
 
 
+def makes(deck, planned) -> tuple[str, ...]:
+    """The optional columns it writes (EffectSpec.optional_columns): the gas pressure between
+    each two successive compression rings, and the oil-control ring's and the skirt's friction
+    when the deck has their sections."""
+    p = deck.piston
+    out = [f"inter_ring_pressure_{i}" for i in range(1, len(p.rings))]
+    if p.oil_control_ring is not None:
+        out.append("oil_control_ring_friction")
+    if p.skirt is not None:
+        out.append("skirt_friction")
+    return tuple(out)
+
+
 def _interp(speeds, values, rpm: float) -> float:
     import numpy as np
 

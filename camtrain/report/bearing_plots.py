@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from camtrain.catalogue import components_of, declared_effects
 from camtrain.result import Result
 from camtrain.units import from_si
 
@@ -45,25 +46,35 @@ def _frame(name: str | None) -> str:
     return "bush frame"
 
 
+def _bearings(result: Result) -> list[str | None]:
+    """The parts of a run that are bearings: those the effects of its plan that make orbits
+    declare (EffectSpec.components: the camshaft's ``bearing_{k}``, an engine's ``big_end_{k}``
+    and ``main_{k}``), or the result itself when such an effect declares none (a stand-alone
+    bearing deck)."""
+    makers = [spec for spec in declared_effects(result.plan)
+              if {"BearingOrbits", "EngineBearings"} & set(spec.produces)]
+    alone = [None] if any(not spec.components for spec in makers) else []
+    return alone + [c for product in ("BearingOrbits", "EngineBearings")
+                    for c in components_of(result.plan, product, result.components)]
+
+
 def orbit_series(result: Result) -> list[OrbitSeries]:
-    """Every orbit in a run: each result component with an orbit (the bearings of a camshaft
-    run), or the orbit of the result itself (a stand-alone bearing deck)."""
+    """Every orbit in a run: each bearing's (the bearings of a camshaft or an engine run), or
+    the orbit of the result itself (a stand-alone bearing deck)."""
     out = []
-    for name in [None, *result.components]:
+    for name in _bearings(result):
         part = result.component(name)
-        # a partially grooved crank bearing has both extremes (suffixes), each its own orbit
+        # a partially grooved crank bearing has both extremes (suffixes), each its own orbit;
+        # a camshaft bearing whose orbit did not converge (warned) or of method petroff has none
         for sfx in ("", "_ungrooved", "_grooved"):
             ecc, pos = f"eccentricity{sfx}", f"min_film_position{sfx}"
-            if ecc not in part.columns or pos not in part.columns:
+            if ecc not in part.columns:
                 continue
             col = part.columns[ecc]
-            if not col.axis or col.axis not in result.columns:
-                continue
             label = ("bearing" if name is None else name.replace("_", " ")) + sfx.replace("_",
                                                                                           " ")
-            film = part[f"min_film{sfx}"] if f"min_film{sfx}" in part.columns else None
             out.append(OrbitSeries(label.replace("big end", "big-end"), result[col.axis],
-                                   part[ecc], part[pos], film, _frame(name)))
+                                   part[ecc], part[pos], part[f"min_film{sfx}"], _frame(name)))
     return out
 
 

@@ -8,17 +8,17 @@ from pathlib import Path
 
 import numpy as np
 
+from camtrain.catalogue import components_of
 from camtrain.result import Result
 
 
 def _diagrams(result: Result) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """Every bearing's load diagram: the crank-loads effect writes one for each bearing it
+    declares (EffectSpec.components)."""
     out = []
-    for comp in result.components:
-        if not comp.startswith(("big_end_", "main_")):
-            continue
+    for comp in components_of(result.plan, "CrankLoads", result.components):
         part = result.component(comp)
-        if "load_x" in part.columns and "load_y" in part.columns:
-            out.append((comp, part["load_x"], part["load_y"]))
+        out.append((comp, part["load_x"], part["load_y"]))
     return out
 
 

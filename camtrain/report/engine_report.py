@@ -3,6 +3,7 @@ Tables 2.1-2.4 (per bearing: Petroff power | steady-load power / h_min | dynamic
 h_min; engine totals), in kW and µm as he printed them."""
 from __future__ import annotations
 
+from camtrain.catalogue import components_of
 from camtrain.result import Result
 from camtrain.units import from_si
 
@@ -41,8 +42,7 @@ def _cell(result: Result, name: str, scale: float, digits: int) -> str:
 
 def bearing_table_lines(result: Result, width: int = 100) -> list[str]:
     """The crank-bearing table of a run (empty when the run has no crank bearings)."""
-    names = [c for c in result.components if c.startswith(("big_end_", "main_"))
-             and f"{c}_power_petroff" in result.metrics]
+    names = components_of(result.plan, "EngineBearings", result.components)
     if not names:
         return []
     out = ["--- CRANK BEARINGS (as Yang 1992 Tables 2.1-2.4: power kW / minimum film µm) "

@@ -77,6 +77,15 @@ def in_contact(result: Result) -> np.ndarray | None:
     return result["load"] > 0.0 if "ContactLoad" in _made(result) else None
 
 
+def central_film(result: Result) -> bool:
+    """Whether the run's film has a central thickness beside its minimum (the film of a
+    ContactFilm with a formula or a transient law that gives one). What the contact found, not
+    a deck option the plan reads: without cam.width a loaded line contact has the load-free
+    Blok film, which has none, and a point contact the EHL film, which has one; the contact's
+    geometry decides once the kinematics ran."""
+    return "ContactFilm" in _made(result) and "film_central" in result.columns
+
+
 def find(result: Result) -> Findings:
     """The findings of the effects that ran: zero entrainment and concave flanks from the
     contact kinematics, loss of contact from the contact load, the boundary regime from the

@@ -12,6 +12,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from camtrain.catalogue import planned_products
 from camtrain.report.findings import in_contact
 from camtrain.result import Result
 
@@ -66,18 +67,23 @@ def _clean(x: float) -> float:
     return float(f"{x:.12g}")
 
 
-# deck key -> (quantity, kind, display unit, factor SI -> display, column, metric)
+# deck key -> (quantity, kind, display unit, factor SI -> display, product, column, metric): the
+# check reads the column or metric of the effect that makes ``product``, when the plan made it
 SPECS = {
-    "max_hertz": ("maximum Hertz stress", "max", "MPa", 1e-6, "hertz_pmax", "hertz_max"),
-    "min_film": ("minimum film thickness in contact", "min", "µm", 1e6, "film_min", "film_min"),
-    "min_film_at_max_lift": ("minimum film at maximum lift", "min", "µm", 1e6, None,
-                             "film_min_at_max_lift"),
-    "min_lambda": ("minimum λ in contact", "min", "-", 1.0, "lambda", None),
-    "min_bounce_margin": ("margin below the valve-bounce speed", "min", "%", 100.0, None, None),
-    "max_power_loss": ("mean frictional power loss", "max", "W", 1.0, None, "power_loss_mean"),
-    "max_load": ("maximum contact load", "max", "N", 1.0, "load", "load_max"),
-    "max_friction_torque": ("peak friction torque", "max", "N·m", 1.0, "friction_torque",
-                            "friction_torque_peak"),
+    "max_hertz": ("maximum Hertz stress", "max", "MPa", 1e-6, "ContactHertz", "hertz_pmax",
+                  "hertz_max"),
+    "min_film": ("minimum film thickness in contact", "min", "µm", 1e6, "ContactFilm",
+                 "film_min", "film_min"),
+    "min_film_at_max_lift": ("minimum film at maximum lift", "min", "µm", 1e6, "ContactFilm",
+                             None, "film_min_at_max_lift"),
+    "min_lambda": ("minimum λ in contact", "min", "-", 1.0, "ContactFilm", "lambda", None),
+    "min_bounce_margin": ("margin below the valve-bounce speed", "min", "%", 100.0, None, None,
+                          None),
+    "max_power_loss": ("mean frictional power loss", "max", "W", 1.0, "CamTorque", None,
+                       "power_loss_mean"),
+    "max_load": ("maximum contact load", "max", "N", 1.0, "ContactLoad", "load", "load_max"),
+    "max_friction_torque": ("peak friction torque", "max", "N·m", 1.0, "CamTorque",
+                            "friction_torque", "friction_torque_peak"),
 }
 
 
@@ -86,7 +92,8 @@ def evaluate(limits, result: Result, speed_rpm: float | None = None) -> list[Che
     if limits is None:
         return []
     checks = []
-    for key, (quantity, kind, unit, factor, column, metric) in SPECS.items():
+    made = planned_products(result.plan)
+    for key, (quantity, kind, unit, factor, product, column, metric) in SPECS.items():
         bound_si = getattr(limits, key, None)
         if bound_si is None:
             continue
@@ -94,8 +101,10 @@ def evaluate(limits, result: Result, speed_rpm: float | None = None) -> list[Che
         if key == "min_bounce_margin":
             value, angle, note = _bounce_margin(result, speed_rpm)
         else:
-            value, angle, note = _measure(result, kind, column, metric)
+            value, angle, note = _measure(result, kind, column if product in made else None,
+                                          metric if product in made else None)
         if value is None:
+            note = note or f"the run has no {_either(column, metric)}"
             checks.append(Check(key, quantity, kind, None, bound, unit, None, UNAVAILABLE, note))
             continue
         value = value * (1.0 if key == "min_bounce_margin" else factor)
@@ -107,7 +116,9 @@ def evaluate(limits, result: Result, speed_rpm: float | None = None) -> list[Che
 
 
 def _measure(result: Result, kind: str, column: str | None, metric: str | None):
-    if column and column in result.columns and "cam_angle" in result.columns:
+    """The worst value of ``column`` over the cycle (where the pair is in contact, for a
+    lower bound), else the value of ``metric``; None for either the plan did not make."""
+    if column:
         y = np.asarray(result[column], dtype=float)
         if kind == "max" and column == "friction_torque":
             y = np.abs(y)
@@ -119,12 +130,14 @@ def _measure(result: Result, kind: str, column: str | None, metric: str | None):
             idx = np.flatnonzero(mask)
             i = idx[np.argmax(y[idx])] if kind == "max" else idx[np.argmin(y[idx])]
             return float(y[i]), float(result["cam_angle"][i]), ""
-    if metric and metric in result.metrics:
-        m = result.metrics[metric]
-        if not math.isnan(m.value):
-            return m.value, m.angle, ""
-    missing = " or ".join(f"'{n}'" for n in (column, metric) if n)
-    return None, None, f"the run has no {missing}"
+    m = result.metrics.get(metric) if metric else None   # NaN or unstated: not computed
+    if m is not None and not math.isnan(m.value):
+        return m.value, m.angle, ""
+    return None, None, ""
+
+
+def _either(column: str | None, metric: str | None) -> str:
+    return " or ".join(f"'{n}'" for n in (column, metric) if n)
 
 
 def _bounce_margin(result: Result, speed_rpm: float | None):

@@ -2,9 +2,11 @@
 
 A sheet calls the panels the effects that ran declare (EffectSpec.panels, and the
 EffectSpec.model_panels of the model a step ran: the transient film's panels for a transient
-film). Every panel function takes (ax, result, ctx) and draws the curves of its panel the run
-has; it returns False, drawing nothing, when it has none (a flat follower's pressure angle), and
-the sheet leaves it out. Values are shown in display units.
+film). Every panel function takes (ax, result, ctx) and draws the curves the effects that
+declare it write; an optional curve (EffectSpec.optional_columns, a rigid train's valve force,
+a spring chain's retainer force) when the plan made it (:func:`optional`). It returns False,
+drawing nothing, when its curve says nothing (a flat follower's pressure angle, identically
+zero), and the sheet leaves it out. Values are shown in display units.
 """
 from __future__ import annotations
 
@@ -13,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from camtrain.catalogue import planned_products
+from camtrain.catalogue import makes, planned_products
 from camtrain.report.display import LABELS, display_unit, typeset
-from camtrain.report.findings import Findings, entrainment, in_contact
+from camtrain.report.findings import Findings, central_film, entrainment, in_contact
 from camtrain.report.style import COLORS, angle_axis, finish_axes, headroom
 from camtrain.result import Result
 
@@ -32,8 +34,9 @@ def made(r: Result) -> frozenset[str]:
     return planned_products(r.plan)
 
 
-def has(r: Result, *names: str) -> bool:
-    return all(n in r.columns for n in names)
+def optional(r: Result, *names: str) -> list[str]:
+    """Those of the optional columns ``names`` the plan made (EffectSpec.optional_columns)."""
+    return [n for n in names if makes(r.plan, n)]
 
 
 def shown(r: Result, name: str) -> tuple[np.ndarray, str]:
@@ -44,9 +47,7 @@ def shown(r: Result, name: str) -> tuple[np.ndarray, str]:
 
 def _cycle(ax, r: Result, ctx: Ctx, names, ylabel: str | None = None, colors=None,
            labels=None, legend: bool | None = None, zero: bool = False) -> bool:
-    present = [n for n in names if n in r.columns]
-    if not present:
-        return False
+    present = list(names)
     unit, data = "", []
     for i, name in enumerate(present):
         y, unit = shown(r, name)
@@ -103,7 +104,8 @@ def _shade(ax, ranges, color: str, label: str) -> None:
 # --------------------------------------------------------------------------- kinematics
 
 def lift(ax, r, ctx):
-    name = "valve_lift" if "valve_lift" in r.columns else "lift"
+    # the kinematics effect writes the valve's lift; a lift-only run has the lift law's alone
+    name = "valve_lift" if "TrainKinematics" in made(r) else "lift"
     return _cycle(ax, r, ctx, [name])
 
 
@@ -124,7 +126,7 @@ def eccentricity(ax, r, ctx):
 
 
 def pressure_angle(ax, r, ctx):
-    if "pressure_angle" in r.columns and not np.any(r["pressure_angle"]):
+    if not np.any(r["pressure_angle"]):
         return False        # identically zero (flat follower): a blank panel says nothing
     return _cycle(ax, r, ctx, ["pressure_angle"], zero=True)
 
@@ -132,18 +134,10 @@ def pressure_angle(ax, r, ctx):
 def velocities(ax, r, ctx):
     """Surface velocities of the contact (Ball's panel h), entrainment and sliding."""
     ue = entrainment(r)
-    if not has(r, "v_cam", "v_follower") and ue is None:
-        return False
-    series = []
-    for name in ("v_cam", "v_follower"):
-        if name in r.columns:
-            series.append((r[name], LABELS[name]))
+    series = [(r[name], LABELS[name]) for name in ("v_cam", "v_follower")]
     if ue is not None:
         series.append((ue, "entrainment (V_c + V_f)/2"))
-    if "sliding" in r.columns:
-        series.append((r["sliding"], LABELS["sliding"]))
-    elif has(r, "v_cam", "v_follower"):
-        series.append((r["v_cam"] - r["v_follower"], LABELS["sliding"]))
+    series.append((r["sliding"], LABELS["sliding"]))
     colors = [COLORS["main"], COLORS["second"], COLORS["third"], COLORS["fourth"]]
     for (y, label), color in zip(series, colors, strict=False):
         ax.plot(ctx.theta, _finite(y), color=color, label=label)
@@ -159,9 +153,7 @@ def radii(ax, r, ctx):
     """Cam radius r_c and equivalent radius R on a symmetric-log scale: linear near the
     base-circle size, logarithmic beyond, so a concave flank (r_c < 0, shaded) is shown
     whole next to the large radii near flat spots; only infinite radii are left out."""
-    present = [n for n in ("cam_radius", "equivalent_radius") if n in r.columns]
-    if not present:
-        return False
+    present = ["cam_radius", "equivalent_radius"]
     finite_vals = []
     for i, name in enumerate(present):
         y, unit = shown(r, name)
@@ -187,9 +179,7 @@ def radii(ax, r, ctx):
 
 def film_angle(ax, r, ctx):
     """h_min and h_cen against cam angle, λ on a second axis, boundary regions shaded."""
-    present = [n for n in ("film_min", "film_central") if n in r.columns]
-    if not present:
-        return False
+    present = ["film_min", *(["film_central"] if central_film(r) else [])]
     _shade(ax, ctx.findings.boundary, COLORS["boundary"], "boundary (λ < 1)")
     _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
     _shade(ax, ctx.findings.clearance, COLORS["clearance"], "no load (clearance)")
@@ -226,8 +216,6 @@ def film_angle(ax, r, ctx):
 
 def _roughness(r: Result) -> float | None:
     """σ [µm] when λ = h_min/σ holds at every angle (then λ is just a rescaled h_min)."""
-    if not has(r, "lambda", "film_min"):
-        return None
     h, lam = r["film_min"] * 1e6, r["lambda"]
     ok = np.isfinite(h) & np.isfinite(lam) & (lam > 0) & (h > 0)
     if ok.sum() < 2:
@@ -239,8 +227,6 @@ def _roughness(r: Result) -> float | None:
 
 def film_position(ax, r, ctx):
     """Film against the contact position on the follower face (Ball's panel g)."""
-    if not has(r, "film_min", "eccentricity"):
-        return False
     x, xu = shown(r, "eccentricity")
     h, hu = shown(r, "film_min")
     contact = in_contact(r)
@@ -267,7 +253,8 @@ def film_position(ax, r, ctx):
 def load(ax, r, ctx):
     _shade(ax, ctx.findings.loss_of_contact, COLORS["no_contact"], "loss of contact")
     _shade(ax, ctx.findings.clearance, COLORS["clearance"], "no load (clearance)")
-    return _cycle(ax, r, ctx, ["load", "valve_force"], ylabel="force", legend=True, zero=True)
+    return _cycle(ax, r, ctx, ["load", *optional(r, "valve_force")], ylabel="force", legend=True,
+                  zero=True)
 
 
 def hertz(ax, r, ctx):
@@ -308,7 +295,7 @@ def transient_film(ax, r, ctx):
     the averaged Reynolds film adds its own film before the steady-film floor."""
     labels = {"film_min": "transient film", "film_steady": "steady EHL film",
               "film_transient": "averaged Reynolds (before the floor)"}
-    names = [n for n in ("film_min", "film_steady", "film_transient") if n in r.columns]
+    names = ["film_min", *optional(r, "film_steady", "film_transient")]
     data = []
     for name, color, style in zip(names, (COLORS["main"], COLORS["second"], COLORS["third"]),
                                   ("-", "--", ":"), strict=False):
@@ -374,7 +361,8 @@ def valve_acceleration(ax, r, ctx):
 
 def spring_forces(ax, r, ctx):
     """Spring force at the head and the retainer (they differ by surge) and the seat force."""
-    return _cycle(ax, r, ctx, ["spring_force", "spring_force_retainer", "seat_force"],
+    return _cycle(ax, r, ctx, ["spring_force", *optional(r, "spring_force_retainer"),
+                               "seat_force"],
                   ylabel="force", legend=True,
                   labels={"spring_force": "spring at the head",
                           "spring_force_retainer": "spring at the retainer",

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from camtrain.catalogue import makes
 from camtrain.result import Result
 
 CRANK_LABEL = "crank angle from firing TDC [deg]"
@@ -53,7 +54,7 @@ def _gas(ax, result: Result, th) -> None:
 
     ax.plot(th, result["cylinder_pressure"] / 1e5, color=_COLORS[0], label="cylinder")
     k = 1
-    while f"inter_ring_pressure_{k}" in result.columns:
+    while makes(result.plan, f"inter_ring_pressure_{k}"):   # one between each two rings
         ax.plot(th, result[f"inter_ring_pressure_{k}"] / 1e5, color=_COLORS[k],
                 label=f"between rings {k} and {k + 1}")
         k += 1
@@ -100,7 +101,7 @@ def _friction(ax, result: Result, th) -> None:
     series = [(result.component(c)["friction"], c.replace("_", " ")) for c in _rings(result)]
     for name, label in (("oil_control_ring_friction", "oil-control ring"),
                         ("skirt_friction", "skirt")):
-        if name in result.columns:
+        if makes(result.plan, name):     # the deck has the oil-control ring's, the skirt's
             series.append((result[name], label))
     for i, (y, label) in enumerate(series):
         ax.plot(th, y, color=_COLORS[i % len(_COLORS)], lw=0.9, label=label)

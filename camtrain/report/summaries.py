@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from camtrain.catalogue import components_of, planned_products
 from camtrain.report.console import Table
 from camtrain.report.display import fmt
 from camtrain.result import Result
@@ -36,9 +37,10 @@ def _angle(result: Result, component: str | None, name: str) -> str:
     return "" if m is None or m.angle is None else f"{m.angle * _DEG:.1f}"
 
 
-def _components(result: Result, metric: str) -> list[str]:
-    """The result's components that carry ``metric`` (the rows of one effect's table)."""
-    return [c for c in result.components if metric in result.component(c).metrics]
+def _components(result: Result, product: str) -> list[str]:
+    """The result's components the effect making ``product`` writes (the rows of its table,
+    EffectSpec.components)."""
+    return components_of(result.plan, product, result.components)
 
 
 def _right(*headers: str) -> list[tuple[str, str, str | None]]:
@@ -48,7 +50,7 @@ def _right(*headers: str) -> list[tuple[str, str, str | None]]:
 def crank_bearings(result: Result, deck) -> list[Table]:
     """Every big-end and main: smallest film of the orbit and where, peak load and specific
     load (peak load over the projected area d·b), cycle-mean power of the orbit and Petroff's."""
-    names = _components(result, "power_dynamic")
+    names = _components(result, "EngineBearings")
     if not names:
         return []
     table = Table("crank bearings (orbit's h_min and where, crank deg; W/db = peak load / "
@@ -74,7 +76,9 @@ def crank_bearings(result: Result, deck) -> list[Table]:
 def bearing_orbits(result: Result, deck) -> list[Table]:
     """Every camshaft bearing: largest load, smallest film of its orbit and where, largest
     eccentricity ratio and cycle-mean power."""
-    names = _components(result, "power_mean")
+    names = _components(result, "BearingOrbits")
+    # those with an orbit: none for a bearing of method petroff, nor for one whose orbit did
+    # not converge (warned), which the run found, not the plan
     names = [c for c in names if "min_film" in result.component(c).metrics]
     if not names:
         return []
@@ -90,8 +94,7 @@ def bearing_orbits(result: Result, deck) -> list[Table]:
 def piston_rings(result: Result, deck) -> list[Table]:
     """Every compression ring: thinnest starved and flooded film, peak friction, mean power and
     the share of the cycle in boundary friction."""
-    names = _components(result, "power_mean")
-    names = [c for c in names if "min_film_flooded" in result.component(c).metrics]
+    names = _components(result, "PistonFriction")
     if not names:
         return []
     table = Table("compression rings of one piston (thinnest film, dry = no oil film; crank "
@@ -112,9 +115,11 @@ FLAME_PARTS = (("flame_bearings", "crank bearings"), ("flame_valve_train", "valv
 
 
 def flame_parts(result: Result) -> list[tuple[str, float]]:
-    """(label, power [W]) of every FLAME component the run has."""
-    return [(label, result.metrics[name].value) for name, label in FLAME_PARTS
-            if name in result.metrics]
+    """(label, power [W]) of every FLAME component, when the plan made the FLAME total (its
+    effect states all of them); none otherwise."""
+    if "EngineFriction" not in planned_products(result.plan):
+        return []
+    return [(label, result.metrics[name].value) for name, label in FLAME_PARTS]
 
 
 def flame(result: Result, deck) -> list[Table]:

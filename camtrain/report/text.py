@@ -20,10 +20,17 @@ from camtrain.result import Result
 WIDTH = 100
 
 #: columns of the printed cycle table, in this order, when the run has them
-TABLE_COLUMNS = ("lift", "valve_lift", "velocity", "acceleration", "eccentricity", "cam_radius",
-                 "equivalent_radius", "v_cam", "v_follower", "entrainment", "load", "hertz_pmax",
-                 "film_min", "film_central", "lambda", "friction_coefficient", "friction_torque",
-                 "power_loss")
+#: the per-angle table's columns, each with the product whose effect writes it (None: the lift
+#: law's, in every run): the table holds those of the products the plan made
+TABLE_COLUMNS = {"lift": None, "valve_lift": "TrainKinematics", "velocity": None,
+                 "acceleration": None, "eccentricity": "TrainKinematics",
+                 "cam_radius": "TrainKinematics", "equivalent_radius": "TrainKinematics",
+                 "v_cam": "TrainKinematics", "v_follower": "TrainKinematics",
+                 "entrainment": "TrainKinematics", "load": "ContactLoad",
+                 "hertz_pmax": "ContactHertz", "film_min": "ContactFilm",
+                 "film_central": "ContactFilm", "lambda": "ContactFilm",
+                 "friction_coefficient": "ContactFriction", "friction_torque": "CamTorque",
+                 "power_loss": "CamTorque"}
 
 
 def _rule(title: str = "", char: str = "=") -> str:
@@ -100,14 +107,18 @@ def _summary_lines(result: Result, deck) -> list[str]:
 
 def _cycle_table(result: Result, step_deg: float) -> list[str]:
     """The per-angle table of report.txt, when an effect that ran declares it
-    (EffectSpec.sections: "cycle_table"); its columns are those of TABLE_COLUMNS the run has."""
-    from camtrain.catalogue import declared_effects
+    (EffectSpec.sections: "cycle_table"); its columns are those of TABLE_COLUMNS of the
+    products the plan made, the central film where the film has one."""
+    from camtrain.catalogue import declared_effects, planned_products
+    from camtrain.report.findings import central_film
 
     declared = any("cycle_table" in spec.sections for spec in declared_effects(result.plan))
     if not declared or not result.axes:   # an empty result (no plan, no grid): no table
         return []
     theta = np.degrees(result["cam_angle"])
-    names = [n for n in TABLE_COLUMNS if n in result.columns]
+    made = planned_products(result.plan)
+    names = [n for n, product in TABLE_COLUMNS.items() if product is None or product in made
+             and (n != "film_central" or central_film(result))]
     targets = np.arange(-180.0, 180.0 + 1e-9, step_deg)
     idx = sorted({int(np.argmin(np.abs(theta - t))) for t in targets})
     heads, units, cols = ["angle"], ["[deg]"], [theta]

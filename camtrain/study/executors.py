@@ -15,8 +15,10 @@ from camtrain.catalogue import planned_products
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 from camtrain.study.sweep import Case, Parameter
 
-#: Per-angle columns kept for the overlay plots (film, load, stress; lift for kinematics-only runs).
-OVERLAY_COLUMNS = ("film_min", "load", "hertz_pmax", "lift")
+#: Per-angle columns kept for the overlay plots (film, load, stress; lift for kinematics-only
+#: runs), each with the product whose effect writes it: a case keeps those its plan made
+OVERLAY_COLUMNS = {"film_min": "ContactFilm", "load": "ContactLoad",
+                   "hertz_pmax": "ContactHertz", "lift": "TrainKinematics"}
 
 
 @dataclass(frozen=True)
@@ -68,12 +70,13 @@ def run_case(job: Job) -> dict:
         why = [w for w in result.warnings if "contact" in w or "bounce" in w]
         record.update(status="lost_contact", message=why[0] if why else "minimum load <= 0")
     # the kinematics effect made the cam-angle grid the overlay curves are drawn on
-    if job.keep_curves and "TrainKinematics" in planned_products(result.plan):
+    made = planned_products(result.plan)
+    if job.keep_curves and "TrainKinematics" in made:
         import math
 
         curves = {"cam_angle": ("deg", [math.degrees(v) for v in result["cam_angle"]])}
-        for name in OVERLAY_COLUMNS:
-            if name in result.columns:
+        for name, product in OVERLAY_COLUMNS.items():
+            if product in made:
                 col = result.columns[name]
                 curves[name] = (col.unit, [float(v) for v in col.values])
         record["curves"] = curves

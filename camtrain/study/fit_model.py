@@ -74,12 +74,16 @@ def run_fit_case(job: FitJob) -> dict:
                                            job.base_dir, job.key))
     except CamtrainError as exc:
         return {"error": f"{type(exc).__name__}: {exc}"}
-    if job.axis == "speed":
-        return {"metrics": {n: (result.metrics[n].value, result.metrics[n].unit)
-                            for n in job.wanted if n in result.metrics}}
+    try:    # the data file names the quantities: the run is asked for them by name
+        if job.axis == "speed":
+            metrics = [result.metric(n, field="--data") for n in job.wanted]
+            return {"metrics": {n: (m.value, m.unit)
+                                for n, m in zip(job.wanted, metrics, strict=True)}}
+        columns = [result.column(n, field="--data", axis=job.axis) for n in job.wanted]
+    except InputError as exc:
+        return {"invalid": exc.problems}
     return {"axis": np.asarray(result[job.axis]), "columns": {
-        n: (np.asarray(result.columns[n].values), result.columns[n].unit)
-        for n in job.wanted if n in result.columns and result.columns[n].axis == job.axis}}
+        n: (np.asarray(c.values), c.unit) for n, c in zip(job.wanted, columns, strict=True)}}
 
 
 @dataclass
@@ -140,6 +144,10 @@ class Predictor:
             raise CamtrainError(f"the deck does not run with {at}: {failed}")
         out, k = [], 0
         for s in self.sources:
+            size = 1 if s.speed is None else len(s.data.x)
+            invalid = next((r["invalid"] for r in runs[k:k + size] if "invalid" in r), None)
+            if invalid:
+                raise InputError(invalid, source=s.data.path)
             if s.speed is None:
                 run = runs[k]
                 k += 1
@@ -152,9 +160,6 @@ class Predictor:
 
     @staticmethod
     def _at_angles(source: Source, quantity, run: dict) -> np.ndarray:
-        if quantity.name not in run["columns"]:
-            raise _unknown(source, quantity.name, "a column on the " + source.data.axis
-                           + " axis of this deck's run")
         values, unit = run["columns"][quantity.name]
         _same_unit(source, quantity, unit)
         x = source.data.x_si()
@@ -169,16 +174,9 @@ class Predictor:
 
     @staticmethod
     def _metric(source: Source, quantity, run: dict) -> float:
-        if quantity.name not in run["metrics"]:
-            raise _unknown(source, quantity.name, "a metric of this deck's run")
         value, unit = run["metrics"][quantity.name]
         _same_unit(source, quantity, unit)
         return value
-
-
-def _unknown(source: Source, name: str, expected: str) -> InputError:
-    return InputError(Problem("--data", f"{name} is not {expected}", name, expected),
-                      source=source.data.path)
 
 
 def _same_unit(source: Source, quantity, si_unit: str) -> None:

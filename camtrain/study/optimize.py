@@ -34,6 +34,7 @@ import numpy as np
 
 from camtrain.errors import InputError
 from camtrain.errors import Problem as DeckProblem
+from camtrain.metric_rows import case_metric
 from camtrain.study.optimize_problem import (
     Point,
     Problem,
@@ -77,7 +78,8 @@ class OptimizeOutcome:
         [W] of the run: the gain by part."""
         names = [self.problem.objective] + [
             n for n, (_, u) in self.datum.metrics.items()
-            if u == "W" and n != self.problem.objective and n in self.optimum.metrics]
+            if u == "W" and n != self.problem.objective
+            and case_metric(self.optimum.metrics, n) is not None]
         rows = []
         for n in names:
             d = self.datum.metrics.get(n, (math.nan, ""))

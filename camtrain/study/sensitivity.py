@@ -264,10 +264,14 @@ def check_metrics(datum, metrics: tuple[str, ...]) -> None:
     from camtrain.study.case_model import datum_model
 
     try:
-        known = run_plan(datum_model(datum.raw, datum.name, datum.base_dir)).metrics
+        result = run_plan(datum_model(datum.raw, datum.name, datum.base_dir))
     except CamtrainError:
         return
-    unknown = [m for m in metrics if m not in known]
-    if unknown:
-        raise InputError(Problem("--metric", "is not a metric of this deck's run",
-                                 ", ".join(unknown), "one of " + ", ".join(known)))
+    problems = []
+    for name in metrics:
+        try:
+            result.metric(name, field="--metric")
+        except InputError as exc:
+            problems += exc.problems
+    if problems:
+        raise InputError(problems)

@@ -16,6 +16,8 @@ import math
 
 import numpy as np
 
+from camtrain.metric_rows import case_metric
+
 #: probabilities of the distribution table
 QUANTILES = (0.05, 0.25, 0.5, 0.75, 0.95)
 #: the smallest base sample (Sobol) or number of trajectories (Morris) of the convergence ladder
@@ -27,9 +29,10 @@ def metric_values(records: list[dict], metrics: list[str]) -> dict[str, tuple[st
     ordered = sorted(records, key=lambda r: r["index"])
     out = {}
     for name in metrics:
-        unit = next((r["metrics"][name][1] for r in ordered if name in r["metrics"]), "")
-        values = [r["metrics"][name][0] if r["status"] == "ok" and name in r["metrics"]
-                  else math.nan for r in ordered]
+        cells = [case_metric(r["metrics"], name) for r in ordered]
+        unit = next((cell[1] for cell in cells if cell is not None), "")
+        values = [cell[0] if r["status"] == "ok" and cell is not None else math.nan
+                  for r, cell in zip(ordered, cells, strict=True)]
         out[name] = (unit, np.asarray(values, dtype=float))
     return out
 

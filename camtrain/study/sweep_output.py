@@ -14,6 +14,7 @@ import math
 import re
 from pathlib import Path
 
+from camtrain.metric_rows import case_metric
 from camtrain.report.display import display_unit, output_unit
 from camtrain.report.tables import atomic_write
 from camtrain.study.sweep import Case, Parameter
@@ -99,7 +100,8 @@ def csv_text(params: list[Parameter], records: list[dict], units: str = "deck") 
         row = [str(r["index"])] + [_fmt(r["values"][p.name] * f)
                                    for p, (_, f) in zip(params, columns, strict=True)]
         row += [r["status"], r["message"]]
-        row += [_fmt(r["metrics"][n][0]) if n in r["metrics"] else "" for n in names]
+        cells = [case_metric(r["metrics"], n) for n in names]
+        row += ["" if cell is None else _fmt(cell[0]) for cell in cells]
         w.writerow(row)
     return buf.getvalue()
 
@@ -244,8 +246,9 @@ def metric_plots(out_dir: Path, params: list[Parameter], records: list[dict],
             groups, others = {(): ok}, []  # zipped parameters: one line through all cases
         for ax, n in zip(axes.flat, names, strict=False):
             for key, line in groups.items():
-                pts = sorted((r["values"][p.name], shown(n, *r["metrics"][n])[0]) for r in line
-                             if n in r["metrics"] and math.isfinite(r["metrics"][n][0]))
+                got = [(r["values"][p.name], case_metric(r["metrics"], n)) for r in line]
+                pts = sorted((x, shown(n, *m)[0]) for x, m in got
+                             if m is not None and math.isfinite(m[0]))
                 if pts:
                     label = ", ".join(f"{q.name} {v:g}" for q, v in zip(others, key, strict=True))
                     ax.plot(*zip(*pts, strict=True), marker="o", ms=3, lw=1, label=label or None)
@@ -303,9 +306,9 @@ def _ball_sheet(plt, p: Parameter, ok: list[dict], units: dict):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for n in present:
         ref = datum_case["metrics"].get(n, (math.nan,))[0]
-        pts = sorted(((r["values"][p.name] / p.datum - 1) * 100,
-                      (r["metrics"][n][0] / ref - 1) * 100 if ref else math.nan)
-                     for r in ok if n in r["metrics"])
+        got = [(r["values"][p.name], case_metric(r["metrics"], n)) for r in ok]
+        pts = sorted(((x / p.datum - 1) * 100, (m[0] / ref - 1) * 100 if ref else math.nan)
+                     for x, m in got if m is not None)
         ax.plot(*zip(*pts, strict=True), marker="o", ms=3, label=n)
     ax.set_xlabel(f"change of {p.name} from {p.datum:g} {p.unit} [%]")
     ax.set_ylabel("change from the datum case [%]")

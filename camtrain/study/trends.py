@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from camtrain.metric_rows import case_metric
+
 RISES, FALLS, CONSTANT, NON_MONOTONE, UNKNOWN = "rises", "falls", "constant", "non-monotone", "n/a"
 SYMBOLS = {RISES: "↑", FALLS: "↓", CONSTANT: "–", NON_MONOTONE: "↕", UNKNOWN: "?"}
 
@@ -106,8 +108,9 @@ def trend_table(records: list[dict], params: list[str], metrics: list[str],
         for metric in metrics:
             found = []
             for line in lines:
-                xs = [r["values"][param] for r in line if metric in r["metrics"]]
-                ys = [r["metrics"][metric][0] for r in line if metric in r["metrics"]]
+                got = [(r["values"][param], case_metric(r["metrics"], metric)) for r in line]
+                xs = [x for x, m in got if m is not None]
+                ys = [m[0] for _, m in got if m is not None]
                 found.append(classify(xs, ys, rtol) + (len(xs),))
             found = [f for f in found if f[0] != UNKNOWN] or found or [(UNKNOWN, "", 0)]
             kinds = {f[:2] for f in found}

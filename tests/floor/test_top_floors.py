@@ -2,15 +2,18 @@
 
 report/, study/, api.py and cli*.py decide which sheet, panel, table, knob or study to make
 from what the effects that ran declare in the catalogue (EffectSpec.sheets, panels, knobs,
-key_metrics, accuracy_metrics, summary), never by testing whether a column or metric name is
-in a result. The test reads the source for a membership test on ``.columns`` or ``.metrics``
-(``"x" in result.columns``, ``n not in r["metrics"]``); those left are of two kinds that pick
-nothing (CURVES_AND_ROWS: the optional curves or rows of something the plan chose;
-USER_NAMES: a name the user gave, checked against the run), each file with its reason below.
-A new one fails here: declare the need in the catalogue instead.
+key_metrics, accuracy_metrics, summary), and which optional curves and rows it holds from the
+optional columns and components they declare (EffectSpec.optional_columns, recorded per deck
+in Step.makes; EffectSpec.components), never by testing whether a column or metric name is in
+a result. A name the user gave (a fit's data file, a study's --metric) is checked by one
+function, Result.column / Result.metric. The test reads the source for a membership test on
+``.columns`` or ``.metrics`` (``"x" in result.columns``, ``n not in r["metrics"]``); the few
+left test what the run found, not what the deck asked (FOUND_BY_THE_RUN), each file with its
+reason below. A new one fails here: declare the need in the catalogue instead.
 
-The second test compares what the declarations give for every shipped deck (from the plan and
-metric names in its golden file) with the fixture the column-name code wrote before
+The other tests hold each step's record of its optional columns to what its effect wrote for
+every shipped deck, and compare what the declarations give for every shipped deck (from the
+plan and metric names in its golden file) with the fixture the column-name code wrote before
 (tests/report/declarations.py regenerates it)."""
 from __future__ import annotations
 
@@ -31,63 +34,37 @@ MEMBERSHIP = re.compile(r"""\bin\s+[\w.()]*(\.(columns|metrics)|\[["'](columns|m
 
 FOR_IN = re.compile(r"\bfor\s+[\w\s,()*]+?\s+in\b")
 
-#: Two kinds of membership test are not dispatch, and only these are left. A sheet, table,
-#: knob or study is picked from the plan (EffectSpec.sheets, panels, knobs, key_metrics,
-#: accuracy_metrics, summary); the panels of a cycle sheet from EffectSpec.panels.
-#:
-#: CURVES_AND_ROWS: inside a sheet, panel or table that the plan already chose, which of its
-#: optional curves or rows the run has: a column an effect writes only for some deck options
-#: (a rocker's valve lift, a flat follower's eccentricity, the transient film's steady
-#: reference) or a component that carries a table's metric. Nothing is picked by it.
-CURVES_AND_ROWS: dict[str, tuple[int, str]] = {
-    "camtrain/report/panels.py": (9, "a declared panel draws the curves the run has (the "
-                                 "kinematics of a rocker or a flat follower, the averaged "
-                                 "Reynolds film's own film beside the transient film), and "
-                                 "gives its axes back when it has none"),
+#: The membership tests left: what the run found, which no deck option and no declaration can
+#: say before it runs. Nothing is picked by them: a sheet, table, knob or study is picked from
+#: the plan (EffectSpec.sheets, panels, model_panels, knobs, key_metrics, accuracy_metrics,
+#: summary), the optional curves and rows of one from the declared optional columns and
+#: components. file -> (number left, why)
+FOUND_BY_THE_RUN: dict[str, tuple[int, str]] = {
+    "camtrain/report/findings.py": (1, "whether the film has a central thickness (the film "
+                                    "panel's second curve, a column of report.txt's table): "
+                                    "without cam.width the contact's geometry, known once the "
+                                    "kinematics ran, decides between the Blok film (none) "
+                                    "and a point contact's EHL film"),
     "camtrain/report/panels_ehl.py": (1, "the declared film map of the elastic film, which "
                                       "writes no map when no angle of its march was loaded"),
-    "camtrain/report/bearing_plots.py": (3, "which components of a declared orbit sheet have "
-                                         "an orbit, and which extremes of a grooved bearing"),
-    "camtrain/report/engine_plots.py": (1, "which bearings of the declared load sheet have a "
-                                        "load diagram"),
-    "camtrain/report/piston_plots.py": (2, "how many rings and which curves the declared "
-                                        "piston sheet holds"),
-    "camtrain/report/summaries.py": (4, "which components and parts a declared summary table "
-                                     "has rows for"),
-    "camtrain/report/engine_report.py": (1, "the header rows of an engine deck: the bearings "
-                                         "with a Petroff power"),
-    "camtrain/report/text.py": (1, "the optional columns of the declared per-angle table of "
-                                "report.txt (a lift-only run has no load)"),
+    "camtrain/report/summaries.py": (1, "the camshaft bearings with an orbit in the declared "
+                                     "bearing table: none for one whose orbit did not "
+                                     "converge (warned) or of method petroff"),
+    "camtrain/report/bearing_plots.py": (1, "which of the declared bearings of an orbit "
+                                         "sheet have an orbit: a camshaft bearing whose orbit "
+                                         "did not converge is warned, not drawn, and a "
+                                         "partially grooved main has its two extremes"),
     "camtrain/report/console.py": (1, "the key results the plan's effects declare, of those "
-                                   "the run produced"),
-    "camtrain/study/sweep_output.py": (3, "a cell of a metric column of the sweep table or "
-                                       "a point of its plots, none for a failed case"),
-    "camtrain/study/optimize.py": (1, "the rows of the gain table: the powers of the datum "
-                                   "that the optimum also has"),
-    "camtrain/study/executors.py": (1, "the overlay curves a kept case has (a no-load case "
-                                    "has no film)"),
-}
-
-#: USER_NAMES: a column or metric the user named (a design limit in the deck, a metric or
-#: curve on the command line, a quantity in a fit's data file) is looked up to check that the
-#: run has it: validation of the user's input, not a choice of what to compute or draw.
-USER_NAMES: dict[str, tuple[int, str]] = {
-    "camtrain/report/limits.py": (2, "a design limit names its own column or metric in the "
-                                  "deck: the check reads what the user named"),
-    "camtrain/study/fit_model.py": (4, "a fit reads the quantities its data file names"),
-    "camtrain/study/sensitivity_analysis.py": (2, "the metric the user named, in the cases "
-                                               "that produced it"),
-    "camtrain/study/trends.py": (2, "the trend of the metric the user named, over the cases "
-                                 "that produced it"),
+                                   "the run stated: a separation angle or a seat-impact speed "
+                                   "only when the train separated or the valve landed"),
 }
 
 #: file -> (number of membership tests left, why none of them picks a sheet, table, knob or
 #: study)
-ALLOWED: dict[str, tuple[int, str]] = {**CURVES_AND_ROWS, **USER_NAMES}
+ALLOWED: dict[str, tuple[int, str]] = FOUND_BY_THE_RUN
 
 
-def test_every_file_left_is_of_one_kind_with_its_reason():
-    assert not set(CURVES_AND_ROWS) & set(USER_NAMES)
+def test_every_file_left_has_its_reason():
     assert all(count > 0 and len(why) > 20 for count, why in ALLOWED.values())
     # the modules that pick sheets, tables, knobs and studies have none left
     for picker in ("camtrain/report/sheets.py", "camtrain/report/outputs.py",
@@ -122,6 +99,68 @@ def test_no_membership_test_on_column_or_metric_names():
     assert found == {}, ("membership tests on column or metric names (declare the need in "
                          "the catalogue, or give the reason in ALLOWED): "
                          + json.dumps(found, indent=1))
+
+
+def _shipped_with_golden() -> list[str]:
+    return sorted(p.stem for p in GOLDEN.glob("*.json") if "+" not in p.stem)
+
+
+@pytest.mark.parametrize("name", _shipped_with_golden())
+def test_each_step_makes_the_optional_columns_its_effect_writes(name):
+    """The plan's record of the optional columns (Step.makes, from the effect module's
+    ``makes(deck, planned)``) is what the effect wrote for every shipped deck: the sheets that
+    ask the plan draw the curves of before."""
+    from camtrain import api
+    from camtrain.catalogue import _named
+    from camtrain.scene import resolve
+
+    golden = json.loads((GOLDEN / f"{name}.json").read_text())
+    plan = resolve(api.load(ROOT / "decks" / f"{name}.toml").model)
+    for step in (s for s in plan.steps if s.chosen):
+        for declared in step.spec.optional_columns:
+            written = {c for c in golden["columns"] if _named(c, declared)}
+            assert {c for c in step.makes if _named(c, declared)} == written, step.effect
+
+
+def test_the_plan_is_asked_only_for_declared_optional_columns():
+    from camtrain.catalogue import makes
+    from camtrain.plan import Plan, Step
+
+    plan = Plan("auto", (Step("kinematics", True, ""),
+                         Step("loads", True, "", makes=("valve_force",))))
+    assert makes(plan, "valve_force") and not makes(None, "valve_force")
+    assert not makes(plan, "spring_force_retainer")
+    with pytest.raises(ValueError, match="not an optional column"):
+        makes(plan, "film_min")
+    engine = Plan("auto", (Step("piston", True, "", makes=("inter_ring_pressure_1",)),),
+                  kind="engine")
+    assert makes(engine, "inter_ring_pressure_1") and not makes(engine, "inter_ring_pressure_2")
+
+
+def test_a_name_the_user_gave_is_checked_by_one_function():
+    """Result.column / Result.metric: the deck-input error (exit 2) names the option, the
+    name and what the run has."""
+    import numpy as np
+
+    from camtrain.errors import EXIT_INVALID_INPUT, InputError
+    from camtrain.result import Result
+
+    r = Result()
+    r.add_axis("cam_angle", np.linspace(-1.0, 1.0, 5), "rad", "cam angle")
+    r.add_column("film_min", np.ones(5), "m", "film")
+    r.add_axis("time", np.linspace(0.0, 1.0, 3), "s", "time")
+    r.add_metric("load_max", 1.0, "N", "largest load")
+    assert r.column("film_min", field="--data", axis="cam_angle").unit == "m"
+    assert r.metric("load_max", field="--metric").value == 1.0
+    with pytest.raises(InputError) as bad:
+        r.column("film_min", field="--data", axis="time")
+    assert bad.value.exit_code == EXIT_INVALID_INPUT
+    assert bad.value.problems[0].render() == ("--data: film_min is not a column on the time "
+                                              "axis of this run (got 'film_min'); expected "
+                                              "one of time")
+    with pytest.raises(InputError, match="--metric: nothing is not a metric of this run "
+                                         r"\(got 'nothing'\); expected one of load_max"):
+        r.metric("nothing", field="--metric")
 
 
 def test_the_pattern_finds_what_it_is_for():

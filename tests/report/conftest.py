@@ -1,7 +1,8 @@
 """Synthetic results for the report tests: a flat follower with a smooth lift, built here in SI.
 
-The numbers are plausible, not physics: the report layer must draw and tabulate whatever columns
-it is given, so the tests control exactly which columns exist.
+The numbers are plausible, not physics. Each level holds the columns the effects of its plan
+write (the report draws and tabulates what the plan's effects declare, and reads their columns),
+so a test controls which effects ran and, through Step.makes, which optional columns they wrote.
 """
 from __future__ import annotations
 
@@ -14,17 +15,19 @@ OMEGA = 2500 * 2 * np.pi / 60
 R_B = 0.018
 
 
-def chain_plan(*effects: str, models: dict[str, str] | None = None):
+def chain_plan(*effects: str, models: dict[str, str] | None = None,
+               makes: dict[str, tuple[str, ...]] | None = None):
     """The plan of a valve-train run of these effects (what the report reads the findings and
     sheets from); ``models``: effect -> the model its step records (Step.model), e.g.
-    ``{"film": "squeeze"}``."""
+    ``{"film": "squeeze"}``; ``makes``: effect -> the optional columns it wrote (Step.makes,
+    none unless given)."""
     from camtrain.catalogue import KINDS
     from camtrain.plan import Plan, Step
 
     specs = {spec.name: spec for spec in KINDS["valve_train"].effects}
-    models = models or {}
-    return Plan("auto", tuple(Step(e, True, "synthetic", specs[e], models.get(e, ""))
-                              for e in effects), "valve_train")
+    models, makes = models or {}, makes or {}
+    return Plan("auto", tuple(Step(e, True, "synthetic", specs[e], models.get(e, ""),
+                                   makes.get(e, ())) for e in effects), "valve_train")
 
 
 def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,
@@ -53,6 +56,8 @@ def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,
     rc = R_B + lift + d2
     ang = np.pi / 2 + th
     ux, uy, tx, ty = np.cos(ang), np.sin(ang), -np.sin(ang), np.cos(ang)
+    r.add_column("valve_lift", lift, "m", "valve lift")
+    r.add_column("pressure_angle", np.zeros_like(th), "rad", "pressure angle (flat follower)")
     r.add_column("contact_x", (R_B + lift) * ux + d1 * tx, "m", "contact point x, cam frame")
     r.add_column("contact_y", (R_B + lift) * uy + d1 * ty, "m", "contact point y, cam frame")
     r.add_column("eccentricity", d1, "m", "contact position on the follower face")
@@ -84,6 +89,8 @@ def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,
     r.add_column("friction_force", f, "N", "friction force")
     torque = f * (R_B + lift)
     r.add_column("friction_torque", torque, "N*m", "friction torque")
+    r.add_column("cam_torque", torque + 2.0 * np.gradient(load, th) * 1e-3, "N*m",
+                 "cam torque")
     r.add_column("power_loss", torque * OMEGA, "W", "friction power")
     i = int(np.argmax(p))
     r.add_metric("hertz_max", p[i], "Pa", "largest Hertz pressure", th[i])

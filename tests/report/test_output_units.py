@@ -17,7 +17,6 @@ from camtrain import api
 from camtrain.cli import main
 from camtrain.report.tables import atomic_write
 from camtrain.report.text import report_text
-from camtrain.result import Result
 from tests.conftest import DECKS
 
 
@@ -99,12 +98,14 @@ def test_limit_bounds_have_no_float_noise(flat, tmp_path):
 
 def test_report_never_truncates_a_number():
     """A value like -4.239e-05 in the cycle table is written whole, not '-4.239e-0'."""
-    result = Result()
-    theta = np.linspace(-math.pi, math.pi, 73)
-    result.add_axis("cam_angle", theta, "rad", "cam angle")
+    from tests.report.conftest import chain_plan, synthetic
+
+    result = synthetic(72, level="kinematics")
+    theta = result["cam_angle"]
     result.add_column("velocity", np.full_like(theta, -4.239e-05 / (1e3 * math.pi / 180)),
                       "m/rad", "velocity")             # shown as -4.239e-05 mm/deg
     result.add_column("load", np.full_like(theta, -123456.7891), "N", "load")
+    result.plan = chain_plan("kinematics", "loads")
     text = report_text(result)
     table = text.split("CYCLE TABLE")[1]
     assert "-4.239e-05" in table

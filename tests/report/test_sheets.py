@@ -78,7 +78,9 @@ def _sheet_panels(tmp_path, model: str) -> dict[str, set[str]]:
     from tests.report.conftest import chain_plan
 
     r = _with_transient_columns(synthetic(120))
-    r.plan = chain_plan(*FULL_CHAIN, models={"film": model})
+    written = {"steady": (), "squeeze": ("film_steady",),      # what the film effect writes
+               "averaged_reynolds": ("film_steady", "film_transient")}[model]
+    r.plan = chain_plan(*FULL_CHAIN, models={"film": model}, makes={"film": written})
     written = write_plots(r, None, tmp_path / model, formats=("png",))
     names = {p.relative_to(tmp_path / model).as_posix() for p in written}
     return {"sheets": {n for n in names if n.startswith("sheet_")},
@@ -110,10 +112,13 @@ def test_the_film_model_of_the_plan_survives_a_saved_result(tmp_path):
     from camtrain.result import Result
     from tests.report.conftest import chain_plan
 
-    r = synthetic(60)
-    r.plan = chain_plan(*FULL_CHAIN, models={"film": "averaged_reynolds"})
+    r = _with_transient_columns(synthetic(60))
+    r.plan = chain_plan(*FULL_CHAIN, models={"film": "averaged_reynolds"},
+                        makes={"film": ("film_steady", "film_transient")})
     back = Result.load(r.save(tmp_path / "r.npz"))
     assert next(s.model for s in back.plan.steps if s.effect == "film") == "averaged_reynolds"
+    assert next(s.makes for s in back.plan.steps if s.effect == "film") == ("film_steady",
+                                                                           "film_transient")
     assert {"transient_film", "film_pressures"} <= declared_panels(back.plan)
 
 
