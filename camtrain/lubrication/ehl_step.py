@@ -18,6 +18,7 @@ from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _Stat
 from .ehl_elastic import ElasticKernel, influence_row
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
 from .ehl_oil import ScaledOil
+from .ehl_step_krylov import krylov_direction
 from .ehl_transient_system import StepSystem
 
 CHORD_CONTRACTION = 0.5
@@ -33,6 +34,26 @@ SMOOTHING = 2.0
 REVERSAL_FLOOR = 0.05
 #: share of the change of the asperity pressure taken into its deflection per Newton iterate
 ASPERITY_RELAXATION = 0.5
+
+
+class _LagRelaxation:
+    """The share of the asperity pressure's change taken into its deflection per Newton
+    iterate: ``ASPERITY_RELAXATION`` at first, then Aitken's dynamic relaxation (Irons & Tuck
+    1969; the secant on the lag's residual r = A(H) - A_lag, as in partitioned fluid-structure
+    coupling, Kuettler & Wall 2008): w_k = -w_{k-1} r_{k-1}.(r_k - r_{k-1}) / |r_k - r_{k-1}|^2,
+    kept within [0.1, 1]. The fixed point A_lag = A(H) is the same whatever the weights."""
+
+    def __init__(self):
+        self.w, self.r = ASPERITY_RELAXATION, None
+
+    def weight(self, r: np.ndarray) -> float:
+        if self.r is not None:
+            dr = r - self.r
+            denom = float(dr @ dr)
+            if denom > 0.0:
+                self.w = min(1.0, max(0.1, -self.w * float(self.r @ dr) / denom))
+        self.r = r.copy()
+        return self.w
 
 
 class _UnitKernel:
@@ -54,6 +75,7 @@ class _Marcher:
         self.kernel = _UnitKernel(res.nodes)
         self.lu = None
         self.factorisations = 0
+        self.krylov_iterations = 0
         self.split_steps = 0
         rough = contact.sigma > 0.0
         self.a_coef = (asperity_pressure_coefficient(contact.E_r, contact.zeta_beta_sigma,
@@ -132,18 +154,12 @@ class _Marcher:
         pressure and the film-fraction branch) the full step is taken (non-monotone)."""
         tol = self.res.tolerance * sysm.pressure_scale
         f = sysm.fields(s, H0, np.zeros_like(s))
-        A_lag = f.A
+        A_lag, relax = f.A, _LagRelaxation()
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
         F, f = sysm.residual(s, H0, A_lag)
         norm = np.abs(F).max()
         for it in range(1, self.res.max_iterations + 1):
-            fresh = self.lu is None
-            if fresh:
-                with warnings.catch_warnings():     # singular: a non-finite step, handled
-                    warnings.simplefilter("ignore", sla.LinAlgWarning)
-                    self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
-                self.factorisations += 1
-            step = sla.lu_solve(self.lu, -F, check_finite=False)
+            fresh, step = self._direction(sysm, s, H0, f, F, A_lag)
             if not np.all(np.isfinite(step)):
                 if fresh:
                     break
@@ -157,7 +173,7 @@ class _Marcher:
             s, H0, F, f, norm = s_new, H0_new, F_new, f_new, norm_new
             lag = float(np.abs(f.A - A_lag).max())
             if lag > 0.0:              # under-relaxed: the asperity deflection lags
-                A_lag = A_lag + ASPERITY_RELAXATION * (f.A - A_lag)
+                A_lag = A_lag + relax.weight(f.A - A_lag) * (f.A - A_lag)
                 F, f = sysm.residual(s, H0, A_lag)
                 norm = np.abs(F).max()
             if norm < tol and lag < tol:
@@ -165,6 +181,22 @@ class _Marcher:
             if t < 1.0:
                 self.lu = None
         return s, H0, f, self.res.max_iterations, False
+
+    def _direction(self, sysm, s, H0, f, F, A_lag):
+        """(fresh, Newton direction): matrix-free GMRES (``krylov``, always fresh), or the
+        kept dense LU (``dense``: a chord step while it is kept, else a new factorisation)."""
+        if self.res.linear_solver == "krylov":
+            step, gmres_its = krylov_direction(sysm, s, H0, f, F, A_lag)
+            self.factorisations += 1
+            self.krylov_iterations += gmres_its
+            return True, step
+        fresh = self.lu is None
+        if fresh:
+            with warnings.catch_warnings():     # singular: a non-finite step, handled
+                warnings.simplefilter("ignore", sla.LinAlgWarning)
+                self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
+            self.factorisations += 1
+        return fresh, sla.lu_solve(self.lu, -F, check_finite=False)
 
     def _damped(self, sysm, s, H0, step, norm, backtrack, A_lag):
         """The step scaled by t = 1, 1/2, ... until the film stays positive and the residual
@@ -276,6 +308,7 @@ class _Marcher:
         half = self._midpoint(k)
         mid, *_ = half.step(1, state, 0.5 * dt, False, depth + 1)
         self.factorisations += half.factorisations
+        self.krylov_iterations += half.krylov_iterations
         self.split_steps += half.split_steps
         mid.q_old = None
         return self.step(k, mid, 0.5 * dt, False, depth + 1)
@@ -289,5 +322,5 @@ class _Marcher:
         sub = _Marcher.__new__(_Marcher)
         sub.__dict__.update(self.__dict__)
         sub.c = CycleContact(**{**c.__dict__, **mid})
-        sub.lu, sub.factorisations, sub.split_steps = None, 0, 0
+        sub.lu, sub.factorisations, sub.split_steps, sub.krylov_iterations = None, 0, 0, 0
         return sub

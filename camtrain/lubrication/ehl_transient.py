@@ -110,6 +110,7 @@ def march_ehl_cycle(contact: CycleContact, resolution: CycleResolution | None = 
             first = out.h_central[k]
         _record(out, k, c, state, f, sysm, mirror, b, p_h, its, m.a_coef)
     out.factorisations, out.split_steps = m.factorisations, m.split_steps
+    out.krylov_iterations = m.krylov_iterations
     if h_start is None:
         out.period_error = float(abs(out.h_central[start] - first) / first)
     return out
