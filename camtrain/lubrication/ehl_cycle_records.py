@@ -113,6 +113,7 @@ class _State:
     q_old: np.ndarray | None = None
     x_old: np.ndarray | None = None
     R_old: float = math.nan
+    a: np.ndarray | None = None     #: asperity pressure [Pa] on x (the next step's first lag)
 
 
 def _content_on(x, x_from, q_from, R_from):

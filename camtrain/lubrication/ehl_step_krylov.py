@@ -37,6 +37,8 @@ COARSENING = 4
 BAND = 24
 #: GMRES: relative tolerance of the Newton direction (2-norm), restart length, restarts
 RTOL, RESTART, RESTARTS = 1e-4, 30, 4
+#: a kept preconditioner is rebuilt once GMRES needs more than this many iterations with it
+REUSE_ITERATIONS = 12
 
 
 @lru_cache(maxsize=8)
@@ -147,12 +149,19 @@ class TwoLevel:
         return z
 
 
-def krylov_direction(sysm, s: np.ndarray, H0: float, f, F: np.ndarray,
-                     A_lag: np.ndarray) -> tuple[np.ndarray, int]:
-    """(Newton direction in (s_interior, H0), GMRES iterations) at the iterate (s, H0) with
-    fields f and residual F, without forming the Jacobian."""
+def krylov_direction(sysm, s: np.ndarray, H0: float, f, F: np.ndarray, A_lag: np.ndarray,
+                     kept: TwoLevel | None = None):
+    """(Newton direction in (s_interior, H0), GMRES iterations, the preconditioner, whether
+    GMRES reached ``RTOL``) at the iterate (s, H0) with fields f and residual F, without
+    forming the Jacobian. ``kept``: a preconditioner built at an earlier iterate on the same
+    grid, used as it is (the products are always the current Jacobian's), for at most
+    ``REUSE_ITERATIONS`` GMRES iterations."""
     op = StepOperator(sysm, s, f)
-    pre = TwoLevel(op, s, H0, A_lag)
+    if kept is None:
+        pre = TwoLevel(op, s, H0, A_lag)
+    else:
+        pre = kept
+        pre.op = op
     size = F.size
     A = LinearOperator((size, size), matvec=op.matvec)
     M = LinearOperator((size, size), matvec=pre.apply)
@@ -160,6 +169,7 @@ def krylov_direction(sysm, s: np.ndarray, H0: float, f, F: np.ndarray,
 
     def tick(_):
         count[0] += 1
-    step, _ = gmres(A, -F, M=M, rtol=RTOL, atol=0.0, restart=RESTART, maxiter=RESTARTS,
-                    callback=tick, callback_type="pr_norm")
-    return step, count[0]
+    restart, restarts = (RESTART, RESTARTS) if kept is None else (REUSE_ITERATIONS, 1)
+    step, info = gmres(A, -F, M=M, rtol=RTOL, atol=0.0, restart=restart, maxiter=restarts,
+                       callback=tick, callback_type="pr_norm")
+    return step, count[0], pre, info == 0
