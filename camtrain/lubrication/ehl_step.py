@@ -216,7 +216,7 @@ class _Marcher:
     def _direction(self, sysm, s, H0, f, F, A_lag):
         """(fresh, Newton direction): matrix-free GMRES (``krylov``, always fresh), or the
         kept dense LU (``dense``: a chord step while it is kept, else a new factorisation)."""
-        if self.res.linear_solver == "krylov":
+        if self.res.krylov:
             return True, self._krylov(sysm, s, H0, f, F, A_lag)
         fresh = self.lu is None
         if fresh:

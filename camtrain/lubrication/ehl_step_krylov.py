@@ -36,7 +36,7 @@ COARSENING = 4
 #: elastic influence kept in the band smoother: this many nodes on each side of the diagonal
 BAND = 24
 #: GMRES: relative tolerance of the Newton direction (2-norm), restart length, restarts
-RTOL, RESTART, RESTARTS = 1e-4, 30, 4
+RTOL, RESTART, RESTARTS = 1e-2, 30, 4
 #: a kept preconditioner is rebuilt once GMRES needs more than this many iterations with it
 REUSE_ITERATIONS = 12
 
