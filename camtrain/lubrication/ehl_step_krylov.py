@@ -48,16 +48,6 @@ def _unit_kernel(n: int):
     return ElasticKernel.of_grid(n, 1.0), -toeplitz(influence_row(n, 1.0)) / np.pi
 
 
-def _band_product(bands: dict, v: np.ndarray) -> np.ndarray:
-    """sum_o bands[o][i] v[i + o] over the interior rows i = 1..n-2 (v full length)."""
-    n = v.size
-    out = np.zeros(n - 2)
-    for o, c in bands.items():
-        lo, hi = max(1, -o), min(n - 1, n - o)
-        out[lo - 1:hi - 1] += c[lo:hi] * v[lo + o:hi + o]
-    return out
-
-
 class StepOperator:
     """dF/d(s_interior, H0) of one iterate as products, and its band (module docstring)."""
 
@@ -68,18 +58,31 @@ class StepOperator:
         self.active = None
         if sysm.cavitation == "reynolds":      # rows on the P = 0 branch of min(P, sG)
             self.active = f.P[1:-1] <= self.scale[1:-1] * sysm.reynolds(f)[1:-1]
+        # the scaled bands on the interior rows, for products with a vector padded by one
+        # zero in front: row i (node i + 1) takes v[i + o] at padded index i + 2 + o
+        sc = self.scale[1:-1]
+        self._local = [(2 + o, sc * c[1:-1]) for o, c in self.local.items()]
+        self._t_H = [(2 + o, sc * c[1:-1]) for o, c in self.t_H.items()]
 
     def matvec(self, v: np.ndarray) -> np.ndarray:
-        f, sysm = self.f, self.sysm
-        ds = np.zeros(self.n)
-        ds[1:-1] = v[:-1]
-        dP = f.dP * ds
-        dH = sysm.kernel.deflection(dP) + v[-1]
-        rows = self.scale[1:-1] * (_band_product(self.local, ds) + _band_product(self.t_H, dH))
+        f, sysm, n = self.f, self.sysm, self.n
+        ds = np.zeros(n + 1)                 # [0, s_0 .. s_{n-1}] with s_0 = s_{n-1} = 0
+        ds[2:-1] = v[:-1]
+        dP = f.dP * ds[1:]
+        dH = np.empty(n + 1)
+        dH[0] = 0.0
+        dH[1:] = sysm.kernel.deflection(dP) + v[-1]
+        out = np.empty(n - 1)
+        rows = out[:-1]
+        rows[:] = 0.0
+        for start, c in self._local:
+            rows += c * ds[start:start + n - 2]
+        for start, c in self._t_H:
+            rows += c * dH[start:start + n - 2]
         if self.active is not None:
-            rows = np.where(self.active, v[:-1], rows)
-        load = sysm.dx * (dP.sum() + f.dA @ dH)
-        return np.concatenate((rows, [load]))
+            rows[:] = np.where(self.active, v[:-1], rows)
+        out[-1] = sysm.dx * (dP.sum() + f.dA @ dH[1:])
+        return out
 
     def band(self, width: int) -> np.ndarray:
         """The interior block's band of half width ``width`` in LAPACK storage: ab[width + i
