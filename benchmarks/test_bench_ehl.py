@@ -74,23 +74,34 @@ def bare_steps(n: int, steps: int):
 
 
 def test_bench_ehl_cam_cycle_512(benchmark):
-    """Target: a whole cam cycle at 0.5 deg steps on 512 points under 20 s of CPU."""
+    """Target: a whole cam cycle at 0.5 deg steps on 512 points under 20 s of CPU (the
+    default linear solver, matrix-free at 512 points); the Newton and GMRES iterations per
+    step are noted beside the time."""
     from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
 
     contact = goecmen_cycle(720)
     resolution = CycleResolution(nodes=512)
-    timing = paired(lambda: march_ehl_cycle(contact, resolution), bare_steps(512, 720),
-                    rounds=1, warmup=0)
+    runs = []
+    timing = paired(lambda: runs.append(march_ehl_cycle(contact, resolution)),
+                    bare_steps(512, 720), rounds=1, warmup=0)
     record(benchmark, "elastic film, cam cycle 720 steps x 512 points / one bare Newton "
            "step per angle", timing, "< 20 s CPU", cpu=True)
-    note("elastic film, cam cycle 720 x 512, CPU", f"{timing['cpu_subject_min']:.3g} s",
-         "< 20 s")
+    note("elastic film, cam cycle 720 x 512, CPU", f"{timing['cpu_subject_min']:.3g} s "
+         f"({timing['cpu_subject_min'] / 720 * 1e3:.3g} ms per step)", "< 20 s")
+    out = runs[-1]
+    newton = int(out.iterations.sum())
+    note("elastic film, cam cycle 720 x 512, iterations",
+         f"{newton / 720:.2f} Newton per step, {out.krylov_iterations / max(newton, 1):.1f} "
+         f"GMRES per Newton, {out.split_steps} split steps")
+    benchmark.extra_info["newton_per_step"] = newton / 720
     benchmark.pedantic(lambda: None, rounds=1, iterations=1)
 
 
 def test_bench_ehl_cycle_cost_against_points(benchmark):
     """CPU time of 80 steps through the opening flank and the first entrainment reversal
-    (-52 .. -12 deg) at 128..1024 points, and the fitted exponent of n."""
+    (-52 .. -12 deg) at 128..1024 points with matrix-free Newton directions, and the fitted
+    exponent of n (target: n log n or n, k <= 1.1); the default ``auto`` takes the dense LU
+    below 384 points, where it is cheaper."""
     from dataclasses import replace
 
     from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
@@ -100,7 +111,7 @@ def test_bench_ehl_cycle_cost_against_points(benchmark):
     part = replace(full, **{k: getattr(full, k)[window] for k in ("t", "w", "R", "u", "u_s")})
     sizes, times = [128, 256, 512, 1024], []
     for n in sizes:
-        res = CycleResolution(nodes=n)
+        res = CycleResolution(nodes=n, linear_solver="krylov")
         timing = paired(lambda r=res: march_ehl_cycle(part, r), bare_steps(n, 80), rounds=1,
                         warmup=0)
         times.append(timing["cpu_subject_min"])
@@ -108,7 +119,6 @@ def test_bench_ehl_cycle_cost_against_points(benchmark):
              f"{timing['cpu_subject_min']:.3g} s ({timing['cpu_ratio_min']:.2f} bare steps "
              "per angle)")
     exponent = np.polyfit(np.log(sizes), np.log(times), 1)[0]
-    note("elastic film march, cost ~ n^k", f"k = {exponent:.2f}",
-         "n log n (k ~ 1.1) needs matrix-free steps")
+    note("elastic film march, cost ~ n^k", f"k = {exponent:.2f}", "n log n or n (k <= 1.1)")
     benchmark.extra_info["exponent"] = exponent
     benchmark.pedantic(lambda: None, rounds=1, iterations=1)

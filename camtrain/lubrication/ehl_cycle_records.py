@@ -11,6 +11,11 @@ from .ehl_oil import Oil
 from .ehl_transient_system import CAVITATION
 
 MARCHES = ("bdf2", "implicit_euler")
+LINEAR_SOLVERS = ("auto", "krylov", "dense")
+#: ``auto`` takes the matrix-free directions from this many nodes on (measured on the Goecmen
+#: cam, 80 steps through a flank and a reversal: dense 1.2-1.9 s against 3.0-3.4 s at 128-256
+#: nodes, where a dense LU costs about a millisecond; 4.7-7.2 s against 4.2-5.5 s at 512)
+KRYLOV_NODES = 384
 
 
 @dataclass(frozen=True)
@@ -39,7 +44,12 @@ class CycleContact:
 class CycleResolution:
     """Knobs: nodes, inlet (half domain in Hertz half-widths), Newton tolerance (max scaled
     residual), march (``bdf2`` or ``implicit_euler``), cavitation, wedge scheme, map_nodes
-    (positions kept per angle in the film map)."""
+    (positions kept per angle in the film map), linear_solver (the Newton direction:
+    ``krylov``, matrix-free GMRES with a two-level preconditioner, O(n log n) per product
+    (:mod:`.ehl_step_krylov`); ``dense``, the dense Jacobian's LU, kept across iterations and
+    steps while its chord steps halve the residual, O(n^3) per factorisation; ``auto``,
+    ``krylov`` from ``KRYLOV_NODES`` nodes on). Both solve the same equations to the same
+    tolerance."""
 
     nodes: int = 512
     inlet: float = 4.5
@@ -49,14 +59,24 @@ class CycleResolution:
     scheme: str = "upwind2"
     max_iterations: int = 40
     map_nodes: int = 64
+    linear_solver: str = "auto"
 
     def __post_init__(self):
         if self.march not in MARCHES:
             raise ValueError(f"march {self.march!r}: expected one of {MARCHES}")
         if self.cavitation not in CAVITATION:
             raise ValueError(f"cavitation {self.cavitation!r}: expected one of {CAVITATION}")
+        if self.linear_solver not in LINEAR_SOLVERS:
+            raise ValueError(f"linear_solver {self.linear_solver!r}: expected one of "
+                             f"{LINEAR_SOLVERS}")
         if self.nodes < 32:
             raise ValueError(f"nodes = {self.nodes}: expected at least 32")
+
+    @property
+    def krylov(self) -> bool:
+        """Whether the Newton directions are matrix-free (``linear_solver``)."""
+        return self.linear_solver == "krylov" or (self.linear_solver == "auto"
+                                                   and self.nodes >= KRYLOV_NODES)
 
 
 @dataclass
@@ -65,7 +85,8 @@ class EHLCycle:
     pressure [Pa], Hertz pressure [Pa], friction [N] (fluid and asperity parts), asperity
     share of the load [-], peak asperity pressure [Pa], mass-balance error [-], Newton
     iterations, the film map (x [m], h [m], p [Pa] at ``map_nodes`` positions per step); LU
-    factorisations, period error, split steps, steps restarted from the steady solution."""
+    factorisations (with ``krylov``: preconditioners built), period
+    error, split steps, steps restarted from the steady solution, GMRES iterations."""
 
     h_central: np.ndarray
     h_min: np.ndarray
@@ -84,6 +105,7 @@ class EHLCycle:
     period_error: float = math.nan
     split_steps: int = 0
     restarts: list = field(default_factory=list)   #: steps restarted from the steady solution
+    krylov_iterations: int = 0     #: GMRES iterations of the matrix-free Newton directions
 
     @property
     def friction(self) -> np.ndarray:
@@ -103,6 +125,7 @@ class _State:
     q_old: np.ndarray | None = None
     x_old: np.ndarray | None = None
     R_old: float = math.nan
+    a: np.ndarray | None = None     #: asperity pressure [Pa] on x (the next step's first lag)
 
 
 def _content_on(x, x_from, q_from, R_from):

@@ -18,6 +18,7 @@ from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _Stat
 from .ehl_elastic import ElasticKernel, influence_row
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
 from .ehl_oil import ScaledOil
+from .ehl_step_krylov import REUSE_ITERATIONS, krylov_direction
 from .ehl_transient_system import StepSystem
 
 CHORD_CONTRACTION = 0.5
@@ -31,8 +32,43 @@ GRID_SLACK = 1.25
 SMOOTHING = 2.0
 #: a steady restart uses at least this share of the cycle's largest entrainment
 REVERSAL_FLOOR = 0.05
+#: a Newton iteration whose last STALL_WINDOW fresh directions gave no descent (the full step
+#: or none taken, see ``newton``) and whose residual norm fell by less than 1 - STALL_FACTOR over them
+#: is cycling: it stops there (measured on the Goecmen cam: such iterations cycle just above the
+#: tolerance to ``max_iterations``, and the step is split after all)
+STALL_WINDOW, STALL_FACTOR = 5, 0.9
 #: share of the change of the asperity pressure taken into its deflection per Newton iterate
 ASPERITY_RELAXATION = 0.5
+
+
+def _cycling(history: list, norm: float) -> bool:
+    """Whether the last ``STALL_WINDOW`` iterations of ``history`` ((norm before, no descent)
+    each) all gave no descent and the norm is now above STALL_FACTOR times
+    the norm before them."""
+    if len(history) < STALL_WINDOW:
+        return False
+    last = history[-STALL_WINDOW:]
+    return all(blind for _, blind in last) and norm > STALL_FACTOR * last[0][0]
+
+
+class _LagRelaxation:
+    """The share of the asperity pressure's change taken into its deflection per Newton
+    iterate: ``ASPERITY_RELAXATION`` at first, then Aitken's dynamic relaxation (Irons & Tuck
+    1969; the secant on the lag's residual r = A(H) - A_lag, as in partitioned fluid-structure
+    coupling, Kuettler & Wall 2008): w_k = -w_{k-1} r_{k-1}.(r_k - r_{k-1}) / |r_k - r_{k-1}|^2,
+    kept within [0.1, 1]. The fixed point A_lag = A(H) is the same whatever the weights."""
+
+    def __init__(self):
+        self.w, self.r = ASPERITY_RELAXATION, None
+
+    def weight(self, r: np.ndarray) -> float:
+        if self.r is not None:
+            dr = r - self.r
+            denom = float(dr @ dr)
+            if denom > 0.0:
+                self.w = min(1.0, max(0.1, -self.w * float(self.r @ dr) / denom))
+        self.r = r.copy()
+        return self.w
 
 
 class _UnitKernel:
@@ -53,7 +89,10 @@ class _Marcher:
         self.c, self.res = contact, res
         self.kernel = _UnitKernel(res.nodes)
         self.lu = None
+        self.pre, self.pre_grid = None, None     # the kept matrix-free preconditioner
+        self.reuse = True
         self.factorisations = 0
+        self.krylov_iterations = 0
         self.split_steps = 0
         rough = contact.sigma > 0.0
         self.a_coef = (asperity_pressure_coefficient(contact.E_r, contact.zeta_beta_sigma,
@@ -117,33 +156,40 @@ class _Marcher:
         return float(moes_1992(w, R, u, c.oil.eta0, c.oil.alpha, c.E_r))
 
     def guess(self, sysm, x, p_h, b, R, mirror, state: _State):
+        """(s, H0, A): the previous step's solution on this grid, in this step's units, with
+        its asperity pressure as the first lagged asperity deflection."""
         s = np.interp(x, state.x, state.s, left=0.0, right=0.0)
         s = np.where(s > 0.0, s * state.p_h / p_h, s)
         s[[0, -1]] = 0.0
+        A = np.zeros_like(s) if state.a is None else \
+            np.interp(x, state.x, state.a, left=0.0, right=0.0) / p_h
         if mirror:
-            s = s[::-1].copy()
+            s, A = s[::-1].copy(), A[::-1].copy()
         H_c = state.h_c * R / b**2
-        V0 = np.interp(0.0, sysm.X, sysm.kernel.deflection(np.maximum(s, 0.0)))
-        return s, H_c - V0
+        V0 = np.interp(0.0, sysm.X, sysm.kernel.deflection(np.maximum(s, 0.0) + A))
+        return s, H_c - V0, A
 
-    def newton(self, sysm: StepSystem, s, H0):
+    def newton(self, sysm: StepSystem, s, H0, stall: bool = True, A0=None):
         """(s, H0, fields, iterations, converged): semismooth Newton, backtracking on the
         residual norm; where a fresh direction gives no descent (a node on the kink between the
-        pressure and the film-fraction branch) the full step is taken (non-monotone)."""
+        pressure and the film-fraction branch) the full step is taken (non-monotone). ``stall``:
+        give up once the residual stalls (``STALL_WINDOW``; a time step is then split). ``A0``:
+        the first lagged asperity pressure (None: that of the film without it). A guess that
+        already meets the tolerance (a steady stretch of the cycle) takes no iteration."""
         tol = self.res.tolerance * sysm.pressure_scale
-        f = sysm.fields(s, H0, np.zeros_like(s))
-        A_lag = f.A
+        f = sysm.fields(s, H0, np.zeros_like(s) if A0 is None else A0)
+        A_lag, relax = (f.A if A0 is None else A0), _LagRelaxation()
+        self.reuse = True
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
         F, f = sysm.residual(s, H0, A_lag)
         norm = np.abs(F).max()
+        if norm < tol and float(np.abs(f.A - A_lag).max()) < tol:
+            return s, H0, f, 0, True
+        history = []                   # (norm, a step without descent) per iteration
         for it in range(1, self.res.max_iterations + 1):
-            fresh = self.lu is None
-            if fresh:
-                with warnings.catch_warnings():     # singular: a non-finite step, handled
-                    warnings.simplefilter("ignore", sla.LinAlgWarning)
-                    self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
-                self.factorisations += 1
-            step = sla.lu_solve(self.lu, -F, check_finite=False)
+            if stall and _cycling(history, norm):
+                break                  # the split step is cheaper
+            fresh, step = self._direction(sysm, s, H0, f, F, A_lag)
             if not np.all(np.isfinite(step)):
                 if fresh:
                     break
@@ -154,10 +200,11 @@ class _Marcher:
             if not fresh and not norm_new < CHORD_CONTRACTION * norm:
                 self.lu = None
                 continue
+            history.append((norm, fresh and not norm_new < norm))      # no descent
             s, H0, F, f, norm = s_new, H0_new, F_new, f_new, norm_new
             lag = float(np.abs(f.A - A_lag).max())
             if lag > 0.0:              # under-relaxed: the asperity deflection lags
-                A_lag = A_lag + ASPERITY_RELAXATION * (f.A - A_lag)
+                A_lag = A_lag + relax.weight(f.A - A_lag) * (f.A - A_lag)
                 F, f = sysm.residual(s, H0, A_lag)
                 norm = np.abs(F).max()
             if norm < tol and lag < tol:
@@ -165,6 +212,38 @@ class _Marcher:
             if t < 1.0:
                 self.lu = None
         return s, H0, f, self.res.max_iterations, False
+
+    def _direction(self, sysm, s, H0, f, F, A_lag):
+        """(fresh, Newton direction): matrix-free GMRES (``krylov``, always fresh), or the
+        kept dense LU (``dense``: a chord step while it is kept, else a new factorisation)."""
+        if self.res.krylov:
+            return True, self._krylov(sysm, s, H0, f, F, A_lag)
+        fresh = self.lu is None
+        if fresh:
+            with warnings.catch_warnings():     # singular: a non-finite step, handled
+                warnings.simplefilter("ignore", sla.LinAlgWarning)
+                self.lu = sla.lu_factor(sysm.jacobian(s, f), check_finite=False)
+            self.factorisations += 1
+        return fresh, sla.lu_solve(self.lu, -F, check_finite=False)
+
+    def _krylov(self, sysm, s, H0, f, F, A_lag):
+        """A matrix-free direction; the preconditioner (its coarse LU and band LU) is kept
+        across iterations and steps on the same grid while GMRES converges with it in at most
+        ``REUSE_ITERATIONS`` iterations (the analogue of the kept dense LU); once it fails, each
+        direction of the time step builds its own."""
+        same_grid = self.pre_grid == (sysm.X[0], sysm.X.size)
+        kept = self.pre if self.reuse and same_grid else None
+        step, its, pre, ok = krylov_direction(sysm, s, H0, f, F, A_lag, kept)
+        self.krylov_iterations += its
+        if kept is not None and (not ok or its > REUSE_ITERATIONS):
+            self.reuse = False         # not again within this time step
+            step, its, pre, ok = krylov_direction(sysm, s, H0, f, F, A_lag)
+            self.krylov_iterations += its
+            kept = None
+        if kept is None:
+            self.factorisations += 1
+        self.pre, self.pre_grid = pre, (sysm.X[0], sysm.X.size)
+        return step
 
     def _damped(self, sysm, s, H0, step, norm, backtrack, A_lag):
         """The step scaled by t = 1, 1/2, ... until the film stays positive and the residual
@@ -217,7 +296,7 @@ class _Marcher:
             H_c = self._moes(w, R, abs(u)) * R / b**2
         s[[0, -1]] = 0.0
         H0 = H_c - np.interp(0.0, sysm.X, sysm.kernel.deflection(s))
-        s, H0, f, its, ok = self.newton(sysm, s, H0)
+        s, H0, f, its, ok = self.newton(sysm, s, H0, stall=False)
         if not ok:
             raise NotConverged(f"transient EHL: no steady solution at the start (step {k})")
         first = self._state(sysm, f, s, b, p_h, R, x, mirror, None)
@@ -227,8 +306,8 @@ class _Marcher:
         sysm, b, p_h, x, mirror = self.system(w, R, u, 1.0, 1.0, first, steady=True)
         if np.array_equal(x, first.x):
             return first, f, sysm, mirror, b, p_h, its
-        s2, H0_2 = self.guess(sysm, x, p_h, b, R, mirror, first)
-        s2, H0_2, f2, more, ok = self.newton(sysm, s2, H0_2)
+        s2, H0_2, A2 = self.guess(sysm, x, p_h, b, R, mirror, first)
+        s2, H0_2, f2, more, ok = self.newton(sysm, s2, H0_2, stall=False, A0=A2)
         if not ok:      # the first grid's solution stands (the march regrids at its 1st step)
             self.lu = None
             return first, f, first_system, first_mirror, first_b, first_p_h, its
@@ -250,7 +329,7 @@ class _Marcher:
         H = flip(f.H)
         h = H * b**2 / R
         q = flip(f.Q) * b**2 / R
-        st = _State(x, flip(s), q, R, p_h, float(np.interp(0.0, x, h)))
+        st = _State(x, flip(s), q, R, p_h, float(np.interp(0.0, x, h)), a=flip(f.A) * p_h)
         if prev is not None:
             st.q_old, st.x_old, st.R_old = prev.q, prev.x, prev.R
         return st
@@ -262,8 +341,8 @@ class _Marcher:
         w, R, u = float(c.w[k]), float(c.R[k]), float(c.u[k])
         a0 = 1.5 if bdf and state.q_old is not None else 1.0
         sysm, b, p_h, x, mirror = self.system(w, R, u, dt, a0, state)
-        s, H0 = self.guess(sysm, x, p_h, b, R, mirror, state)
-        s, H0, f, its, ok = self.newton(sysm, s, H0)
+        s, H0, A0 = self.guess(sysm, x, p_h, b, R, mirror, state)
+        s, H0, f, its, ok = self.newton(sysm, s, H0, A0=A0)
         if ok:
             return self._state(sysm, f, s, b, p_h, R, x, mirror, state), f, sysm, mirror, \
                 b, p_h, its
@@ -276,6 +355,7 @@ class _Marcher:
         half = self._midpoint(k)
         mid, *_ = half.step(1, state, 0.5 * dt, False, depth + 1)
         self.factorisations += half.factorisations
+        self.krylov_iterations += half.krylov_iterations
         self.split_steps += half.split_steps
         mid.q_old = None
         return self.step(k, mid, 0.5 * dt, False, depth + 1)
@@ -289,5 +369,6 @@ class _Marcher:
         sub = _Marcher.__new__(_Marcher)
         sub.__dict__.update(self.__dict__)
         sub.c = CycleContact(**{**c.__dict__, **mid})
-        sub.lu, sub.factorisations, sub.split_steps = None, 0, 0
+        sub.lu, sub.factorisations, sub.split_steps, sub.krylov_iterations = None, 0, 0, 0
+        sub.pre = None
         return sub

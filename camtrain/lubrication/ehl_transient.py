@@ -21,9 +21,10 @@ by semismooth Newton in (s, H0) on a grid of its own:
   the inputs, e.g. a lift law whose acceleration jumps, so that the radius and the load jump
   within one step) the march restarts there from the steady solution and lists the step in
   ``restarts`` (the film law warns).
-* **Newton**: dense Jacobian (elastic block from the Toeplitz influence matrix), its LU kept
-  across iterations and steps while each step at least halves the residual (chord steps),
-  backtracking on the residual norm otherwise.
+* **Newton**: backtracking on the residual norm; the direction (``linear_solver``) matrix-free
+  by GMRES with a two-level preconditioner (:mod:`.ehl_step_krylov`, from 384 nodes under
+  ``auto``), or from the dense Jacobian (elastic block from the Toeplitz influence matrix),
+  its LU kept across iterations and steps while each step at least halves the residual.
 
 Friction (per unit width, times the width): the Couette shear of the liquid film,
 tau = tau_0 asinh(eta |u_s| / (h tau_0)) (Eyring; Johnson & Tevaarwerk 1977) on the liquid
@@ -110,6 +111,7 @@ def march_ehl_cycle(contact: CycleContact, resolution: CycleResolution | None = 
             first = out.h_central[k]
         _record(out, k, c, state, f, sysm, mirror, b, p_h, its, m.a_coef)
     out.factorisations, out.split_steps = m.factorisations, m.split_steps
+    out.krylov_iterations = m.krylov_iterations
     if h_start is None:
         out.period_error = float(abs(out.h_central[start] - first) / first)
     return out
