@@ -37,6 +37,7 @@ import scipy.linalg as sla
 
 from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
+from camtrain.numerics.blas_threads import one_blas_thread
 
 from .ehl_elastic import ElasticKernel
 from .ehl_krylov import krylov_step
@@ -230,6 +231,7 @@ def _damped(problem, P, H0, step, norm, backtrack):
         t *= 0.5
 
 
+@one_blas_thread()   # small dense factorisations in a loop: see numerics.blas_threads
 def solve_ehl_line(contact: LineContact,
                    resolution: EHLResolution = EHLResolution()) -> EHLSolution:
     """Solve the steady EHL line contact (module docstring); raises :class:`NotConverged`."""

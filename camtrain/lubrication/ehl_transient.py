@@ -37,6 +37,8 @@ import math
 
 import numpy as np
 
+from camtrain.numerics.blas_threads import one_blas_thread
+
 from .asperity import asperity_area_fraction, asperity_pressure
 from .ehl_cycle_records import MARCHES, CycleContact, CycleResolution, EHLCycle, _State
 from .ehl_line import NotConverged
@@ -65,6 +67,7 @@ def _friction(c: CycleContact, k, f, sysm, b, p_h, R, coef):
     return c.width * float(fluid), c.width * float(boundary)
 
 
+@one_blas_thread()   # small dense factorisations in a loop: see numerics.blas_threads
 def march_ehl_cycle(contact: CycleContact, resolution: CycleResolution | None = None,
                     h_start: float | None = None) -> EHLCycle:
     """March the transient EHL contact over one period of steps (module docstring).
