@@ -26,15 +26,16 @@ from collections import namedtuple
 import numpy as np
 
 __all__ = ["Unilateral", "Train", "Inputs", "CamLaw", "Marched", "TrainState", "Hydraulic",
-           "unilateral", "linear_law"]
+           "Spin", "unilateral", "linear_law"]
 
 #: the unilateral contacts (cam, seat) of a train: k [N/m], c [N s/m], off [m] (arrays of 2)
 Unilateral = namedtuple("Unilateral", "k c off")
 
 #: the single train's linear part M u'' + C u' + K u = f0 (``m`` the lumped masses [kg]), the
 #: node each unilateral contact acts on, each contact's closing threshold ``thr`` [N] and its
-#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one)
-Train = namedtuple("Train", "m K C f0 node thr hla")
+#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one) and its roller's
+#: spin ``roller`` (a :data:`Spin`, ``on`` 0 without one)
+Train = namedtuple("Train", "m K C f0 node thr hla roller")
 
 #: a hydraulic lash adjuster between the ``f`` (body) and ``q`` (plunger) nodes
 #: (:mod:`camtrain.dynamics.hla`, SI, pressures gauge): plunger motion per valve-referred motion
@@ -47,6 +48,14 @@ Hydraulic = namedtuple("Hydraulic", "on f q ratio area v_dead x_rest stroke w0 k
                        "c_couette p_supply p_crack check_k full_open k_liq air n_poly p_floor "
                        "theta")
 
+#: a roller turning on its pin, marched with the train (:mod:`camtrain.dynamics.spin`, SI):
+#: ``radius``, spin ``inertia``; tables: normalised ``grid``, load levels ``loads``, ``traction``
+#: (angles, loads, grid) at sliding speeds ``sliding_scale[angle] * grid``, ``pin`` torque
+#: (loads, grid) at roller speeds ``speed_scale * grid``, ``v_s0`` per grid angle; at the step
+#: times of the batch: the fractional grid position ``pos`` and the load ratio ``ratio``
+Spin = namedtuple("Spin", "on radius inertia grid loads traction sliding_scale pin speed_scale "
+                  "v_s0 pos ratio")
+
 #: the contacts' inputs b [m] and b' [m/s] (contacts, steps + 1) at the step times of a batch,
 #: the step ``dt`` [s], the output ``stride`` (steps per sample) and the batch's start time t0
 Inputs = namedtuple("Inputs", "b bd dt stride t0")
@@ -57,14 +66,16 @@ CamLaw = namedtuple("CamLaw", "law hz rad rat")
 
 #: the march's samples every stride: displacement, velocity, acceleration (n, samples), contact
 #: forces (2, samples), its events: time, kind (2 j + closing), approach speed, and the
-#: adjuster's chamber pressure, check-valve and leak flows, plunger extension ``h`` (4, samples)
-Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h")
+#: adjuster's chamber pressure, check-valve and leak flows, plunger extension ``h`` (4, samples),
+#: the roller's speed [rad/s], sliding speed [m/s] and traction [N] ``r`` (3, samples)
+Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h r")
 
 #: the single train's state, updated in place: u, v, a, the contact states ``act``; the
 #: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``; the
 #: adjuster's chamber ``hp`` = (pressure [Pa], check-valve flow, leak flow [m^3/s], the last
-#: step's pressure rate [Pa/s]: the chamber solve's first guess)
-TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp")
+#: step's pressure rate [Pa/s]: the chamber solve's first guess); the roller's ``wr`` = (speed
+#: [rad/s], sliding speed [m/s], traction [N])
+TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp wr")
 
 
 def unilateral(model) -> Unilateral:

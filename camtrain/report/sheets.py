@@ -52,7 +52,8 @@ SHEETS = {
                                                      "pressure_over_hertz"]),
     "profile": ("Cam profile and film around it", ["profile"]),
     "dynamics": ("Valve-train dynamics", [
-        "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),
+        "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces",
+        "roller_spin"]),
     "camshaft": ("Elastic camshaft: bearing loads, orders, lobes", [
         "shaft_reactions", "shaft_orders", "lobe_loads", "lobe_motion", "lobe_twist"]),
 }
