@@ -86,14 +86,19 @@ def spin_tables(deck, kin, load_cap: float):
     n = v0.size
     vmax = float(np.max(np.abs(v0)))
     scale = np.abs(v0) + vmax + 1e-12
-    idx = np.repeat(np.arange(n), grid.size)
-    sliding = (scale[:, None] * grid[None, :]).ravel()
+    # the angles of equal contact kinematics (a dwell) share their rows: computed once
+    key = np.stack([np.broadcast_to(np.asarray(a, dtype=float), v0.shape)
+                    for a in (kin.v_cam, kin.sliding, kin.radius_x, kin.radius_y)], axis=1)
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    idx = np.repeat(first, grid.size)
+    sliding = (scale[first, None] * grid[None, :]).ravel()
     table = np.zeros((n, loads.size, grid.size))
     for level, w in enumerate(loads[1:], start=1):
         load = np.full(n, w)
         traction = Traction(contact, kin, load, contact.hertz(kin, load), r.traction,
                             r.rolling_resistance)
-        table[:, level, :] = traction.force(sliding, idx).reshape(n, grid.size)
+        rows = traction.force(sliding, idx).reshape(first.size, grid.size)
+        table[:, level, :] = rows[np.ravel(inverse)]
     speed_scale = 2.0 * (vmax / radius + 1e-12)
     speeds = np.broadcast_to(speed_scale * grid[None, :], (loads.size, grid.size))
     pin = pin_of(deck).torque(speeds, np.broadcast_to(loads[:, None], speeds.shape))

@@ -51,10 +51,16 @@ def spin_record(tables: RollerTables, angles: np.ndarray) -> Spin:
     n = tables.theta.size
     wrapped = np.mod(pos, n)
     ratio = np.interp(wrapped, np.arange(n + 1), np.append(tables.ratio, tables.ratio[0]))
-    return Spin(1, float(tables.radius), float(tables.inertia), tables.grid, tables.loads,
-                np.ascontiguousarray(tables.traction), tables.sliding_scale,
-                np.ascontiguousarray(tables.pin), float(tables.speed_scale), tables.v_s0,
-                np.ascontiguousarray(pos), np.ascontiguousarray(ratio))
+    return Spin(1, float(tables.radius), float(tables.inertia), _plain(tables.grid),
+                _plain(tables.loads), _plain(tables.traction), _plain(tables.sliding_scale),
+                _plain(tables.pin), float(tables.speed_scale), _plain(tables.v_s0), _plain(pos),
+                _plain(ratio))
+
+
+def _plain(values) -> np.ndarray:
+    """A writable C-contiguous float64 copy: one compiled specialization of the march for every
+    train (a read-only or strided array would compile another)."""
+    return np.array(values, dtype=np.float64, order="C", copy=True)
 
 
 def no_roller() -> Spin:

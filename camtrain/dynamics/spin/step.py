@@ -4,9 +4,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-#: bisections of the backward-Euler residual per step (the bracket shrinks 2^-50: below round-off
-#: of the rolling speed)
-BISECTIONS = 50
+from camtrain.numerics.roots import false_position, illinois_update
+
+#: most evaluations of the backward-Euler residual per step, and the bracket or last move
+#: (relative to the speeds bracketed) at which the speed counts as found
+ITERATIONS = 80
+TOLERANCE = 1e-13
 
 
 @njit(cache=True)
@@ -54,6 +57,55 @@ def _balance(sp, i, j, ta, lev, tl, v0, w0, w1, h):
 
 
 @njit(cache=True)
+def _nodes(sp, i, j, ta, lev, tl, v0, w0, h, br, a, b):
+    """Narrow the bracket ``br`` = (lo, g_lo, hi, g_hi) by bisection over the table nodes that
+    fall inside it, the node k at speed w = a + b grid[k] (a traction table: a = V_s0/r,
+    b = -scale/r; the pin's: a = 0, b = its speed scale)."""
+    x1, x2 = (br[0] - a) / b, (br[2] - a) / b
+    k1 = np.searchsorted(sp.grid, min(x1, x2), side="right")
+    k2 = np.searchsorted(sp.grid, max(x1, x2), side="left") - 1
+    while k1 <= k2 and br[1] != 0.0 and br[3] != 0.0:
+        km = (k1 + k2) // 2
+        wm = a + b * sp.grid[km]
+        if not br[0] < wm < br[2]:
+            return
+        gm = _balance(sp, i, j, ta, lev, tl, v0, w0, wm, h)[0]
+        if gm <= 0.0:
+            br[0], br[1] = wm, gm
+        else:
+            br[2], br[3] = wm, gm
+        if (gm <= 0.0) == (b > 0.0):   # the root at larger node indices
+            k1 = km + 1
+        else:
+            k2 = km - 1
+
+
+@njit(cache=True)
+def _root(sp, i, j, ta, lev, tl, v0, w0, h, lo, g_lo, hi, g_hi):
+    """The speed where the balance (increasing, g_lo <= 0 <= g_hi) vanishes: Illinois regula
+    falsi (:mod:`camtrain.numerics.roots`; the tables are piecewise linear, so the secant is
+    exact on a piece) until the residual is TOLERANCE x the bracket's residuals, or the bracket
+    or the last move TOLERANCE x the speeds' size; the end nearer the root when it stops."""
+    width = TOLERANCE * (abs(lo) + abs(hi)) + 1e-300
+    small = TOLERANCE * (abs(g_lo) + abs(g_hi))
+    x = lo if abs(g_lo) < abs(g_hi) else hi
+    side = 0
+    for _ in range(ITERATIONS):
+        if min(abs(g_lo), abs(g_hi)) <= small or hi - lo <= width:
+            break
+        last = x
+        x = false_position(lo, g_lo, hi, g_hi)
+        if not lo < x < hi:   # the secant lands on an end within round-off
+            break
+        gx = _balance(sp, i, j, ta, lev, tl, v0, w0, x, h)[0]
+        if abs(gx) <= small or abs(x - last) <= width:
+            return x
+        lo, g_lo, hi, g_hi, side = illinois_update(lo, g_lo, hi, g_hi, x, gx, side)
+        x = lo if abs(g_lo) < abs(g_hi) else hi
+    return x
+
+
+@njit(cache=True)
 def spin_step(sp, wr, n, tau, dt, h, force):
     """The roller's state ``wr`` = (speed, sliding, traction) advanced in place over a (sub)step
     of length h ending at time tau into step n (dt the full step), under the valve-referred cam
@@ -73,23 +125,37 @@ def spin_step(sp, wr, n, tau, dt, h, force):
     v0 = (1.0 - ta) * sp.v_s0[i] + ta * sp.v_s0[j]
     w0 = wr[0]
     ws = v0 / sp.radius
-    lo = min(w0, 0.0, ws)
-    hi = max(w0, 0.0, ws)
-    span = hi - lo
-    lo -= 1e-9 * span + 1e-300
-    hi += 1e-9 * span + 1e-300
+    # the root lies between the last speed and rolling as a rule: bracket it there, else widen
+    lo, hi = min(w0, ws), max(w0, ws)
     g_lo = _balance(sp, i, j, ta, lev, tl, v0, w0, lo, h)[0]
     g_hi = _balance(sp, i, j, ta, lev, tl, v0, w0, hi, h)[0]
     if g_lo == 0.0 and g_hi == 0.0:
         # nothing acts on a roller without inertia (unloaded, frictionless pin): it rolls
-        w1 = w0 if sp.inertia > 0.0 else ws
-    else:
-        for _ in range(BISECTIONS):
-            mid = 0.5 * (lo + hi)
-            if _balance(sp, i, j, ta, lev, tl, v0, w0, mid, h)[0] > 0.0:
-                hi = mid
-            else:
-                lo = mid
-        w1 = 0.5 * (lo + hi)
+        wr[0], wr[1], wr[2] = (w0 if sp.inertia > 0.0 else ws), v0 - sp.radius * ws, 0.0
+        return
+    span = hi - lo + 1e-6 * (abs(w0) + abs(ws)) + 1e-12
+    for _ in range(ITERATIONS):
+        if g_lo <= 0.0:
+            break
+        hi, g_hi = lo, g_lo
+        lo -= span
+        span *= 2.0
+        g_lo = _balance(sp, i, j, ta, lev, tl, v0, w0, lo, h)[0]
+    for _ in range(ITERATIONS):
+        if g_hi >= 0.0:
+            break
+        lo, g_lo = hi, g_hi
+        hi += span
+        span *= 2.0
+        g_hi = _balance(sp, i, j, ta, lev, tl, v0, w0, hi, h)[0]
+    br = np.array([lo, g_lo, hi, g_hi])
+    # the residual is linear between the tables' nodes: narrow the bracket to one piece of each
+    # table (a secant across the steep piece at zero sliding would crawl), then the secant
+    _nodes(sp, i, j, ta, lev, tl, v0, w0, h, br, ws, -sp.sliding_scale[i] / sp.radius)
+    _nodes(sp, i, j, ta, lev, tl, v0, w0, h, br, ws, -sp.sliding_scale[j] / sp.radius)
+    _nodes(sp, i, j, ta, lev, tl, v0, w0, h, br, 0.0, sp.speed_scale)
+    lo, g_lo, hi, g_hi = br[0], br[1], br[2], br[3]
+    w1 = lo if g_lo == 0.0 else (hi if g_hi == 0.0 else
+                                 _root(sp, i, j, ta, lev, tl, v0, w0, h, lo, g_lo, hi, g_hi))
     _, u, f = _balance(sp, i, j, ta, lev, tl, v0, w0, w1, h)
     wr[0], wr[1], wr[2] = w1, u, f
