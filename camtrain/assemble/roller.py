@@ -67,13 +67,14 @@ def marches_roller(deck) -> bool:
 def spin_tables(deck, kin, load_cap: float):
     """The roller's traction and pin tables on the kinematics' grid (SI) for the march: the
     roller effect's traction law (:class:`camtrain.roller.traction.Traction`) at
-    ``dynamics.roller_load_levels`` uniform loads from 0 to ``load_cap`` [N] and
+    ``dynamics.roller_load_levels`` loads from 0 to ``load_cap`` [N] uniform in sqrt(W) (the Hertz pressure and width go as sqrt(W)) and
     ``dynamics.roller_table_points`` sliding speeds clustered at zero (the grid of the roller's
     own inertial march), its pin torque at the same loads and as many roller speeds."""
     import numpy as np
 
     from camtrain.contact.model import CamContact
     from camtrain.dynamics.spin import RollerTables
+    from camtrain.dynamics.spin.step import LEVEL_POWER
     from camtrain.roller.solve import clustered_grid
     from camtrain.roller.traction import Traction
 
@@ -81,7 +82,7 @@ def spin_tables(deck, kin, load_cap: float):
     contact = CamContact.from_deck(deck)
     radius = float(np.max(kin.follower_radius))
     grid = clustered_grid(deck.dynamics.roller_table_points)
-    loads = np.linspace(0.0, load_cap, deck.dynamics.roller_load_levels)
+    loads = load_cap * np.linspace(0.0, 1.0, deck.dynamics.roller_load_levels) ** LEVEL_POWER
     v0 = np.asarray(kin.sliding, dtype=float)
     n = v0.size
     vmax = float(np.max(np.abs(v0)))

@@ -116,9 +116,9 @@ class Dynamics:
         "Newmark step; newmark integrator only) or after (only the roller effect solves it, "
         "from the train's load after the march)", default="marched")
     roller_load_levels: int = quantity(
-        "Load levels of the marched roller's traction and pin-torque tables, uniform from 0 to "
-        "3 x the rigid train's largest load (linear between levels)", "-", default=9, ge=3,
-        le=201, example=9)
+        "Load levels of the marched roller's traction and pin-torque tables, from 0 to "
+        "3 x the rigid train's largest load, uniform and linear in the square root of the load",
+        "-", default=17, ge=3, le=201, example=17)
     roller_table_points: int = quantity(
         "Sliding speeds (and roller speeds) of the marched roller's traction and pin-torque "
         "tables, clustered at zero sliding", "-", default=101, ge=21, le=100001, example=101)

@@ -10,6 +10,8 @@ from camtrain.numerics.roots import false_position, illinois_update
 #: (relative to the speeds bracketed) at which the speed counts as found
 ITERATIONS = 80
 TOLERANCE = 1e-13
+#: the load levels are uniform in W^(1/LEVEL_POWER), finer at light load (spin_tables)
+LEVEL_POWER = 3.0
 
 
 @njit(cache=True)
@@ -27,31 +29,40 @@ def _row(grid, values, x):
 
 @njit(cache=True)
 def _level(loads, load):
-    """Load level below ``load`` and the blend to the next (held at the last level)."""
+    """Load level below ``load`` (the levels are uniform in sqrt(W):
+    :func:`camtrain.assemble.roller.spin_tables`), the blend to the next in sqrt(W) and in W
+    (held at the last level)."""
     top = loads.size - 2
-    x = load / loads[loads.size - 1] * (loads.size - 1)
+    x = (load / loads[loads.size - 1]) ** (1.0 / LEVEL_POWER) * (loads.size - 1)
     if x <= 0.0:
-        return 0, 0.0
+        return 0, 0.0, 0.0
     lev = min(int(x), top)
-    return lev, min(x - lev, 1.0)
+    return lev, min(x - lev, 1.0), min((load - loads[lev]) / (loads[lev + 1] - loads[lev]), 1.0)
 
 
 @njit(cache=True)
 def _traction(sp, a, lev, tl, u):
-    """The traction table of grid angle ``a`` at sliding speed u, blended between load levels."""
+    """The traction table of grid angle ``a`` at sliding speed u, between two load levels
+    geometrically at the blend ``tl`` in sqrt(W) (exact for a traction exponential in the Hertz
+    pressure, as the Barus shear is; linear where a level carries none)."""
     x = u / sp.sliding_scale[a]
-    return ((1.0 - tl) * _row(sp.grid, sp.traction[a, lev], x)
-            + tl * _row(sp.grid, sp.traction[a, lev + 1], x))
+    f0 = _row(sp.grid, sp.traction[a, lev], x)
+    f1 = _row(sp.grid, sp.traction[a, lev + 1], x)
+    if f0 * f1 > 0.0:
+        return np.sign(f0) * np.exp((1.0 - tl) * np.log(abs(f0)) + tl * np.log(abs(f1)))
+    return (1.0 - tl) * f0 + tl * f1
 
 
 @njit(cache=True)
 def _balance(sp, i, j, ta, lev, tl, v0, w0, w1, h):
     """J (w1 - w0)/h - r F_t(u_s) + T_pin(w1) at angle blend ``ta`` between grid angles i, j
-    and load blend ``tl`` above level ``lev`` (h = 0: the quasi-static balance)."""
+    and load level ``lev`` with blends ``tl`` = (in sqrt(W), in W) (h = 0: the quasi-static
+    balance). The pin torque is linear in W between levels (exact for the needle's M_0 + M_1)."""
     u = v0 - sp.radius * w1
-    f = (1.0 - ta) * _traction(sp, i, lev, tl, u) + ta * _traction(sp, j, lev, tl, u)
+    ts, tw = tl
+    f = (1.0 - ta) * _traction(sp, i, lev, ts, u) + ta * _traction(sp, j, lev, ts, u)
     x = w1 / sp.speed_scale
-    tp = (1.0 - tl) * _row(sp.grid, sp.pin[lev], x) + tl * _row(sp.grid, sp.pin[lev + 1], x)
+    tp = (1.0 - tw) * _row(sp.grid, sp.pin[lev], x) + tw * _row(sp.grid, sp.pin[lev + 1], x)
     inertial = sp.inertia * (w1 - w0) / h if h > 0.0 else 0.0
     return inertial - sp.radius * f + tp, u, f
 
@@ -121,7 +132,8 @@ def spin_step(sp, wr, n, tau, dt, h, force):
     if i < 0:
         i += size
     j = (i + 1) % size
-    lev, tl = _level(sp.loads, load)
+    lev, ts, tw = _level(sp.loads, load)
+    tl = (ts, tw)
     v0 = (1.0 - ta) * sp.v_s0[i] + ta * sp.v_s0[j]
     w0 = wr[0]
     ws = v0 / sp.radius
