@@ -67,9 +67,10 @@ def marches_roller(deck) -> bool:
 def spin_tables(deck, kin, load_cap: float):
     """The roller's traction and pin tables on the kinematics' grid (SI) for the march: the
     roller effect's traction law (:class:`camtrain.roller.traction.Traction`) at
-    ``dynamics.roller_load_levels`` loads from 0 to ``load_cap`` [N] uniform in sqrt(W) (the Hertz pressure and width go as sqrt(W)) and
+    ``dynamics.roller_load_levels`` loads from 0 to ``load_cap`` [N], uniform in W^(1/3)
+    (LEVEL_POWER: finer at light load, where the roller slips most), and
     ``dynamics.roller_table_points`` sliding speeds clustered at zero (the grid of the roller's
-    own inertial march), its pin torque at the same loads and as many roller speeds."""
+    own inertial march); its pin torque at the same loads and as many roller speeds."""
     import numpy as np
 
     from camtrain.contact.model import CamContact

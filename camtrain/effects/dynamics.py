@@ -82,11 +82,11 @@ def _separations(res, found) -> None:
 def _lash_adjuster(deck, run_setup, resp, res) -> None:
     """A hydraulic lash adjuster's columns, metrics and pump-up warning; the lift loss against
     the same train with the constant-load adjuster, marched alike."""
+    from dataclasses import replace
+
     from camtrain.dynamics import march
     from camtrain.dynamics.hla import rigid_adjuster
     from camtrain.dynamics.hla.findings import adjuster_findings, adjuster_rows
-
-    from dataclasses import replace
 
     model = run_setup.model
     rigid = march(replace(rigid_adjuster(model), roller=None), run_setup.cam, run_setup.base,

@@ -163,3 +163,19 @@ def test_a_marched_roller_needs_the_newmark_integrator():
     assert "dynamics.integrator" in str(err.value)
     after = api.load(FINGER, DYNAMICS + ("dynamics.integrator=lsoda", "dynamics.roller=after"))
     assert after.model.dynamics.roller == "after"
+
+
+@pytest.mark.derived
+def test_the_train_carries_the_finger_and_the_rollers_swing_at_the_valve(finger):
+    """The finger's inertia about its pivot and the roller's mass at its centre (m_r A^2) are
+    in the elastic train's masses, reduced to the valve by the arm B (Teodorescu 2005 eqs
+    A1-A3, I / B^2), beside the valve side and the finger's own valve-referred mass: the total
+    is the rigid train's; the roller's spin inertia is not a mass of the train."""
+    deck, kin = finger
+    model = setup(deck, kin).model
+    lever = deck.mechanism.dyson()
+    m = deck.masses
+    swing = (m.rocker_inertia + deck.mechanism.roller.mass * lever.A ** 2) / lever.B ** 2
+    assert model.total_mass() == pytest.approx(m.valve_side + m.follower + swing, rel=1e-12)
+    assert model.roller.inertia == pytest.approx(
+        0.5 * deck.mechanism.roller.mass * model.roller.radius ** 2, rel=1e-12)

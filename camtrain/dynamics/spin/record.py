@@ -13,7 +13,7 @@ class RollerTables:
     """The roller's data on the run's cam-angle grid (SI), plain arrays.
 
     ``theta`` the grid angles [rad] (uniform, one revolution); ``grid`` normalised abscissae in
-    [-1, 1] (clustered at 0); ``loads`` [N] the load levels from 0, uniform in sqrt(W), of the traction and
+    [-1, 1] (clustered at 0); ``loads`` [N] the load levels from 0, uniform in W^(1/3), of the traction and
     pin tables; ``traction`` [N] (angles, loads, grid) at sliding speeds
     ``sliding_scale[angle] * grid`` [m/s]; ``pin`` [N m] (loads, grid) at roller speeds
     ``speed_scale * grid`` [rad/s]; ``v_s0`` [m/s] the non-rotating follower's sliding speed

@@ -29,9 +29,9 @@ def _row(grid, values, x):
 
 @njit(cache=True)
 def _level(loads, load):
-    """Load level below ``load`` (the levels are uniform in sqrt(W):
-    :func:`camtrain.assemble.roller.spin_tables`), the blend to the next in sqrt(W) and in W
-    (held at the last level)."""
+    """Load level below ``load`` (the levels are uniform in W^(1/LEVEL_POWER):
+    :func:`camtrain.assemble.roller.spin_tables`), the blend to the next in that abscissa and
+    in W (held at the last level)."""
     top = loads.size - 2
     x = (load / loads[loads.size - 1]) ** (1.0 / LEVEL_POWER) * (loads.size - 1)
     if x <= 0.0:
@@ -43,8 +43,9 @@ def _level(loads, load):
 @njit(cache=True)
 def _traction(sp, a, lev, tl, u):
     """The traction table of grid angle ``a`` at sliding speed u, between two load levels
-    geometrically at the blend ``tl`` in sqrt(W) (exact for a traction exponential in the Hertz
-    pressure, as the Barus shear is; linear where a level carries none)."""
+    geometrically at the blend ``tl`` in the levels' abscissa W^(1/3) (the Barus shear grows
+    exponentially with the Hertz pressure; see the package), linearly where a level carries
+    none."""
     x = u / sp.sliding_scale[a]
     f0 = _row(sp.grid, sp.traction[a, lev], x)
     f1 = _row(sp.grid, sp.traction[a, lev + 1], x)
@@ -56,7 +57,7 @@ def _traction(sp, a, lev, tl, u):
 @njit(cache=True)
 def _balance(sp, i, j, ta, lev, tl, v0, w0, w1, h):
     """J (w1 - w0)/h - r F_t(u_s) + T_pin(w1) at angle blend ``ta`` between grid angles i, j
-    and load level ``lev`` with blends ``tl`` = (in sqrt(W), in W) (h = 0: the quasi-static
+    and load level ``lev`` with blends ``tl`` = (in W^(1/3), in W) (h = 0: the quasi-static
     balance). The pin torque is linear in W between levels (exact for the needle's M_0 + M_1)."""
     u = v0 - sp.radius * w1
     ts, tw = tl
