@@ -200,6 +200,12 @@ def dynamics_problems(deck) -> list[Problem]:
                            f"{d.speed_oscillation * 30.0 / 3.141592653589793:g} rpm",
                            "0 (and speed_amplitude, speed_order in [camshaft.flexibility])"))
     roller = getattr(deck, "roller", None)
+    if (roller is not None and roller.pin != "locked" and shaft is not None
+            and getattr(shaft, "coupling", "one_way") == "two_way"):
+        out.append(Problem("camshaft.flexibility.coupling", "the two-way coupled march takes "
+                           "the cam contact's sliding friction: a turning roller's traction is "
+                           "not in it", "two_way", "one_way with a [roller] section (or "
+                           "roller.pin = \"locked\")"))
     if (roller is not None and d.roller == "marched" and roller.pin != "locked"
             and d.integrator != "newmark"):
         out.append(Problem("dynamics.integrator", "the roller's speed is marched by the newmark "

@@ -179,3 +179,17 @@ def test_the_train_carries_the_finger_and_the_rollers_swing_at_the_valve(finger)
     assert model.total_mass() == pytest.approx(m.valve_side + m.follower + swing, rel=1e-12)
     assert model.roller.inertia == pytest.approx(
         0.5 * deck.mechanism.roller.mass * model.roller.radius ** 2, rel=1e-12)
+
+
+def test_a_turning_roller_is_refused_by_the_two_way_coupled_camshaft():
+    """The coupled march's contact friction is the sliding contact's, not the roller's
+    traction: the deck says so instead of running a roller as a sliding follower."""
+    from camtrain.deck.schema_dynamics import dynamics_problems
+
+    deck = _deck()
+    shaft = type("Flexibility", (), {"coupling": "two_way"})()
+    camshaft = type("Camshaft", (), {"flexibility": shaft})()
+    fields = [p.path for p in dynamics_problems(replace(deck, camshaft=camshaft))]
+    assert "camshaft.flexibility.coupling" in fields
+    locked = replace(deck, camshaft=camshaft, roller=replace(deck.roller, pin="locked"))
+    assert "camshaft.flexibility.coupling" not in [p.path for p in dynamics_problems(locked)]
