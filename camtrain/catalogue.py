@@ -54,7 +54,8 @@ class EffectSpec:
     #: the cycle panels this effect feeds only when it ran a given model, as (model, panels)
     #: pairs: the model is the one its plan step records (``Step.model``, the module's
     #: ``model(deck, planned)``; the film's ``tribology.film_model`` as it ran), so a steady
-    #: film declares none of the transient film's panels whatever columns a result holds
+    #: film declares none of the transient film's panels whatever columns a result holds; an
+    #: effect that ran several optional parts records them joined by "+" ("lash_adjuster+roller")
     model_panels: tuple[tuple[str, tuple[str, ...]], ...] = ()
     #: the resolution knobs of ``camtrain accuracy`` that change this effect's numbers, by name
     #: (camtrain.study.accuracy_knobs.KNOBS; a knob's own test on the deck narrows it further)
@@ -133,12 +134,13 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                needs=("TrainKinematics",), produces=("ContactLoad",), rank=1,
                key_metrics=("load_max", "dynamic_load_ratio", "separations", "jumps",
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
-                            "valve_acceleration_max"),
+                            "valve_acceleration_max", "roller_slip_max_marched"),
                panels=("load", "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"),
                optional_columns=("spring_force_retainer",),
                sheets=("contact", "dynamics", "lash_adjuster"),
                model_panels=(("lash_adjuster", LASH_ADJUSTER_PANELS),
-                             ("lash_adjuster_ball", LASH_ADJUSTER_PANELS + ("check_lift",))),
+                             ("lash_adjuster_ball", LASH_ADJUSTER_PANELS + ("check_lift",)),
+                             ("roller", ("roller_spin",))),
                knobs=("steps_per_degree", "spring_elements", "dynamics_rtol",
                       "adjuster_cycles"),
                accuracy_metrics=("load_max", "separation_angle", "hla_pressure_max",
@@ -418,7 +420,9 @@ def declared_panels(plan) -> frozenset[str]:
         spec = getattr(step, "spec", None) or by_name.get(step.effect)
         if step.chosen and spec is not None:
             panels.update(spec.panels)
-            panels.update(dict(spec.model_panels).get(getattr(step, "model", ""), ()))
+            by_model = dict(spec.model_panels)
+            for part in (getattr(step, "model", "") or "").split("+"):
+                panels.update(by_model.get(part, ()))
     return frozenset(panels)
 
 

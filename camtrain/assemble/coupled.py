@@ -17,7 +17,7 @@ def coupled_problem(deck, kin, rigid_load, lobe_positions, theta):
 
     cs, f = deck.camshaft, deck.camshaft.flexibility
     lobes = [lobe for lobe in cs.lobes if lobe.bank == 1]
-    run_setup = setup(deck, kin)
+    run_setup = setup(deck, kin, spin=False)   # the coupled march carries no roller spin
     coupling = Coupling(f.coupling_solver, f.coupling_tolerance, f.coupling_passes,
                         f.relaxation, f.coupling_method, f.coupling_preconditioner,
                         f.coupling_start, f.coupling_predictor, f.coupling_iterations)

@@ -117,6 +117,22 @@ def build_model(deck, *, stiffness_scale: float = 1.0, kin=None) -> TrainModel:
     return with_lash_adjuster(model, lash_adjuster(deck), adjuster_ratio(deck, kin))
 
 
+def with_roller(deck, kin, model: TrainModel, omega: float | None = None) -> TrainModel:
+    """The train with its roller's spin tables (:mod:`camtrain.dynamics.spin`) when the deck
+    marches the roller (:func:`camtrain.assemble.roller.marches_roller`), else unchanged. The
+    tables reach LOAD_CAP_FACTOR x the rigid train's largest load at that speed."""
+    from dataclasses import replace
+
+    from camtrain.assemble.roller import LOAD_CAP_FACTOR, marches_roller, spin_tables
+
+    if not marches_roller(deck):
+        return model
+    import numpy as np
+
+    cap = LOAD_CAP_FACTOR * max(float(np.max(rigid_load(deck, kin, omega))), 1.0)
+    return replace(model, roller=spin_tables(deck, kin, cap))
+
+
 def lash_adjuster(deck):
     """The deck's [dynamics.lash_adjuster] as a :class:`camtrain.dynamics.hla.LashAdjuster`
     (SI; the annulus' oil the lubricant's unless the section names a viscosity)."""
@@ -209,10 +225,14 @@ def time_base(deck, omega: float | None = None) -> TimeBase:
 
 
 def setup(deck, kin, *, stiffness_scale: float = 1.0, omega: float | None = None,
-          overrides: dict | None = None) -> DynamicSetup:
-    """Model, cam input (the kinematics' valve lift), time base and settings of a run."""
+          overrides: dict | None = None, spin: bool = True) -> DynamicSetup:
+    """Model, cam input (the kinematics' valve lift), time base and settings of a run; with
+    ``spin`` the roller's spin marched with the train where the deck asks for it
+    (:func:`with_roller`)."""
     d = deck.dynamics
     model = build_model(deck, stiffness_scale=stiffness_scale, kin=kin)
+    if spin:
+        model = with_roller(deck, kin, model, omega)
     geometry = {}
     if model.cam_law is not None:
         geometry = {"radius": kin.cam_radius, "ratio": kin.rocker_ratio}
@@ -284,7 +304,8 @@ def separation_check(deck, kin, *, stiffness_scale: float = 1.0, overrides: dict
     from camtrain.dynamics.findings import findings
 
     def separates(omega):
-        s = setup(deck, kin, stiffness_scale=stiffness_scale, omega=omega, overrides=overrides)
+        s = setup(deck, kin, stiffness_scale=stiffness_scale, omega=omega, overrides=overrides,
+                  spin=False)
         flights = [x for x in findings(march(s.model, s.cam, s.base, s.settings)).separations
                    if x.in_flight]
         if not flights:

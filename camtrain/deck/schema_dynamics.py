@@ -110,6 +110,18 @@ class Dynamics:
     stability_factor: float = quantity(
         "Central difference: the step may be at most this fraction of 2/omega_max", "-",
         default=0.8, gt=0, le=1)
+    roller: Literal["marched", "after"] = option(
+        "A deck with [roller]: marched (the roller's speed on its pin is a state of the "
+        "elastic train's march, driven by the marched contact force: backward Euler in the "
+        "Newmark step; newmark integrator only) or after (only the roller effect solves it, "
+        "from the train's load after the march)", default="marched")
+    roller_load_levels: int = quantity(
+        "Load levels of the marched roller's traction and pin-torque tables, from 0 to "
+        "3 x the rigid train's largest load, uniform and linear in the square root of the load",
+        "-", default=17, ge=3, le=201, example=17)
+    roller_table_points: int = quantity(
+        "Sliding speeds (and roller speeds) of the marched roller's traction and pin-torque "
+        "tables, clustered at zero sliding", "-", default=101, ge=21, le=100001, example=101)
     lash_adjuster: LashAdjusterSection | None = section(
         "Hydraulic lash adjuster marched with the train (plunger, chamber, leak-down, check "
         "valve); without it a lash adjuster is clearance.adjuster_load, a constant force")
@@ -187,6 +199,18 @@ def dynamics_problems(deck) -> list[Problem]:
                            "camshaft.flexibility.speed_amplitude",
                            f"{d.speed_oscillation * 30.0 / 3.141592653589793:g} rpm",
                            "0 (and speed_amplitude, speed_order in [camshaft.flexibility])"))
+    roller = getattr(deck, "roller", None)
+    if (roller is not None and roller.pin != "locked" and shaft is not None
+            and getattr(shaft, "coupling", "one_way") == "two_way"):
+        out.append(Problem("camshaft.flexibility.coupling", "the two-way coupled march takes "
+                           "the cam contact's sliding friction: a turning roller's traction is "
+                           "not in it", "two_way", "one_way with a [roller] section (or "
+                           "roller.pin = \"locked\")"))
+    if (roller is not None and d.roller == "marched" and roller.pin != "locked"
+            and d.integrator != "newmark"):
+        out.append(Problem("dynamics.integrator", "the roller's speed is marched by the newmark "
+                           "integrator only", d.integrator,
+                           "newmark, or dynamics.roller = \"after\""))
     if d.pushrod_stiffness is not None and deck.mechanism.type != "pushrod":
         out.append(Problem("dynamics.pushrod_stiffness", "applies to a push-rod train only",
                            None, "no value"))

@@ -35,8 +35,10 @@ class Masses:
     follower: float = quantity(
         "Follower (rocker) equivalent mass referred to radius B", "kg", default=0.0, ge=0,
         applies="finger, rocker")
-    rocker_inertia: float = quantity("Rocker moment of inertia about its pivot", "kg·m²",
-                                     default=0.0, ge=0, applies="finger, rocker, pushrod")
+    rocker_inertia: float = quantity(
+        "Rocker (or finger) moment of inertia about its pivot, roller excluded; the rigid and "
+        "the elastic train count it at the valve as I / B^2 (a sheet-metal finger: about "
+        "2.5e-5)", "kg·m²", default=0.0, ge=0, applies="finger, rocker, pushrod", example=2.5e-5)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -9,6 +9,8 @@ cam contact and valve seat of :mod:`camtrain.dynamics.train`:
   crossing of its indicator psi is located by regula falsi (Illinois) on sub-steps, the step is
   split there, the acceleration restarted from the equilibrium with the new contact state, and the
   rest of the step marched with it.
+  A roller's spin (:mod:`camtrain.dynamics.spin`) is advanced over every accepted (sub)step
+  at its end state's cam force (backward Euler).
 * ``central_difference_march`` (:mod:`._explicit`): Teodorescu et al. (2005) eq. 17, explicit,
   velocity by the backward difference (l' = (l_n - l_(n-1)) / dt, as the source); conditionally
   stable (the caller guards the step).
@@ -32,6 +34,7 @@ import numpy as np
 from numba import njit
 
 from camtrain.dynamics.hla.chamber import chamber_advance, chamber_step, extension, plunger_force
+from camtrain.dynamics.spin.step import spin_step
 from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
@@ -349,6 +352,7 @@ def _sample(tr, uni, cl, inp, st, out, n):
         out.h[4, r], out.h[5, r], out.h[6, r] = st.hp[4], st.hp[5], st.hp[6]
         st.hp[4] = 0.0
         st.hp[5] = 0.0
+    out.r[0, r], out.r[1, r], out.r[2, r] = st.wr[0], st.wr[1], st.wr[2]
 
 
 @njit(cache=True)
@@ -434,6 +438,10 @@ def newmark_march(tr, uni, cl, inp, st, out):
             u[:] = to[0]
             v[:] = to[1]
             st.hp[:] = to[3]
+            if tr.roller.on and hx > 0.0:   # the roller's spin over the same (sub)step
+                spin_step(tr.roller, st.wr, n, tau + hx, dt, hx,
+                          _cam_force(u, v, act, node, k, c, off, b, bd, n, tau + hx, dt, law,
+                                     hz, rad, rat))
             if stop:
                 a[:] = a1
                 break
@@ -446,8 +454,8 @@ def newmark_march(tr, uni, cl, inp, st, out):
 
 
 @njit(cache=True)
-def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
-    """F_cam b' [W] (contact 0 is the cam)."""
+def _cam_force(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
+    """The valve-referred cam force F_cam [N] at time tau into step n (contact 0 is the cam)."""
     if not act[0]:
         return 0.0
     bj, bdj = _input(b, bd, 0, n, tau, dt)
@@ -457,7 +465,16 @@ def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat)
         g = _spring(0, delta, k, law, hz, r1, ratio)
     else:
         g = k[0] * delta
-    return (g + c[0] * (bdj - v[node[0]])) * bdj
+    return g + c[0] * (bdj - v[node[0]])
+
+
+@njit(cache=True)
+def _cam_power(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat):
+    """F_cam b' [W] (contact 0 is the cam)."""
+    if not act[0]:
+        return 0.0
+    bdj = _input(b, bd, 0, n, tau, dt)[1]
+    return _cam_force(u, v, act, node, k, c, off, b, bd, n, tau, dt, law, hz, rad, rat) * bdj
 
 
 announce("valve-train dynamics", (newmark_march,))

@@ -101,6 +101,9 @@ class TrainResponse:
     #: check valve and the annulus over each sample's interval, the check ball's lift [m]; None
     #: without one
     hydraulic: np.ndarray | None = None
+    #: a marched roller's speed on its pin [rad/s], sliding speed [m/s] and traction [N]
+    #: (3 x grid), None without one
+    roller: np.ndarray | None = None
 
     def events_of(self, kind: str) -> list[DynamicEvent]:
         return [e for e in self.events if e.kind == kind]
@@ -153,6 +156,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
     needs fewer revolutions (still at least ``cycles_min``)."""
     if settings.integrator not in INTEGRATORS:
         raise ValueError(f"unknown integrator {settings.integrator!r}")
+    if model.roller is not None and settings.integrator != "newmark":
+        raise ValueError("the roller's spin is marched by the newmark integrator only")
     grid = cam.theta.size
     sub = int(settings.substeps)
     steps = grid * sub
@@ -179,6 +184,7 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
     geometry = _geometry(model, cam, base, t, theta0)
     if settings.integrator in ("newmark", "central_difference"):
         runner = _FixedStep(model, inputs, rates, dt, sub, settings.integrator, geometry)
+        runner.spin_on(theta0 + base.angle(t)[0])
         if start is not None and settings.integrator == "newmark":
             runner.u = np.array(start.u[:, i0], dtype=float)
             runner.v = np.array(start.v[:, i0], dtype=float)
@@ -188,6 +194,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                 runner.hp[:] = 0.0   # no rate guess, no volumes yet, the ball at rest
                 runner.hp[:3] = start.hydraulic[:3, i0]
                 runner.hp[6] = start.hydraulic[6, i0]
+            if start.roller is not None and model.roller is not None:
+                runner.wr[:] = start.roller[:, i0]
     else:
         from camtrain.dynamics.adaptive import Adaptive
 
@@ -197,13 +205,13 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
     for cycle in range(1, settings.cycles_max + 1):
         out = runner.revolution()
         if previous is not None:
-            scale = max(float(np.max(np.abs(out[0]))), 1e-12)
-            change = float(np.max(np.abs(out[0] - previous))) / scale
+            change = _change(out, previous, model.roller is not None)
             if change <= settings.period_tol and cycle >= settings.cycles_min:
                 break
-        previous = out[0].copy()
+        previous = (out[0].copy(), out[8][0].copy() if len(out) > 8 else None)
     u, v, a, f, events, work, cut = out[:7]
     hydraulic = out[7] if len(out) > 7 and model.hla is not None else None
+    spin = out[8] if len(out) > 8 and model.roller is not None else None
     # sample r is grid index (i0 + r + 1) % grid: roll into grid order
     sample_t = (np.arange(grid) + 1) * dt * sub
     dyn_events = []
@@ -215,6 +223,8 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                "cam": np.vstack((b[sub::sub], bd[sub::sub], bdd[sub::sub]))}
     if hydraulic is not None:
         samples["hla"] = hydraulic
+    if spin is not None:
+        samples["roller"] = spin
     if base.amplitude and base.order:
         # samples are uniform in time, not in angle: carry them onto the grid angles
         angle = theta0 + base.angle(sample_t)[0]
@@ -227,7 +237,19 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                          cam=tuple(on_grid["cam"]), events=tuple(dyn_events), cycles=cycle,
                          converged=change <= settings.period_tol, change=change, cam_work=work,
                          steps=steps, integrator=settings.integrator, cut_switches=cut,
-                         hydraulic=on_grid.get("hla"))
+                         hydraulic=on_grid.get("hla"), roller=on_grid.get("roller"))
+
+
+def _change(out, previous, spin: bool) -> float:
+    """The largest change between two revolutions: of any displacement relative to the largest
+    displacement and, with a marched roller, of its speed relative to its largest speed."""
+    scale = max(float(np.max(np.abs(out[0]))), 1e-12)
+    change = float(np.max(np.abs(out[0] - previous[0]))) / scale
+    if spin:
+        w = out[8][0]
+        scale = max(float(np.max(np.abs(w))), 1e-12)
+        change = max(change, float(np.max(np.abs(w - previous[1]))) / scale)
+    return change
 
 
 def revolution_from(model: TrainModel, cam: CamInput, base: TimeBase, substeps: int,
@@ -307,6 +329,21 @@ class _FixedStep:
         if model.hla is not None and self.explicit:
             raise ValueError("the hydraulic lash adjuster's chamber is marched by the newmark "
                              "integrator only")
+        from camtrain.dynamics.spin import no_roller
+
+        self.spin = no_roller()
+        self.wr = np.zeros(3)
+
+    def spin_on(self, angles) -> None:
+        """The roller's record at the step angles [rad] of a revolution (a model with a roller),
+        its speed started at pure rolling at the first of them."""
+        from camtrain.dynamics.spin import spin_record
+
+        if self.model.roller is None:
+            return
+        self.spin = spin_record(self.model.roller, angles)
+        pos = int(np.floor(self.spin.pos[0])) % self.spin.v_s0.size
+        self.wr[:] = (self.spin.v_s0[pos] / self.spin.radius, 0.0, 0.0)
 
     def revolution(self):
         from camtrain.dynamics.records import (
@@ -325,22 +362,23 @@ class _FixedStep:
         cap = 10_000
         out = Marched(np.empty((n, grid)), np.empty((n, grid)), np.empty((n, grid)),
                       np.empty((2, grid)), np.empty(cap), np.empty(cap, dtype=np.int64),
-                      np.empty(cap), np.zeros((len(H_ROWS), grid)))
+                      np.empty(cap), np.zeros((len(H_ROWS), grid)), np.zeros((3, grid)))
         train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr,
-                      self.hla)
+                      self.hla, self.spin)
         inputs = Inputs(self.inputs, self.rates, self.dt, self.stride, 0.0)
         if self.explicit:   # v and a: the explicit scheme's work arrays
             state = TrainState(self.u, np.empty(n), np.empty(n), self.act, self.u_prev,
-                               self.psi_prev, self.hp)
+                               self.psi_prev, self.hp, self.wr)
             from camtrain.dynamics._explicit import central_difference_march as march
         else:
-            state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev, self.hp)
+            state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev, self.hp,
+                               self.wr)
             march = self.kernel.newmark_march
         nev, work, cut = march(train, unilateral(m), CamLaw(*self.geometry), inputs, state, out)
         nev = min(nev, cap)
         events = list(zip(out.ev_t[:nev].tolist(), out.ev_kind[:nev].tolist(),
                           out.ev_rate[:nev].tolist(), strict=True))
-        return out.u, out.v, out.a, out.f, events, work, cut, out.h
+        return out.u, out.v, out.a, out.f, events, work, cut, out.h, out.r
 
 
 def _hydraulic_start(model: TrainModel, u0):
@@ -383,20 +421,22 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
     act = np.zeros(2, dtype=np.bool_)
     from camtrain.dynamics.hla import no_adjuster
     from camtrain.dynamics.records import Inputs, Marched, Train, TrainState, linear_law, unilateral
+    from camtrain.dynamics.spin import no_roller
 
     out = Marched(np.empty((n, steps)), np.empty((n, steps)), np.empty((n, steps)),
                   np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1),
-                  np.zeros((4, steps)))
+                  np.zeros((4, steps)), np.zeros((3, steps)))
     train = Train(model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node,
-                  np.zeros(2), no_adjuster())
+                  np.zeros(2), no_adjuster(), no_roller())
     drive = Inputs(inputs, inputs, dt, 1, 0.0)
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
-        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2), np.zeros(4))
+        state = TrainState(u, np.empty(n), np.empty(n), act, u_prev, np.zeros(2), np.zeros(4),
+                           np.zeros(3))
         from camtrain.dynamics._explicit import central_difference_march
 
         central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
-        state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(4))
+        state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(4), np.zeros(3))
         _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
     return out.u

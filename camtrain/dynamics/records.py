@@ -26,15 +26,16 @@ from collections import namedtuple
 import numpy as np
 
 __all__ = ["Unilateral", "Train", "Inputs", "CamLaw", "Marched", "TrainState", "Hydraulic",
-           "HP_SIZE", "HP_SLOTS", "H_ROWS", "unilateral", "linear_law"]
+           "HP_SIZE", "HP_SLOTS", "H_ROWS", "Spin", "unilateral", "linear_law"]
 
 #: the unilateral contacts (cam, seat) of a train: k [N/m], c [N s/m], off [m] (arrays of 2)
 Unilateral = namedtuple("Unilateral", "k c off")
 
 #: the single train's linear part M u'' + C u' + K u = f0 (``m`` the lumped masses [kg]), the
 #: node each unilateral contact acts on, each contact's closing threshold ``thr`` [N] and its
-#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one)
-Train = namedtuple("Train", "m K C f0 node thr hla")
+#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one) and its roller's
+#: spin ``roller`` (a :data:`Spin`, ``on`` 0 without one)
+Train = namedtuple("Train", "m K C f0 node thr hla roller")
 
 #: a hydraulic lash adjuster between the ``f`` (body) and ``q`` (plunger) nodes
 #: (:mod:`camtrain.dynamics.hla`, SI, pressures gauge): plunger motion per valve-referred motion
@@ -60,6 +61,14 @@ HP_SIZE = 8
 HP_SLOTS = ("pressure", "check_flow", "leak_flow", "rate", "check_volume", "leak_volume",
             "ball_lift", "ball_speed")
 
+#: a roller turning on its pin, marched with the train (:mod:`camtrain.dynamics.spin`, SI):
+#: ``radius``, spin ``inertia``; tables: normalised ``grid``, load levels ``loads``, ``traction``
+#: (angles, loads, grid) at sliding speeds ``sliding_scale[angle] * grid``, ``pin`` torque
+#: (loads, grid) at roller speeds ``speed_scale * grid``, ``v_s0`` per grid angle; at the step
+#: times of the batch: the fractional grid position ``pos`` and the load ratio ``ratio``
+Spin = namedtuple("Spin", "on radius inertia grid loads traction sliding_scale pin speed_scale "
+                  "v_s0 pos ratio")
+
 #: the contacts' inputs b [m] and b' [m/s] (contacts, steps + 1) at the step times of a batch,
 #: the step ``dt`` [s], the output ``stride`` (steps per sample) and the batch's start time t0
 Inputs = namedtuple("Inputs", "b bd dt stride t0")
@@ -70,8 +79,9 @@ CamLaw = namedtuple("CamLaw", "law hz rad rat")
 
 #: the march's samples every stride: displacement, velocity, acceleration (n, samples), contact
 #: forces (2, samples), its events: time, kind (2 j + closing), approach speed, and the
-#: adjuster's ``h`` (:data:`H_ROWS`, samples)
-Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h")
+#: adjuster's ``h`` (:data:`H_ROWS`, samples), the roller's speed [rad/s], sliding speed [m/s]
+#: and traction [N] ``r`` (3, samples)
+Marched = namedtuple("Marched", "u v a f ev_t ev_kind ev_rate h r")
 
 #: the adjuster's sampled rows: chamber pressure [Pa], check-valve and leak flows [m^3/s],
 #: plunger extension [m], the volumes [m^3] through the check valve and the annulus over the
@@ -81,8 +91,9 @@ H_ROWS = ("pressure", "check_flow", "leak_flow", "extension", "check_volume", "l
 
 #: the single train's state, updated in place: u, v, a, the contact states ``act``; the
 #: explicit scheme's previous displacement ``u_prev`` and contact indicators ``psi_prev``; the
-#: adjuster's chamber ``hp`` (:data:`HP_SLOTS`, :data:`HP_SIZE` long)
-TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp")
+#: adjuster's chamber ``hp`` (:data:`HP_SLOTS`, :data:`HP_SIZE` long); the roller's ``wr`` =
+#: (speed [rad/s], sliding speed [m/s], traction [N])
+TrainState = namedtuple("TrainState", "u v a act u_prev psi_prev hp wr")
 
 
 def unilateral(model) -> Unilateral:

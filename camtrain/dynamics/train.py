@@ -104,6 +104,10 @@ class TrainModel:
     hla: object = None
     plunger: int = -1
     hla_ratio: float = 1.0
+    #: a roller turning on its pin, its spin marched with the train
+    #: (:class:`camtrain.dynamics.spin.RollerTables`); None: no roller, or one solved after
+    #: the march by the roller effect
+    roller: object = None
 
     def hla_rest_force(self) -> float:
         """The adjuster chamber's valve-referred force on the base circle [N] (0 without)."""

@@ -24,13 +24,19 @@ def missing(deck) -> list[str]:
 
 
 def model(deck, planned) -> str:
-    """The train this effect marches, as far as the report's panels follow from it: with a
-    hydraulic lash adjuster (``lash_adjuster``, ``lash_adjuster_ball`` with the dynamic check
-    ball) or without ("")."""
+    """The train this effect marches, as far as the report's panels follow from it, as its
+    optional parts joined by "+": a hydraulic lash adjuster (``lash_adjuster``, or
+    ``lash_adjuster_ball`` with the dynamic check ball) and the roller's spin marched with the
+    train (``roller``); "" for the train alone."""
+    from camtrain.assemble.roller import marches_roller
+
     h = deck.dynamics.lash_adjuster if getattr(deck, "dynamics", None) is not None else None
-    if h is None:
-        return ""
-    return "lash_adjuster_ball" if h.check_valve == "ball" else "lash_adjuster"
+    parts = []
+    if h is not None:
+        parts.append("lash_adjuster_ball" if h.check_valve == "ball" else "lash_adjuster")
+    if marches_roller(deck):
+        parts.append("roller")
+    return "+".join(parts)
 
 
 def reason(deck, planned) -> str:
@@ -38,7 +44,8 @@ def reason(deck, planned) -> str:
     spring = (f"{d.spring_elements}-element spring chain" if d.spring_elements else
               "single-rate spring")
     hla = ", hydraulic lash adjuster" if d.lash_adjuster is not None else ""
-    return f"[dynamics] given: elastic train, {d.integrator}, {spring}{hla}"
+    spin = ", roller speed marched with the train" if model(deck, planned) else ""
+    return f"[dynamics] given: elastic train, {d.integrator}, {spring}{hla}{spin}"
 
 
 def makes(deck, planned) -> tuple[str, ...]:
@@ -90,12 +97,15 @@ def _separations(res, found) -> None:
 def _lash_adjuster(deck, run_setup, resp, res) -> None:
     """A hydraulic lash adjuster's columns, metrics and pump-up warning; the lift loss against
     the same train with the constant-load adjuster, marched alike."""
+    from dataclasses import replace
+
     from camtrain.dynamics import march
     from camtrain.dynamics.hla import rigid_adjuster
     from camtrain.dynamics.hla.findings import adjuster_findings, adjuster_rows
 
     model = run_setup.model
-    rigid = march(rigid_adjuster(model), run_setup.cam, run_setup.base, run_setup.settings)
+    rigid = march(replace(rigid_adjuster(model), roller=None), run_setup.cam, run_setup.base,
+                  run_setup.settings)
     height = deck.dynamics.lash_adjuster.checking_height
     found = adjuster_findings(resp, rigid, model, height)
     cols, mets, warns = adjuster_rows(resp, found, model, height)
@@ -103,6 +113,21 @@ def _lash_adjuster(deck, run_setup, resp, res) -> None:
     res.add_metrics(mets)
     for text in warns:
         res.warn(text)
+
+
+def _roller(kin, tables, spin, load, res) -> None:
+    """The marched roller's columns and metrics, and a warning where the marched load passed
+    the roller's tables."""
+    from camtrain.dynamics.spin.findings import spin_metrics, spin_rows
+
+    res.add_columns(spin_rows(kin, tables, spin))
+    res.add_metrics(spin_metrics(kin, tables, spin, load))
+    top = float(load.max())
+    if top > tables.load_cap:
+        res.warn(f"roller: the marched contact load reaches {top:.4g} N, above the "
+                 f"{tables.load_cap:.4g} N of the roller's traction and pin tables (3 x the rigid "
+                 "train's largest load), where they are held: the roller speed there is "
+                 "approximate")
 
 
 def run(deck, inputs, res):
@@ -190,6 +215,8 @@ def run(deck, inputs, res):
                  "last revolution")
     if model.hla is not None:
         _lash_adjuster(deck, run_setup, resp, res)
+    if resp.roller is not None:
+        _roller(kin, model.roller, resp.roller, load, res)
     if resp.cut_switches:
         res.warn(f"dynamics: {resp.cut_switches} steps had more contact changes than the "
                  "integrator locates per step (chattering); refine steps_per_degree")

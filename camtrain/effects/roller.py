@@ -38,45 +38,16 @@ def reason(deck, planned) -> str:
 
 def face_mass(deck) -> float:
     """mechanism.roller.mass [kg] (a roller finger's or rocker's roller), 0 without it."""
-    face = deck.mechanism.roller
-    return face.mass if face is not None else 0.0
+    from camtrain.assemble.roller import face_mass as of_deck
+
+    return of_deck(deck)
 
 
 def pin_of(deck):
-    """The deck's pin as physics (:class:`camtrain.roller.pin.Pin`)."""
-    from camtrain.bearings import JournalBearing
-    from camtrain.roller.pin import Pin
+    """The deck's pin as physics (:func:`camtrain.assemble.roller.pin_of`)."""
+    from camtrain.assemble.roller import pin_of as of_deck
 
-    r = deck.roller
-    eta = r.pin_viscosity if r.pin_viscosity is not None else deck.lubricant.viscosity
-    if r.pin == "needle":
-        return Pin("needle", pitch_diameter=r.needle_pitch_diameter,
-                   kinematic_viscosity=eta / r.oil_density, f0=r.needle_f0, f1=r.needle_f1)
-    if r.pin == "bushing":
-        return Pin("bushing", bearing=JournalBearing(r.pin_diameter, r.pin_length,
-                                                     r.pin_clearance, eta, name="roller"),
-                   model=r.pin_model, asperities=bushing_asperities(deck), terms=r.pin_terms)
-    return Pin(r.pin)
-
-
-def bushing_asperities(deck):
-    """The bushing's Greenwood-Tripp asperities with roller.pin_friction = "mixed" (None for
-    hydrodynamic): roughness roller.pin_roughness (else lubricant.roughness), the tribology
-    section's asperity and boundary parameters, the pair's reduced modulus (pin and roller of
-    the follower's material)."""
-    from camtrain.contact.model import CamContact
-    from camtrain.roller.pin import Asperities
-
-    r = deck.roller
-    if r.pin_friction != "mixed":
-        return None
-    trib = deck.tribology
-    sigma = r.pin_roughness if r.pin_roughness is not None else deck.lubricant.roughness
-    beta = sigma / trib.roughness_slope
-    return Asperities(sigma=sigma, beta=beta,
-                      zeta=trib.asperity_density_product / (beta * sigma),
-                      reduced_modulus=float(CamContact.from_deck(deck).reduced_modulus),
-                      tau0=trib.eyring_stress, m=trib.boundary_shear_coefficient)
+    return of_deck(deck)
 
 
 def settings_of(deck):

@@ -369,6 +369,14 @@ def spring_forces(ax, r, ctx):
                           "seat_force": "valve seat"})
 
 
+def roller_spin(ax, r, ctx):
+    """The roller's slip marched with the elastic train, over the roller effect's own solve at
+    the train's load (quasi-static or periodic)."""
+    return _cycle(ax, r, ctx, ["roller_slip_marched", "roller_slip"], ylabel="slip", zero=True,
+                  legend=True, labels={"roller_slip_marched": "marched with the train",
+                                       "roller_slip": "roller effect at the train's load"})
+
+
 PANELS = {
     "lift": ("Lift", lift),
     "velocity": ("Velocity", velocity),
@@ -392,4 +400,5 @@ PANELS = {
     "valve_motion": ("Valve and follower motion", valve_motion),
     "valve_acceleration": ("Valve and follower acceleration", valve_acceleration),
     "spring_forces": ("Spring and seat forces", spring_forces),
+    "roller_spin": ("Roller slip in the elastic train", roller_spin),
 }

@@ -53,7 +53,8 @@ SHEETS = {
                                                      "pressure_over_hertz"]),
     "profile": ("Cam profile and film around it", ["profile"]),
     "dynamics": ("Valve-train dynamics", [
-        "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces"]),
+        "dynamic_load", "valve_motion", "valve_acceleration", "spring_forces",
+        "roller_spin"]),
     "lash_adjuster": ("Hydraulic lash adjuster", [
         "adjuster_pressure", "adjuster_extension", "adjuster_lift_loss", "check_flow",
         "check_lift"]),

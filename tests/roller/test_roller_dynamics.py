@@ -41,3 +41,20 @@ def test_the_pin_carries_the_dynamic_load(elastic):
     # where the elastic train separates from the cam the roller carries no traction
     free = run["load"] <= 0.0
     assert np.all(run["roller_traction"][free] == 0.0)
+
+
+def test_the_dynamics_run_marches_the_roller(elastic):
+    """The roller's speed is a state of the elastic train's march: its columns and key metric
+    come from the dynamics effect, and its panel is on the dynamics sheet (docs/rollers.md)."""
+    from camtrain.catalogue import declared_panels
+
+    _, run = elastic
+    w, rolling = run["roller_speed_marched"], run["roller_speed_rolling"]
+    loaded = run["load"] > 0.0
+    assert np.all(np.isfinite(w))
+    # a turning roller on its needle pin: near rolling where it carries load
+    assert np.max(np.abs(w - rolling)[loaded]) < 0.2 * np.max(np.abs(rolling))
+    assert 0.0 <= run.metrics["roller_slip_max_marched"].value < 0.2
+    assert "roller_spin" in declared_panels(run.plan)
+    assert "roller speed marched" in next(s.reason for s in run.plan.steps
+                                          if s.effect == "dynamics")
