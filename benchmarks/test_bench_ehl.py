@@ -14,6 +14,7 @@ from conftest import note, paired, record
 from camtrain.lubrication.ehl_elastic import ElasticKernel
 from camtrain.lubrication.ehl_line import EHLResolution, LineContact, solve_ehl_line
 from camtrain.lubrication.ehl_oil import Oil
+from tests.lubrication.test_ehl_transient import goecmen_cycle
 
 #: formulas_and_anchors case A: w = 200 N/mm, R = 20 mm, u_m = 1 m/s, eta0 = 0.04 Pa s,
 #: alpha = 20 /GPa, E' = 226 GPa; Roelands, Dowson-Higginson density (M = 10.5, L = 9.3).
@@ -62,28 +63,6 @@ def test_bench_ehl_line_cost_against_points(benchmark):
                        iterations=1)
 
 
-def goecmen_cycle(angles: int = 720, sigma: float = 0.05e-6):
-    """The Göçmen deck's contact over one revolution (flat follower, 1000 rpm, 20 mm wide),
-    smoother surfaces (sigma 0.05 um) than the deck's 0.65 um so that the film, not the
-    asperities, carries the load: the inputs of the elastic film march."""
-    from camtrain import api
-    from camtrain.contact.model import CamContact
-    from camtrain.lubrication.ehl_transient import CycleContact
-
-    deck = api.load_deck("decks/gocmen_table31.toml")
-    res = api.run(deck)
-    theta = res["cam_angle"]
-    grid = theta[0] + 2 * np.pi * np.arange(angles) / angles
-
-    def on_grid(name):
-        return np.interp(grid, theta, res[name], period=2 * np.pi)
-    omega = 1000 * 2 * np.pi / 60
-    E_r = float(CamContact.from_deck(deck.model).reduced_modulus)
-    return CycleContact((grid - grid[0]) / omega, on_grid("load") / 0.02, on_grid("radius_x"),
-                        on_grid("entrainment"), on_grid("sliding"), E_r, 0.02,
-                        Oil(0.014, 14.3e-9), sigma=sigma)
-
-
 def bare_steps(n: int, steps: int):
     """Floor of a march: one bare Newton step (dense LU, FFT deflection) per angle."""
     one = bare_newton_step(n)
@@ -98,7 +77,7 @@ def test_bench_ehl_cam_cycle_512(benchmark):
     """Target: a whole cam cycle at 0.5 deg steps on 512 points under 20 s of CPU."""
     from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
 
-    contact = goecmen_cycle()
+    contact = goecmen_cycle(720)
     resolution = CycleResolution(nodes=512)
     timing = paired(lambda: march_ehl_cycle(contact, resolution), bare_steps(512, 720),
                     rounds=1, warmup=0)
@@ -116,7 +95,7 @@ def test_bench_ehl_cycle_cost_against_points(benchmark):
 
     from camtrain.lubrication.ehl_transient import CycleResolution, march_ehl_cycle
 
-    full = goecmen_cycle()
+    full = goecmen_cycle(720)
     window = slice(256, 336)
     part = replace(full, **{k: getattr(full, k)[window] for k in ("t", "w", "R", "u", "u_s")})
     sizes, times = [128, 256, 512, 1024], []

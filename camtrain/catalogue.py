@@ -51,6 +51,11 @@ class EffectSpec:
     #: holds those of its panels that an effect that ran declares (a panel may still leave
     #: itself out when the run has none of its curves, e.g. a flat follower's pressure angle)
     panels: tuple[str, ...] = ()
+    #: the cycle panels this effect feeds only when it ran a given model, as (model, panels)
+    #: pairs: the model is the one its plan step records (``Step.model``, the module's
+    #: ``model(deck, planned)``; the film's ``tribology.film_model`` as it ran), so a steady
+    #: film declares none of the transient film's panels whatever columns a result holds
+    model_panels: tuple[tuple[str, tuple[str, ...]], ...] = ()
     #: the resolution knobs of ``camtrain accuracy`` that change this effect's numbers, by name
     #: (camtrain.study.accuracy_knobs.KNOBS; a knob's own test on the deck narrows it further)
     knobs: tuple[str, ...] = ()
@@ -145,8 +150,11 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "lubricant film thickness (EHL with load, Blok rigid-piezoviscous without)",
                needs=("TrainKinematics",), uses=("ContactLoad",), produces=("ContactFilm",),
                key_metrics=("film_min_at_max_lift", "film_min"),
-               panels=("film_angle", "film_position", "transient_film", "film_pressures",
-                       "elastic_films", "film_map", "pressure_over_hertz"),
+               panels=("film_angle", "film_position"),
+               model_panels=(("squeeze", ("transient_film",)),
+                             ("averaged_reynolds", ("transient_film", "film_pressures")),
+                             ("ehl", ("transient_film", "film_pressures", "elastic_films",
+                                      "film_map", "pressure_over_hertz"))),
                sheets=("contact", "transient_film", "elastic_film", "profile"),
                knobs=("film_angle_step", "film_nodes", "film_zone_width", "film_tolerance",
                       "ehl_nodes", "ehl_inlet", "ehl_angle_step", "ehl_tolerance"),
@@ -345,11 +353,19 @@ LIFT_PANELS = ("lift", "velocity", "acceleration", "jerk")
 
 
 def declared_panels(plan) -> frozenset[str]:
-    """The cycle panels the effects of a plan declare (EffectSpec.panels); without a plan
-    (a lift-only run) the lift law's, LIFT_PANELS."""
+    """The cycle panels the effects of a plan declare (EffectSpec.panels, and the
+    EffectSpec.model_panels of the model each step records it ran); without a plan (a
+    lift-only run) the lift law's, LIFT_PANELS."""
     if plan is None:
         return frozenset(LIFT_PANELS)
-    return frozenset(p for spec in declared_effects(plan) for p in spec.panels)
+    by_name = {e.name: e for e in KINDS[plan.kind].effects}
+    panels: set[str] = set()
+    for step in plan.steps:
+        spec = getattr(step, "spec", None) or by_name.get(step.effect)
+        if step.chosen and spec is not None:
+            panels.update(spec.panels)
+            panels.update(dict(spec.model_panels).get(getattr(step, "model", ""), ()))
+    return frozenset(panels)
 
 
 def kind_of(deck) -> DeckKind:

@@ -16,9 +16,16 @@ class Step:
     chosen: bool
     reason: str
     spec: EffectSpec | None = field(default=None, compare=False, repr=False)
+    #: the model a chosen effect runs when it has several (the film's tribology.film_model as
+    #: it runs: "steady" without contact loads); "" for an effect of one model. The panels it
+    #: feeds follow from it (EffectSpec.model_panels)
+    model: str = ""
 
     def as_dict(self) -> dict:
-        return {"effect": self.effect, "chosen": self.chosen, "reason": self.reason}
+        out = {"effect": self.effect, "chosen": self.chosen, "reason": self.reason}
+        if self.model:
+            out["model"] = self.model
+        return out
 
 
 @dataclass(frozen=True)

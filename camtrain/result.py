@@ -322,7 +322,8 @@ class Result:
         res.events = [Event(**e) for e in meta["events"]]
         if meta["plan"] is not None:
             p = meta["plan"]
-            res.plan = Plan(p["mode"], tuple(Step(s["effect"], s["chosen"], s["reason"])
+            res.plan = Plan(p["mode"], tuple(Step(s["effect"], s["chosen"], s["reason"],
+                                                  model=s.get("model", ""))
                                              for s in p["steps"]), meta["kind"] or "valve_train")
         return res
 

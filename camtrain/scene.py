@@ -110,6 +110,13 @@ def order(specs: tuple[EffectSpec, ...]) -> list[EffectSpec]:
     return [specs[i] for i in done]
 
 
+def _model(module, deck, planned) -> str:
+    """The model the effect runs for this deck and plan (its module's ``model(deck,
+    planned)``), "" for an effect of one model."""
+    model = getattr(module, "model", None)
+    return model(deck, frozenset(planned)) if model is not None else ""
+
+
 def _resolve_auto(deck, specs, rivals_of: dict[str, tuple[str, ...]]) -> tuple[Step, ...]:
     planned: dict[str, str] = {}  # product -> effect that provides it
     steps = []
@@ -131,12 +138,13 @@ def _resolve_auto(deck, specs, rivals_of: dict[str, tuple[str, ...]]) -> tuple[S
             steps.append(Step(spec.name, False, "no data: " + "; ".join(missing), spec))
             continue
         reason = module.reason(deck, frozenset(planned))
+        model = _model(module, deck, planned)
         rivals = rivals_of[spec.name]
         if rivals:
             reason += f" (chosen over {', '.join(rivals)} for {', '.join(spec.produces)})"
         for p in spec.produces:
             planned[p] = spec.name
-        steps.append(Step(spec.name, True, reason, spec))
+        steps.append(Step(spec.name, True, reason, spec, model))
     return tuple(steps)
 
 
@@ -180,8 +188,9 @@ def _resolve_explicit(deck, specs: list[EffectSpec], requested: tuple[str, ...])
     steps = []
     for spec in specs:
         if spec.name in wanted:
-            reason = wanted[spec.name] + "; " + effect_module(spec).reason(deck, planned)
-            steps.append(Step(spec.name, True, reason, spec))
+            module = effect_module(spec)
+            reason = wanted[spec.name] + "; " + module.reason(deck, planned)
+            steps.append(Step(spec.name, True, reason, spec, _model(module, deck, planned)))
         else:
             steps.append(Step(spec.name, False, "not requested", spec))
     return tuple(steps)

@@ -26,7 +26,7 @@ def test_every_kernel_module_announces_a_known_family():
     announced = _announced()
     assert set(announced) == set(COMPILE_SECONDS), announced
     assert set(announced.values()) <= {"_orbit_march.py", "_kernel.py", "_explicit.py",
-                                       "_revolution.py", "_ring_kernel.py"}
+                                       "_revolution.py", "_ring_kernel.py", "_balance.py"}
 
 
 def test_every_family_has_a_warm_up_case_whose_deck_loads():

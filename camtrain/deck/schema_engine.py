@@ -264,6 +264,14 @@ class EngineDeck:
         return out
 
     @property
+    def cylinder_count(self) -> int:
+        """The engine's cylinders: the [[cylinders]] listed, or correlations.cylinders of a
+        bare engine deck (:meth:`problems` requires one of them)."""
+        if self.cylinders:
+            return len(self.cylinders)
+        return self.correlations.cylinders if self.correlations is not None else 0
+
+    @property
     def has_crank_train(self) -> bool:
         """Whether the deck describes the crank train (cylinders, pressure, rod, masses, bays):
         a bare engine deck for the correlations alone does not."""

@@ -35,6 +35,16 @@ _TRANSIENT = {
 }
 
 
+def model(deck, planned) -> str:
+    """The film model this effect runs (the plan step records it, and the report's panels
+    follow from it): the deck's tribology.film_model under planned contact loads on a cam with
+    a width, else the steady film (the load-free Blok film, or the steady film a missing
+    cam.width leaves), as :func:`reason` says."""
+    if "ContactLoad" in planned and deck.cam.width is not None:
+        return deck.tribology.film_model
+    return "steady"
+
+
 def reason(deck, planned) -> str:
     model = deck.tribology.film_model
     if "ContactLoad" in planned and deck.cam.width is None:

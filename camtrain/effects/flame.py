@@ -59,7 +59,9 @@ def run(deck, inputs, result):
     if lacking:
         result.warn("flame: " + ", ".join(lacking) + " not computed (no data in the deck); "
                     "the total leaves them out")
-    displacement = len(deck.cylinders) * math.pi / 4.0 * e.bore ** 2 * 2.0 * e.crank_radius
+    # the swept volume of the fmep: a bare engine deck (no [[cylinders]]) counts its
+    # cylinders in correlations.cylinders
+    displacement = deck.cylinder_count * math.pi / 4.0 * e.bore ** 2 * 2.0 * e.crank_radius
     row = flame_total(b_power, v_power, p_power, displacement=displacement,
                       engine_speed=deck.speed.engine / (2.0 * math.pi), strokes=e.strokes,
                       accessory_share=f.accessories.share)

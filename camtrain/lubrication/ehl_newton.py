@@ -18,6 +18,18 @@ from .ehl_oil import ScaledOil
 WEDGE = {"upwind1": (1.0, -1.0, 0.0), "upwind2": (1.5, -2.0, 0.5)}
 
 
+def flow_bands(dP: np.ndarray, n: int, dx2: float) -> dict[int, np.ndarray]:
+    """Derivative of the central-difference Poiseuille term d/dx(eps dP/dx) at node i with
+    respect to eps_{i+o}, o = 1, 0, -1 (-2: none), each an array over i (the end nodes 0):
+    the Jacobian bands the steady and the transient line contact share."""
+    zero = np.zeros(n)
+    bands = {1: zero.copy(), 0: zero.copy(), -1: zero.copy(), -2: zero}
+    bands[1][1:-1] = -dP[1:] / (2 * dx2)
+    bands[0][1:-1] = -(dP[1:] - dP[:-1]) / (2 * dx2)
+    bands[-1][1:-1] = dP[:-1] / (2 * dx2)
+    return bands
+
+
 @dataclass
 class Fields:
     """Film and oil at the nodes for one iterate."""
@@ -139,10 +151,7 @@ class DiscreteEHL:
         e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
         dP = np.diff(P)
         zero = np.zeros(n)
-        c_eps = {1: zero.copy(), 0: zero.copy(), -1: zero.copy(), -2: zero}
-        c_eps[1][1:-1] = -dP[1:] / (2 * dx2)
-        c_eps[0][1:-1] = -(dP[1:] - dP[:-1]) / (2 * dx2)
-        c_eps[-1][1:-1] = dP[:-1] / (2 * dx2)
+        c_eps = flow_bands(dP, n, dx2)
         w0, w1, w2 = self._wedge_weights(n)
         c_rh = {0: w0, -1: w1, -2: w2, 1: zero}
         c_rh[-2][:2] = 0.0

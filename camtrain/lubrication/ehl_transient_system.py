@@ -38,7 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .ehl_elastic import ElasticKernel
-from .ehl_newton import WEDGE
+from .ehl_newton import WEDGE, flow_bands
 from .ehl_oil import ScaledOil
 
 CAVITATION = ("elrod_adams", "reynolds")
@@ -180,10 +180,7 @@ class StepSystem:
         e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
         dP = np.diff(P)
         zero = np.zeros(n)
-        c_eps = {1: zero.copy(), 0: zero.copy(), -1: zero.copy(), -2: zero}
-        c_eps[1][1:-1] = -dP[1:] / (2 * dx2)
-        c_eps[0][1:-1] = -(dP[1:] - dP[:-1]) / (2 * dx2)
-        c_eps[-1][1:-1] = dP[:-1] / (2 * dx2)
+        c_eps = flow_bands(dP, n, dx2)
         w0, w1, w2 = self._wedge(n)
         w2 = w2.copy()
         w2[:2] = 0.0

@@ -22,7 +22,7 @@ COMPILE_SECONDS = {
     "valve-train dynamics": 13,
     "shaft-and-trains": 30,
     "ring-film": 5,
-    "roller": 2,
+    "roller": 4,
 }
 
 _listeners: list[Callable[[str], None]] = []

@@ -1,9 +1,10 @@
 """The plot panels: each draws one Ball-style graph into an axes.
 
-A sheet calls the panels the effects that ran declare (EffectSpec.panels). Every panel function
-takes (ax, result, ctx) and draws the curves of its panel the run has; it returns False, drawing
-nothing, when it has none (a flat follower's pressure angle, a film run without the transient
-film's steady reference), and the sheet leaves it out. Values are shown in display units.
+A sheet calls the panels the effects that ran declare (EffectSpec.panels, and the
+EffectSpec.model_panels of the model a step ran: the transient film's panels for a transient
+film). Every panel function takes (ax, result, ctx) and draws the curves of its panel the run
+has; it returns False, drawing nothing, when it has none (a flat follower's pressure angle), and
+the sheet leaves it out. Values are shown in display units.
 """
 from __future__ import annotations
 
@@ -302,9 +303,9 @@ def power(ax, r, ctx):
 # --------------------------------------------------------------------------- transient film
 
 def transient_film(ax, r, ctx):
-    """Transient film against the steady film over the cycle (docs/transient_film.md)."""
-    if not has(r, "film_min", "film_steady"):
-        return False
+    """Transient film against the steady film over the cycle (docs/transient_film.md); the
+    plan declares it when its film effect ran a transient model (EffectSpec.model_panels), and
+    the averaged Reynolds film adds its own film before the steady-film floor."""
     labels = {"film_min": "transient film", "film_steady": "steady EHL film",
               "film_transient": "averaged Reynolds (before the floor)"}
     names = [n for n in ("film_min", "film_steady", "film_transient") if n in r.columns]
@@ -324,9 +325,8 @@ def transient_film(ax, r, ctx):
 
 def film_pressures(ax, r, ctx):
     """Peak fluid and asperity pressure of the averaged Reynolds film over the cycle, with the
-    asperity share of the load on a second axis."""
-    if not has(r, "film_pressure_max", "asperity_pressure_max"):
-        return False
+    asperity share of the load on a second axis (declared for the films that solve for their
+    pressure: averaged Reynolds and elastic, EffectSpec.model_panels)."""
     data = []
     for name, color, label in (("film_pressure_max", COLORS["main"], "peak fluid pressure"),
                                ("asperity_pressure_max", COLORS["second"],
@@ -336,17 +336,15 @@ def film_pressures(ax, r, ctx):
         data.append(_finite(y))
     ax.set_ylabel(f"pressure [{unit}]")
     _fit_y(ax, data, bottom=0.0)
-    handles = None
-    if "asperity_load_share" in r.columns:
-        tw = ax.twinx()
-        tw.plot(ctx.theta, _finite(r["asperity_load_share"]), color=COLORS["grey"], lw=0.8,
-                ls="--", label="asperity share of load (right)")
-        tw.set_ylabel("W_A / W [-]")
-        tw.set_ylim(0.0, 1.0)
-        tw.grid(False)
-        h1, l1 = ax.get_legend_handles_labels()
-        h2, l2 = tw.get_legend_handles_labels()
-        handles = (h1 + h2, l1 + l2)
+    tw = ax.twinx()
+    tw.plot(ctx.theta, _finite(r["asperity_load_share"]), color=COLORS["grey"], lw=0.8,
+            ls="--", label="asperity share of load (right)")
+    tw.set_ylabel("W_A / W [-]")
+    tw.set_ylim(0.0, 1.0)
+    tw.grid(False)
+    h1, l1 = ax.get_legend_handles_labels()
+    h2, l2 = tw.get_legend_handles_labels()
+    handles = (h1 + h2, l1 + l2)
     angle_axis(ax)
     finish_axes(ax, legend=True, handles=handles)
     return True

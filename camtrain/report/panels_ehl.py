@@ -1,17 +1,19 @@
 """Panels of the elastic film sheet (tribology.film_model = ehl; docs/ehl.md): the film map
 over cam angle and position, the elastic films beside the formula film, and the peak pressure
-against the dry Hertz pressure. Each draws only what the run has."""
+against the dry Hertz pressure. The plan declares them when its film effect ran the elastic
+film (EffectSpec.model_panels, from the model its step records)."""
 from __future__ import annotations
 
 import numpy as np
 
-from camtrain.report.panels import _finite, _fit_y, _mark_zero_entrainment, has, shown
+from camtrain.report.panels import _finite, _fit_y, _mark_zero_entrainment, shown
 from camtrain.report.style import COLORS, angle_axis, finish_axes
 
 
 def film_map(ax, r, ctx):
-    """The film h(x) against cam angle (rows of the map axis), as a colour map."""
-    if not has(r, "film_map_angle", "film_map_x", "film_map_film"):
+    """The film h(x) against cam angle (rows of the map axis), as a colour map; none when no
+    angle of the march was loaded (the elastic film then writes no map)."""
+    if "film_map_angle" not in r.columns:
         return False
     angle = np.degrees(r["film_map_angle"])
     x, unit_x = shown(r, "film_map_x")
@@ -41,8 +43,6 @@ def film_map(ax, r, ctx):
 
 def elastic_films(ax, r, ctx):
     """Central and minimum elastic film with the steady formula film."""
-    if not has(r, "film_min", "film_central", "film_steady", "film_map_film"):
-        return False
     data = []
     unit = ""
     for name, color, style, label in (
@@ -62,8 +62,6 @@ def elastic_films(ax, r, ctx):
 
 def pressure_over_hertz(ax, r, ctx):
     """Peak fluid pressure of the elastic film over the dry Hertz pressure."""
-    if not has(r, "film_pressure_over_hertz"):
-        return False
     y, _ = shown(r, "film_pressure_over_hertz")
     ax.plot(ctx.theta, _finite(y), color=COLORS["main"], label="peak pressure / Hertz")
     ax.axhline(1.0, color=COLORS["grey"], lw=0.8, ls="--", label="Hertz")

@@ -7,7 +7,9 @@ Torque balance of the roller on its pin (Chiu 1992, Tribol. Trans. 35:261; Alakh
 
 ``quasi_static`` drops the inertia and solves F_t r_r = T_pin per angle (bisection on
 w_r in [0, V_s0/r_r]: the traction falls and the pin torque rises with w_r, so the root is
-unique; where the traction at w_r = 0 cannot beat the pin's breakaway torque the roller stands).
+unique; where the traction at w_r = 0 cannot beat the pin's breakaway torque the roller stands);
+the angles of a needle pin in a full film are solved by the same steps compiled per angle
+(:mod:`._balance`), the others on arrays.
 ``inertial`` marches the equation over revolutions to a periodic state
 (:mod:`._kernel`, implicit Euler, first order in the step), started from the quasi-static speed.
 The pin carries the normal load W (the traction's share of the pin load is left out).
@@ -20,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from camtrain.roller import speeds
-from camtrain.roller.pin import Pin
+from camtrain.roller.pin import NU_N_LIMIT, Pin
 from camtrain.roller.product import RollerField
 from camtrain.roller.traction import Traction
 
@@ -66,8 +68,54 @@ def quasi_static_speed(traction: Traction, pin: Pin, radius: float) -> np.ndarra
     x = np.where(free, 1.0, 0.0)
     loaded = np.flatnonzero(~free & (load > 0.0) & (v0 != 0.0))
     if loaded.size:
-        x[loaded] = _balance_roots(traction, pin, radius, loaded)
+        compiled = _compiled_records(traction, pin, radius, loaded)
+        if compiled is not None:
+            from camtrain.roller._balance import balance_roots
+
+            fast, records = compiled
+            x[loaded[fast]] = balance_roots(*records)
+            loaded = loaded[~fast]
+        if loaded.size:
+            x[loaded] = _balance_roots(traction, pin, radius, loaded)
     return x * w_star
+
+
+def _compiled_records(traction, pin, radius, idx):
+    """The angles of ``idx`` the compiled balance solves (a mask over ``idx``: a needle pin,
+    the full-film traction law, a power-law film, the film parameter at or above the mixed limit
+    over the whole bracket; :mod:`._balance`) and its records, or None where it solves none."""
+    from camtrain.contact._points import at
+    from camtrain.roller._balance import BalanceAngles, BalanceLaw
+    from camtrain.roller.traction import LAMBDA_LIMIT
+
+    h_roll, exponent = traction._rolling_film
+    if pin.kind != "needle" or traction.law == "contact" or exponent is None:
+        return None
+    c, trib, hz = traction.contact, traction.contact.tribology, traction.hertz
+    every = np.ones(traction.load.shape, dtype=bool)
+    sigma = np.broadcast_to(at(c.lubricant.roughness, every), every.shape)[idx]
+    v0, v_cam, h = traction.v_s0[idx], traction.kin.v_cam[idx], h_roll[idx]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        h_slide = h * (np.abs(v_cam - 0.5 * v0) / np.abs(v_cam)) ** exponent
+        area = 2.0 * hz.half_width[idx] * np.broadcast_to(at(c.width, every), every.shape)[idx]
+        fast = ((v_cam != 0.0) & ((v_cam - 0.5 * v0) * v_cam > 0.0) & np.isfinite(h) & (h > 0.0)
+                & (np.minimum(h, h_slide) / sigma >= LAMBDA_LIMIT) & np.isfinite(hz.pmax[idx])
+                & (area > 0.0) & np.isfinite(traction.unit_shear[idx]))
+    if not np.any(fast):
+        return None
+    k, load = idx[fast], traction.load[idx][fast]
+    area = area[fast]
+    mu_b = np.broadcast_to(at(trib.boundary_friction, every), every.shape)[k]
+    angles = BalanceAngles(
+        np.ascontiguousarray(v0[fast]), np.ascontiguousarray(v_cam[fast]), load,
+        np.ascontiguousarray(h[fast]), traction.unit_shear[k], area,
+        trib.eyring_stress * (area - 0.0) + trib.shear_pressure_coefficient * (load - 0.0),
+        mu_b * load)
+    law = BalanceLaw(float(radius), float(exponent), traction.law == "eyring",
+                     float(trib.eyring_stress), float(pin.pitch_diameter),
+                     float(pin.kinematic_viscosity), float(pin.f0), float(pin.f1), RESIDUAL,
+                     BRACKET, SLIP_MIN, HALVINGS, NU_N_LIMIT)
+    return fast, (angles, law)
 
 
 def _balance_roots(traction, pin, radius, idx) -> np.ndarray:

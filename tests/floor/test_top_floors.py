@@ -40,10 +40,12 @@ FOR_IN = re.compile(r"\bfor\s+[\w\s,()*]+?\s+in\b")
 #: (a rocker's valve lift, a flat follower's eccentricity, the transient film's steady
 #: reference) or a component that carries a table's metric. Nothing is picked by it.
 CURVES_AND_ROWS: dict[str, tuple[int, str]] = {
-    "camtrain/report/panels.py": (10, "a declared panel draws the curves the run has (the "
-                                  "kinematics of a rocker or a flat follower, the film "
-                                  "model's optional curves), and gives its axes back when "
-                                  "it has none"),
+    "camtrain/report/panels.py": (9, "a declared panel draws the curves the run has (the "
+                                 "kinematics of a rocker or a flat follower, the averaged "
+                                 "Reynolds film's own film beside the transient film), and "
+                                 "gives its axes back when it has none"),
+    "camtrain/report/panels_ehl.py": (1, "the declared film map of the elastic film, which "
+                                      "writes no map when no angle of its march was loaded"),
     "camtrain/report/bearing_plots.py": (3, "which components of a declared orbit sheet have "
                                          "an orbit, and which extremes of a grooved bearing"),
     "camtrain/report/engine_plots.py": (1, "which bearings of the declared load sheet have a "

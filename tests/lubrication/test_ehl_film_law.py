@@ -52,3 +52,28 @@ def test_a_point_contact_is_refused():
     text = (DECKS / "zeta_intake.toml").read_text() + '\n[tribology]\nfilm_model = "ehl"\n'
     with pytest.raises(InputError, match="tribology.film_model"):
         api.run(api.load_deck_text(text, "zeta_ehl.toml"))
+
+
+def test_the_plan_records_the_elastic_film_and_its_sheets_follow(elastic_run, tmp_path):
+    """The film step records the model it ran (Step.model = "ehl"); the sheets and panels
+    follow from it (EffectSpec.model_panels): the elastic film sheet with its three panels, and
+    the transient film sheet."""
+    from camtrain.report.sheets import write_plots
+
+    step = next(s for s in elastic_run.plan.steps if s.effect == "film")
+    assert step.model == "ehl"
+    written = write_plots(elastic_run, None, tmp_path, formats=("png",))
+    names = {p.relative_to(tmp_path).as_posix() for p in written}
+    assert {"sheet_elastic_film.png", "sheet_transient_film.png"} <= names
+    assert {f"panels/{p}.png" for p in ("film_map", "elastic_films", "pressure_over_hertz",
+                                        "transient_film", "film_pressures")} <= names
+
+
+def test_the_film_model_the_plan_records():
+    """The film runs the deck's film model under contact loads, the steady film without."""
+    from camtrain.effects import film
+
+    text = GOCMEN.replace('film_model = "averaged_reynolds"', 'film_model = "ehl"')
+    deck = api.load_deck_text(text, "gocmen_ehl.toml").model
+    assert film.model(deck, frozenset({"ContactLoad"})) == "ehl"
+    assert film.model(deck, frozenset()) == "steady"

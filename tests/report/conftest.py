@@ -14,15 +14,17 @@ OMEGA = 2500 * 2 * np.pi / 60
 R_B = 0.018
 
 
-def chain_plan(*effects: str):
+def chain_plan(*effects: str, models: dict[str, str] | None = None):
     """The plan of a valve-train run of these effects (what the report reads the findings and
-    sheets from)."""
+    sheets from); ``models``: effect -> the model its step records (Step.model), e.g.
+    ``{"film": "squeeze"}``."""
     from camtrain.catalogue import KINDS
     from camtrain.plan import Plan, Step
 
     specs = {spec.name: spec for spec in KINDS["valve_train"].effects}
-    return Plan("auto", tuple(Step(e, True, "synthetic", specs[e]) for e in effects),
-                "valve_train")
+    models = models or {}
+    return Plan("auto", tuple(Step(e, True, "synthetic", specs[e], models.get(e, ""))
+                              for e in effects), "valve_train")
 
 
 def synthetic(points: int = 360, *, level: str = "full", bounce: bool = False,

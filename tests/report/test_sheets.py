@@ -1,4 +1,4 @@
-"""Plot sheets and single panels: written, non-blank, and only the panels the columns allow."""
+"""Plot sheets and single panels: written, non-blank, and only the panels the plan declares."""
 from __future__ import annotations
 
 import numpy as np
@@ -59,6 +59,64 @@ def test_the_plan_picks_the_panels_not_the_columns(tmp_path):
     assert {"panels/load.png", "panels/film_angle.png", "panels/power.png"} <= names
 
 
+FULL_CHAIN = ("kinematics", "loads", "hertz", "film", "friction", "power")
+
+
+def _with_transient_columns(r):
+    """The columns a transient film writes (film_steady; the averaged Reynolds pressures)."""
+    h = r["film_min"]
+    r.add_column("film_steady", 0.8 * h, "m", "steady film")
+    r.add_column("film_transient", 0.9 * h, "m", "averaged Reynolds film before the floor")
+    r.add_column("film_pressure_max", 0.7 * r["hertz_pmax"], "Pa", "peak fluid pressure")
+    r.add_column("asperity_pressure_max", 0.1 * r["hertz_pmax"], "Pa", "peak asperity pressure")
+    r.add_column("asperity_load_share", np.full(h.shape, 0.2), "-", "asperity share")
+    return r
+
+
+def _sheet_panels(tmp_path, model: str) -> dict[str, set[str]]:
+    """The sheets a synthetic run whose film step ran ``model`` writes, with their panels."""
+    from tests.report.conftest import chain_plan
+
+    r = _with_transient_columns(synthetic(120))
+    r.plan = chain_plan(*FULL_CHAIN, models={"film": model})
+    written = write_plots(r, None, tmp_path / model, formats=("png",))
+    names = {p.relative_to(tmp_path / model).as_posix() for p in written}
+    return {"sheets": {n for n in names if n.startswith("sheet_")},
+            "panels": {n.removeprefix("panels/").removesuffix(".png")
+                       for n in names if n.startswith("panels/")}}
+
+
+def test_a_steady_film_draws_no_transient_sheet_whatever_its_columns(tmp_path):
+    """The plan's film step records the model it ran (Step.model): a steady film declares
+    none of the transient film's panels, even with film_steady and the pressures in its
+    columns."""
+    got = _sheet_panels(tmp_path, "steady")
+    assert "sheet_transient_film.png" not in got["sheets"]
+    assert not {"transient_film", "film_pressures"} & got["panels"]
+    assert "sheet_contact.png" in got["sheets"]
+
+
+@pytest.mark.parametrize("model,panels", [
+    ("squeeze", {"transient_film"}),
+    ("averaged_reynolds", {"transient_film", "film_pressures"})])
+def test_a_transient_film_draws_its_sheet(tmp_path, model, panels):
+    got = _sheet_panels(tmp_path, model)
+    assert "sheet_transient_film.png" in got["sheets"]
+    assert got["panels"] & {"transient_film", "film_pressures"} == panels
+
+
+def test_the_film_model_of_the_plan_survives_a_saved_result(tmp_path):
+    from camtrain.catalogue import declared_panels
+    from camtrain.result import Result
+    from tests.report.conftest import chain_plan
+
+    r = synthetic(60)
+    r.plan = chain_plan(*FULL_CHAIN, models={"film": "averaged_reynolds"})
+    back = Result.load(r.save(tmp_path / "r.npz"))
+    assert next(s.model for s in back.plan.steps if s.effect == "film") == "averaged_reynolds"
+    assert {"transient_film", "film_pressures"} <= declared_panels(back.plan)
+
+
 def test_every_panel_is_declared_by_an_effect_and_every_declared_panel_exists():
     """The panels the effects declare are those the sheets register (a name misspelt in the
     catalogue would draw nothing), and every panel of a cycle sheet has an effect that feeds
@@ -66,7 +124,8 @@ def test_every_panel_is_declared_by_an_effect_and_every_declared_panel_exists():
     from camtrain.catalogue import KINDS, LIFT_PANELS
     from camtrain.report.sheets import PANELS, SHEETS
 
-    declared = {p for kind in KINDS.values() for spec in kind.effects for p in spec.panels}
+    declared = {p for kind in KINDS.values() for spec in kind.effects
+                for p in (*spec.panels, *(q for _, ps in spec.model_panels for q in ps))}
     on_sheets = {p for _, panels in SHEETS.values() for p in panels}
     assert on_sheets == set(PANELS) | {"profile"}
     assert declared == on_sheets
