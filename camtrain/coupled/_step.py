@@ -21,6 +21,7 @@ from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
 from camtrain.coupled.records import LobeAt
 from camtrain.dynamics.hla.chamber import extension, plunger_force
+from camtrain.dynamics.hla.sealed import consistent_restart
 from camtrain.numerics.roots import false_position, illinois_update
 
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
@@ -148,7 +149,8 @@ def _substep(tau, sys, st, fric, at, x, stagger):
 @njit(cache=True)
 def _equilibrium(sys, st, fric, at, stagger):
     """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
-    block-diagonal inverse of M)."""
+    block-diagonal inverse of M); a sealed incompressible adjuster's chamber restarted
+    consistently with it (:func:`camtrain.dynamics.hla.sealed.consistent_restart`)."""
     lay, mats, uni = sys.lay, sys.mats, sys.uni
     K, C, Minv, blocks = mats.K, mats.C, mats.Minv, lay.blocks
     q, v, acc = st.q, st.v, st.acc
@@ -188,6 +190,9 @@ def _equilibrium(sys, st, fric, at, stagger):
             for e in range(lo, hi):
                 s += Minv[i, e] * rb[e]
             acc[i] = s
+    if sys.hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
+        for j in range(lay.ix.size):
+            consistent_restart(sys.hla, st.hp[j], acc, Minv, lay.ifol[j], lay.ipl[j])
 
 
 @njit(cache=True)

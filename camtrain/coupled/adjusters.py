@@ -31,6 +31,7 @@ def adjusters_start(asm, train, start, theta_grid, phases, q, v, acc, hp):
     the chamber keeps the single train's volume, its pressure, and the acceleration with
     the chamber's force (in place)."""
     from camtrain.dynamics.hla.chamber import plunger_force
+    from camtrain.dynamics.hla.sealed import consistent_restart
 
     period = 2.0 * math.pi
     record, ipl = adjuster_record(asm, train)
@@ -51,3 +52,7 @@ def adjusters_start(asm, train, start, theta_grid, phases, q, v, acc, hp):
         rel = (np.interp(at, start.theta, start.a[train.plunger], period=period)  # stiff chamber
                - np.interp(at, start.theta, start.a[train.follower], period=period))
         acc[ipl[j]] = acc[asm.ifol[j]] + rel
+    if record.on:       # a sealed incompressible chamber: no acceleration in its body
+        minv = np.linalg.inv(asm.M)
+        for j in range(len(phases)):
+            consistent_restart(record, hp[j], acc, minv, asm.ifol[j], ipl[j])
