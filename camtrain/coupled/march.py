@@ -196,26 +196,51 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
 def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     """Revolutions from the start until two agree at the grid samples (the friction corrected
     after each): the last one's loads, valve accelerations and films, revolutions, the last
-    change and (contact changes, steps cut short, staggered steps missed) of the last."""
+    change and (contact changes, steps cut short, staggered steps missed) of the last.
+
+    With lash adjusters the revolutions first march every chamber closed
+    (:func:`.adjusters.closed_chambers`) until they agree, then with the chambers' flows until
+    they agree again, the plungers' extensions as well as the loads (:func:`_change`)."""
     from ._revolution import revolution
+    from .adjusters import accelerate_chambers, closed_chambers, refill_contents
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
                   np.zeros((n_lobes, grid)), np.zeros((n_lobes, 2, grid)))
     width = 6 if sysm.hla.on else 5
+    marching = sysm._replace(hla=closed_chambers(sysm.hla)) if sysm.hla.on else sysm
     counts = (0, 0, 0)
-    previous, change, cycle = None, math.inf, 0
+    previous, change, cycle, series = None, math.inf, 0, ([], None)
     for cycle in range(1, int(cycles_max) + 1):
         work, at, pre = workspace(state.q.size, n_lobes, width)
-        counts = revolution(sysm, lob, path.record(), scheme, state, out, work, at, pre)
+        counts = revolution(marching, lob, path.record(), scheme, state, out, work, at, pre)
         path.after(out.load, out.film)
         if previous is not None:
-            scale = max(float(np.max(np.abs(out.load))), 1e-12)
-            change = float(np.max(np.abs(out.load - previous))) / scale
-            if change <= period_tol and cycle >= 2:
+            change = _change(out, previous, sysm.hla)
+            if marching is not sysm and change <= math.sqrt(period_tol):
+                marching = sysm     # the start-up transient has passed: open the chambers
+                refill_contents(sysm.hla, state, sysm.lay, out.hla)
+            elif change <= period_tol and cycle >= 2:
                 break
-        previous = out.load.copy()
+        if marching is sysm and sysm.hla.on:
+            series = accelerate_chambers(sysm, state, series)
+        previous = (out.load.copy(), out.hla[:, 1].copy())
     return out.load, out.acc, out.film, cycle, change, counts, out.hla
+
+
+def _change(out, previous, hla) -> float:
+    """The revolution's relative change from the ``previous`` one's (loads, extensions): the
+    largest change of a load over the largest load, and with lash adjusters
+    :func:`.adjusters.extension_change` (a chamber still pumping up or leaking down is not
+    periodic even where the loads hardly move)."""
+    from .adjusters import extension_change
+
+    loads, extensions = previous
+    scale = max(float(np.max(np.abs(out.load))), 1e-12)
+    change = float(np.max(np.abs(out.load - loads))) / scale
+    if hla.on:
+        change = max(change, extension_change(out.hla[:, 1], extensions, hla))
+    return change
 
 
 def _system(asm, train, drive, dt):
