@@ -11,11 +11,11 @@ Coupled: four trains (one lobe per cylinder) of decks/zeta_intake_camshaft_coupl
 the elastic camshaft marched together to their periodic state (the monolithic march, from the
 single train's periodic start), against the same four trains of
 decks/zeta_intake_camshaft_coupled.toml (the constant-load adjuster), same run. Target: 2x.
-Measured (2 shared cores): 3.99 s / 1.58 s = 2.5x (smallest CPU times 2.82 s / 1.31 s = 2.15x;
+Measured (2 shared cores): 3.7 s / 1.72 s = 2.16x (smallest CPU times 3.5 s / 1.61 s = 2.17x;
 was 5.0x): the chambers closed through the start-up transient, opened at their refill balance
-and their oil contents extrapolated reach their periodic state in 8 revolutions (3 closed)
-against the constant-load trains' 4 (30 marched plainly), at 7 steps per grid interval
-against 6 (target not met).
+and their oil contents solved by the secant rule reach their periodic state in 8 revolutions
+(3 closed) against the constant-load trains' 4 (30 marched plainly), at 7 steps per grid
+interval against 6 (target not quite met).
 """
 from __future__ import annotations
 

@@ -2,7 +2,7 @@
 the compiled record of the trains' adjuster with the state index of every lobe's plunger,
 every chamber's start from the single train's periodic response, and the chambers' way to
 their periodic state: closed through the shaft's start-up transient, then open, their oil
-contents extrapolated over the revolutions (docs/lash_adjusters.md)."""
+contents solved over the revolutions (secant rule) (docs/lash_adjusters.md)."""
 from __future__ import annotations
 
 import math
@@ -129,48 +129,32 @@ def refill_contents(record, state, lay, samples) -> None:
         _set_content(record, state, j, volumes[j], volume / phi)
 
 
-def extrapolate_contents(record, state, lay, history, ratios) -> bool:
-    """Aitken's extrapolation of every chamber's oil over the revolutions: ``history`` the
-    contents at the ends of the last revolutions (oldest first). Where a chamber's content
-    changes by a ratio r of its last change each revolution (|r| < 0.9: the refill and
-    leak-down balance converging; r from the last three contents, or from ``ratios`` (the
-    last extrapolation's, NaN where none) with two), it is set to the limit of that geometric
-    series (the last content plus its last change times r/(1 - r)), by the pressure at which
-    the chamber holds it in its present volume (in place); ``ratios`` keeps the r used.
-    Returns whether any chamber moved."""
-    last = history[-1] - history[-2]
-    if len(history) >= 3:
-        before = history[-2] - history[-3]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratios[:] = np.where(before != 0.0, last / before, np.nan)
-    volumes = _volumes(record, state, lay)
-    moved = False
-    for j in range(last.size):
-        r = ratios[j]
-        if not abs(r) < 0.9:
-            continue
-        moved |= _set_content(record, state, j, volumes[j],
-                              history[-1][j] + last[j] * r / (1.0 - r))
-    return moved
-
-
 def accelerate_chambers(sysm, state, series):
-    """The open chambers' contents after one more revolution (:func:`chamber_contents`) added
-    to ``series`` = (contents since the last extrapolation, its ratios) and, with three in a
-    row or two and the last ratios, their extrapolation (:func:`extrapolate_contents`), which
-    starts the contents again. Returns the series."""
+    """After an open revolution, every chamber's oil content moved toward its periodic value
+    by the secant rule on its net change over a revolution (in place): ``series`` = (every
+    content at the revolution's start, the last revolution's (start contents, net changes) or
+    None). The periodic chamber keeps its content over a revolution (refill = leak-down), a
+    root of the net change f(m) = m_end - m_start; with two revolutions the secant through
+    them gives the root, taken where the revolution's map contracts (its slope 1 + f' within
+    0.9 of zero: the refill and leak-down balance converging), else the content the
+    revolution ended with. Each chamber is set to its content by the pressure at which it
+    holds it in its present volume. Returns the series for the next revolution."""
     now = chamber_contents(sysm.hla, state, sysm.lay)
     if now is None:
         return series
-    contents, ratios = series
-    contents = contents[-2:] + [now]
-    if ratios is None:
-        ratios = np.full(now.size, np.nan)
-    known = len(contents) == 2 and bool(np.any(np.isfinite(ratios)))
-    if (len(contents) == 3 or known) and extrapolate_contents(sysm.hla, state, sysm.lay,
-                                                              contents, ratios):
-        return [chamber_contents(sysm.hla, state, sysm.lay)], ratios
-    return contents, ratios
+    start, last = series
+    change = now - start
+    target = now.copy()
+    if last is not None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            slope = (change - last[1]) / (start - last[0])
+        ok = np.isfinite(slope) & (np.abs(1.0 + slope) < 0.9)
+        target = np.where(ok, start - change / np.where(ok, slope, 1.0), now)
+    volumes = _volumes(sysm.hla, state, sysm.lay)
+    for j in range(now.size):
+        if target[j] != now[j]:
+            _set_content(sysm.hla, state, j, volumes[j], target[j])
+    return chamber_contents(sysm.hla, state, sysm.lay), (start, change)
 
 
 def extension_change(extensions, previous, record) -> float:

@@ -199,10 +199,14 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     change and (contact changes, steps cut short, staggered steps missed) of the last.
 
     With lash adjusters the revolutions first march every chamber closed
-    (:func:`.adjusters.closed_chambers`) until they agree, then with the chambers' flows until
-    they agree again, the plungers' extensions as well as the loads (:func:`_change`)."""
+    (:func:`.adjusters.closed_chambers`) until they agree within the square root of the
+    tolerance, then open them at their refill balance (:func:`.adjusters.refill_contents`),
+    each open revolution followed by the secant rule on every chamber's content
+    (:func:`.adjusters.accelerate_chambers`), until they agree, the plungers' extensions as
+    well as the loads (:func:`_change`)."""
     from ._revolution import revolution
-    from .adjusters import accelerate_chambers, closed_chambers, refill_contents
+    from .adjusters import (accelerate_chambers, chamber_contents, closed_chambers,
+                            refill_contents)
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
@@ -210,20 +214,22 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     width = 6 if sysm.hla.on else 5
     marching = sysm._replace(hla=closed_chambers(sysm.hla)) if sysm.hla.on else sysm
     counts = (0, 0, 0)
-    previous, change, cycle, series = None, math.inf, 0, ([], None)
+    previous, change, cycle, series = None, math.inf, 0, None
     for cycle in range(1, int(cycles_max) + 1):
         work, at, pre = workspace(state.q.size, n_lobes, width)
         counts = revolution(marching, lob, path.record(), scheme, state, out, work, at, pre)
         path.after(out.load, out.film)
+        if series is not None:
+            series = accelerate_chambers(sysm, state, series)
         if previous is not None:
             change = _change(out, previous, sysm.hla)
             if marching is not sysm and change <= math.sqrt(period_tol):
                 marching = sysm     # the start-up transient has passed: open the chambers
                 refill_contents(sysm.hla, state, sysm.lay, out.hla)
+                contents = chamber_contents(sysm.hla, state, sysm.lay)
+                series = None if contents is None else (contents, None)
             elif change <= period_tol and cycle >= 2:
                 break
-        if marching is sysm and sysm.hla.on:
-            series = accelerate_chambers(sysm, state, series)
         previous = (out.load.copy(), out.hla[:, 1].copy())
     return out.load, out.acc, out.film, cycle, change, counts, out.hla
 

@@ -166,7 +166,7 @@ def test_sealed_chamber_that_holds_tension_is_the_rigid_adjuster_on_the_elastic_
 
 def _plain(monkeypatch):
     """The coupled march without its way to the chambers' periodic state: chambers open from
-    the start, no refill balance, no extrapolation."""
+    the start, no refill balance, no secant rule."""
     from camtrain.coupled import adjusters
 
     monkeypatch.setattr(adjusters, "closed_chambers", lambda record: record)
@@ -178,7 +178,7 @@ def test_chambers_reach_the_periodic_state_of_the_plain_march_in_fewer_revolutio
         monkeypatch):
     """Four trains of decks/zeta_intake_camshaft_coupled_hla.toml on the elastic shaft (the
     benchmark's problem): the chambers closed through the start-up transient, opened at the
-    refill balance and their contents extrapolated, the march is periodic (tolerance 1e-4)
+    refill balance and their contents solved by the secant rule, the march is periodic (tolerance 1e-4)
     in 8 revolutions (measured; 3 closed); marched plainly its start-up pumps two plungers
     50-80 um out and it takes 30 (measured), to the same state: loads within 1e-3 of the
     peak and every plunger's mean extension within 0.05 um (measured 0.01 um)."""
