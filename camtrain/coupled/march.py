@@ -205,8 +205,7 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     (:func:`.adjusters.accelerate_chambers`), until they agree, the plungers' extensions as
     well as the loads (:func:`_change`)."""
     from ._revolution import revolution
-    from .adjusters import (accelerate_chambers, chamber_contents, closed_chambers,
-                            refill_contents)
+    from .adjusters import accelerate_chambers, chamber_contents, closed_chambers, refill_contents
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
