@@ -157,6 +157,13 @@ PUBLISHED = {
                                      "marched together. Every train, shaft, support and belt "
                                      "stiffness is assumed (flagged in the deck): no published "
                                      "number to compare; see docs/camshaft_dynamics.md.", []),
+    "zeta_intake_camshaft_coupled_hla": ("The coupled Zeta intake camshaft of "
+                                         "decks/zeta_intake_camshaft_coupled.toml with every "
+                                         "bucket's hydraulic lash adjuster marched in its train. "
+                                         "Train, shaft and adjuster data are assumed (flagged in "
+                                         "the deck): no published number to compare; see "
+                                         "docs/camshaft_dynamics.md and docs/lash_adjusters.md.",
+                                         []),
     "zeta_intake_camshaft": ("The whole Zeta intake camshaft: eight intake cams and five plain "
                              "bearings, 1500 rpm camshaft. camtrain's drive power is the "
                              "cycle mean of the summed lobe torques, which over a cycle is the "

@@ -36,13 +36,14 @@ def predict_loads(w_prev, w_older, predictor, out):
 @njit(cache=True)
 def add_shaft_loads(z, w_pred, at):
     """The predicted contact loads on every lobe's shaft coordinates (x, y, phi) of the
-    five-per-lobe force vector ``z``: -W times the contact's gradient (``at``: every lobe's
+    per-lobe force vector ``z``: -W times the contact's gradient (``at``: every lobe's
     inputs at the step's end), as the closed contact of the monolithic step pushes the
     shaft."""
+    w = z.size // w_pred.size     # coordinates per lobe (5, 6 with lash adjusters)
     for j in range(w_pred.size):
-        z[5 * j] -= w_pred[j] * at.gx[j]
-        z[5 * j + 1] -= w_pred[j] * at.gy[j]
-        z[5 * j + 2] -= w_pred[j] * at.gphi[j]
+        z[w * j] -= w_pred[j] * at.gx[j]
+        z[w * j + 1] -= w_pred[j] * at.gy[j]
+        z[w * j + 2] -= w_pred[j] * at.gphi[j]
 
 
 @njit(cache=True)

@@ -16,6 +16,7 @@ from numba import njit
 from camtrain.coupled._film_kernel import film_step, table_coefficient
 from camtrain.coupled._partition import predict_loads
 from camtrain.coupled._step import advance, cam_gap
+from camtrain.dynamics.hla.chamber import extension
 from camtrain.numerics.compile_notice import announce
 
 
@@ -89,6 +90,7 @@ def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
             work.q_s[i], work.v_s[i], work.acc_s[i] = q[i], v[i], acc[i]
         for j in range(act_c.size):
             work.c_s[j], work.s_s[j] = act_c[j], act_s[j]
+        work.hp_s[:] = st.hp
         predict_loads(st.w_prev, st.w_older, scheme.predictor, work.w_pred)
     missed = 0
     located, over = 0, 0
@@ -99,6 +101,7 @@ def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
             for j in range(act_c.size):
                 act_c[j], act_s[j] = work.c_s[j], work.s_s[j]
                 work.w_pred[j] = work.w_end[j]
+            st.hp[:] = work.hp_s
         located, over = advance(s, sys, st, work, at, pre, lob, torque, stagger, it == 0)
         if not stagger or iterations == 1:
             break
@@ -194,6 +197,10 @@ def revolution(sys, lob, fric, scheme, st, out, work, at, pre):
                 out.acc[j, g] = st.acc[sys.lay.valve[j]]
                 if fric.film:
                     out.film[j, g] = st.film[j]
+                if sys.hla.on:
+                    f, p = sys.lay.ifol[j], sys.lay.ipl[j]
+                    out.hla[j, 0, g] = st.hp[j, 0]
+                    out.hla[j, 1, g] = extension(st.q[f], st.q[p], sys.hla)
     return switches_total, cut, missed
 
 

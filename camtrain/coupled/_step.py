@@ -17,9 +17,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.coupled._lowrank import basis_rows, woodbury
+from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
 from camtrain.coupled.records import LobeAt
+from camtrain.dynamics.hla.chamber import extension, plunger_force
+from camtrain.dynamics.hla.sealed import consistent_restart
 from camtrain.numerics.roots import false_position, illinois_update
 
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
@@ -95,10 +97,10 @@ def _substep(tau, sys, st, fric, at, x, stagger):
     the sub-step's end as prescribed input (:mod:`._partition`)."""
     lay = sys.lay
     n = st.q.size
-    lobes = lay.ix.size
+    lobes, w = lay.ix.size, width(lay)
     a1 = 2.0 / tau
     x0 = np.empty(n)
-    basis = np.zeros((n, 5 * lobes))
+    basis = np.zeros((n, w * lobes))
     K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
     q, v, acc = st.q, st.v, st.acc
     a0 = 4.0 / (tau * tau)
@@ -107,10 +109,10 @@ def _substep(tau, sys, st, fric, at, x, stagger):
         size = hi - lo
         cols = []
         for j in range(lobes):
-            for e, dof in enumerate((lay.ix[j], lay.iy[j], lay.iphi[j], lay.ifol[j],
-                                     lay.ival[j])):
-                if lo <= dof < hi:
-                    cols.append((5 * j + e, dof))
+            dofs = lobe_dofs(lay, j)
+            for e in range(w):
+                if lo <= dofs[e] < hi:
+                    cols.append((w * j + e, dofs[e]))
         A = np.empty((size, size))
         R = np.zeros((size, 1 + len(cols)))
         for i in range(size):
@@ -131,7 +133,7 @@ def _substep(tau, sys, st, fric, at, x, stagger):
             col = cols[c][0]
             for i in range(size):
                 basis[lo + i, col] = S[i, 1 + c]
-    z = np.zeros(5 * lobes)     # friction is in the right-hand side already
+    z = np.zeros(w * lobes)     # friction is in the right-hand side already
     if stagger:     # the shaft's part of x0 is final: no contact column reaches it
         v0 = np.empty(n)
         for i in range(n):
@@ -139,15 +141,16 @@ def _substep(tau, sys, st, fric, at, x, stagger):
         pre = LobeAt(np.empty(lobes), np.empty(lobes), np.zeros(lobes), np.zeros(lobes),
                      np.zeros(lobes))
         prescribed_inputs(x0, v0, at, lay, pre)
-        woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, pre, a1, x)
+        woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, pre, a1, x, sys.hla)
         return
-    woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x)
+    woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x, sys.hla)
 
 
 @njit(cache=True)
 def _equilibrium(sys, st, fric, at, stagger):
     """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
-    block-diagonal inverse of M)."""
+    block-diagonal inverse of M); a sealed incompressible adjuster's chamber restarted
+    consistently with it (:func:`camtrain.dynamics.hla.sealed.consistent_restart`)."""
     lay, mats, uni = sys.lay, sys.mats, sys.uni
     K, C, Minv, blocks = mats.K, mats.C, mats.Minv, lay.blocks
     q, v, acc = st.q, st.v, st.acc
@@ -169,6 +172,12 @@ def _equilibrium(sys, st, fric, at, stagger):
                 r[lay.iphi[j]] -= w * at.gphi[j]
         if st.act_s[j]:
             r[lay.ival[j]] += ks * (offs - q[lay.ival[j]]) - cs * v[lay.ival[j]]
+        if sys.hla.on:     # the adjuster's chamber at its pressure: body and plunger apart
+            f, p = lay.ifol[j], lay.ipl[j]
+            force = sys.hla.ratio * plunger_force(st.hp[j, 0], extension(q[f], q[p], sys.hla),
+                                                  sys.hla)
+            r[f] -= force
+            r[p] += force
     for k in range(blocks.size - 1):
         lo, hi = blocks[k], blocks[k + 1]
         for i in range(lo, hi):
@@ -181,6 +190,9 @@ def _equilibrium(sys, st, fric, at, stagger):
             for e in range(lo, hi):
                 s += Minv[i, e] * rb[e]
             acc[i] = s
+    if sys.hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
+        for j in range(lay.ix.size):
+            consistent_restart(sys.hla, st.hp[j], acc, Minv, lay.ifol[j], lay.ipl[j])
 
 
 @njit(cache=True)
@@ -274,6 +286,7 @@ def _split(sys, st, work, at, lob, s, stagger):
                 q[i] = x[i]
                 v[i] = work.v1[i]
                 acc[i] = work.a1v[i]
+            st.hp[:] = st.hp_end
             return switches, 1 if first >= 0 else 0
         # take the step up to the change, switch the contact, restart the acceleration
         hs = alpha * h
@@ -283,6 +296,7 @@ def _split(sys, st, work, at, lob, s, stagger):
             for i in range(n):
                 v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
                 q[i] = x[i]
+            st.hp[:] = st.hp_end
         tau += hs
         if seat:
             st.act_s[first] = not st.act_s[first]
@@ -309,7 +323,7 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
     q, v, acc = st.q, st.v, st.acc
     base, hub, zf, x, v1 = work.base, work.hub, work.zf, work.x, work.v1
     a0, a1, dt = step.a0, step.a1, step.dt
-    n, lobes = q.size, lay.ix.size
+    n, lobes, w = q.size, lay.ix.size, width(lay)
     if fresh:   # the full step with the states of its start
         rhs_w, rhs_c, blocks = work.rhs_w, work.rhs_c, lay.blocks
         for i in range(n):
@@ -330,24 +344,23 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
         if lob.drive_acc[s] != 0.0:    # the drive's speed oscillation: -J theta'' on the twist
             for i in range(n):
                 base[i] -= drive.u[i] * lob.drive_acc[s]
+    zf[:] = 0.0
     for j in range(lobes):      # friction on the lobe's coordinates
-        zf[5 * j] = -work.tang[j] * lob.sina[j]
-        zf[5 * j + 1] = work.tang[j] * lob.cosa[j]
-        zf[5 * j + 2] = -work.fr[j] * work.arm[j]
-        zf[5 * j + 3] = 0.0
-        zf[5 * j + 4] = 0.0
+        zf[w * j] = -work.tang[j] * lob.sina[j]
+        zf[w * j + 1] = work.tang[j] * lob.cosa[j]
+        zf[w * j + 2] = -work.fr[j] * work.arm[j]
     if stagger:     # the shaft first, under the predicted loads; the trains on its motion
         add_shaft_loads(zf, work.w_pred, at)
         for i in range(n):
             total_x = base[i]
-            for c in range(5 * lobes):
+            for c in range(w * lobes):
                 total_x += step.basis[i, c] * zf[c]
             x[i] = total_x
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         prescribed_inputs(x, v1, at, lay, pre)
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, pre, a1, x)
+        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, pre, a1, x, sys.hla)
     else:
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x)
+        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x, sys.hla)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
     if _changes(lay, sys.uni, st, x, v1, at):
@@ -356,6 +369,7 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
         acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
         q[i] = x[i]
         v[i] = v1[i]
+    st.hp[:] = st.hp_end
     return 0, 0
 
 

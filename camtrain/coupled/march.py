@@ -49,6 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .adjusters import adjuster_record, adjusters_start
 from .assembly import assemble
 from .records import (
     Drive,
@@ -76,7 +77,9 @@ class MonolithicResult:
     revolution and the steps of it that had more than the kernel's limit of them; ``film``
     (n_lobes, n) every contact's level-1 film [m] (held where the contact is open), or None
     without the squeeze film; ``missed`` the staggered steps of the last revolution whose
-    passes did not agree within the iterations allowed."""
+    passes did not agree within the iterations allowed; ``adjuster`` (n_lobes, 2, n) every
+    lash adjuster's chamber pressure [Pa, gauge] and plunger extension [m], or None without
+    adjusters."""
 
     loads: np.ndarray
     valve_acceleration: np.ndarray
@@ -88,6 +91,7 @@ class MonolithicResult:
     cut: int = 0
     film: np.ndarray | None = None
     missed: int = 0
+    adjuster: np.ndarray | None = None
 
 
 def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, substeps: int,
@@ -171,7 +175,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         path.lagged_start(start)
     scheme = Scheme(bool(staggered), PREDICTORS[predictor], int(iterations), float(step_tol),
                     int(substeps))
-    loads, valve_acc, films, cycle, change, counts = _revolutions(
+    loads, valve_acc, films, cycle, change, counts, adjuster = _revolutions(
         sysm, lob, path, scheme, state, cycles_max, period_tol)
     if oscillates:  # samples are uniform in time: carry them onto the grid angles
         from camtrain.dynamics.integrators import samples_to_grid
@@ -181,33 +185,67 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
         loads = samples_to_grid(loads, at, theta_grid)
         valve_acc = samples_to_grid(valve_acc, at, theta_grid)
         films = samples_to_grid(films, at, theta_grid)
+        adjuster = np.stack([samples_to_grid(adjuster[:, k], at, theta_grid) for k in (0, 1)],
+                            axis=1)
     return MonolithicResult(loads.copy(), valve_acc.copy(), cycle, change <= period_tol,
                             change, steps, int(counts[0]), int(counts[1]),
-                            films.copy() if film is not None else None, int(counts[2]))
+                            films.copy() if film is not None else None, int(counts[2]),
+                            adjuster.copy() if train.hla is not None else None)
 
 
 def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     """Revolutions from the start until two agree at the grid samples (the friction corrected
     after each): the last one's loads, valve accelerations and films, revolutions, the last
-    change and (contact changes, steps cut short, staggered steps missed) of the last."""
+    change and (contact changes, steps cut short, staggered steps missed) of the last.
+
+    With lash adjusters the revolutions first march every chamber closed
+    (:func:`.adjusters.closed_chambers`) until they agree within the square root of the
+    tolerance, then open them at their refill balance (:func:`.adjusters.refill_contents`),
+    each open revolution followed by the secant rule on every chamber's content
+    (:func:`.adjusters.accelerate_chambers`), until they agree, the plungers' extensions as
+    well as the loads (:func:`_change`)."""
     from ._revolution import revolution
+    from .adjusters import accelerate_chambers, chamber_contents, closed_chambers, refill_contents
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
-                  np.zeros((n_lobes, grid)))
+                  np.zeros((n_lobes, grid)), np.zeros((n_lobes, 2, grid)))
+    width = 6 if sysm.hla.on else 5
+    marching = sysm._replace(hla=closed_chambers(sysm.hla)) if sysm.hla.on else sysm
     counts = (0, 0, 0)
-    previous, change, cycle = None, math.inf, 0
+    previous, change, cycle, series = None, math.inf, 0, None
     for cycle in range(1, int(cycles_max) + 1):
-        work, at, pre = workspace(state.q.size, n_lobes)
-        counts = revolution(sysm, lob, path.record(), scheme, state, out, work, at, pre)
+        work, at, pre = workspace(state.q.size, n_lobes, width)
+        counts = revolution(marching, lob, path.record(), scheme, state, out, work, at, pre)
         path.after(out.load, out.film)
+        if series is not None:
+            series = accelerate_chambers(sysm, state, series)
         if previous is not None:
-            scale = max(float(np.max(np.abs(out.load))), 1e-12)
-            change = float(np.max(np.abs(out.load - previous))) / scale
-            if change <= period_tol and cycle >= 2:
+            change = _change(out, previous, sysm.hla)
+            if marching is not sysm and change <= math.sqrt(period_tol):
+                marching = sysm     # the start-up transient has passed: open the chambers
+                refill_contents(sysm.hla, state, sysm.lay, out.hla)
+                contents = chamber_contents(sysm.hla, state, sysm.lay)
+                series = None if contents is None else (contents, None)
+            elif change <= period_tol and cycle >= 2:
                 break
-        previous = out.load.copy()
-    return out.load, out.acc, out.film, cycle, change, counts
+        previous = (out.load.copy(), out.hla[:, 1].copy())
+    return out.load, out.acc, out.film, cycle, change, counts, out.hla
+
+
+def _change(out, previous, hla) -> float:
+    """The revolution's relative change from the ``previous`` one's (loads, extensions): the
+    largest change of a load over the largest load, and with lash adjusters
+    :func:`.adjusters.extension_change` (a chamber still pumping up or leaking down is not
+    periodic even where the loads hardly move)."""
+    from .adjusters import extension_change
+
+    loads, extensions = previous
+    scale = max(float(np.max(np.abs(out.load))), 1e-12)
+    change = float(np.max(np.abs(out.load - loads))) / scale
+    if hla.on:
+        change = max(change, extension_change(out.hla[:, 1], extensions, hla))
+    return change
 
 
 def _system(asm, train, drive, dt):
@@ -232,20 +270,25 @@ def _system(asm, train, drive, dt):
     P, Q, x_f0 = Ainv @ M, Ainv @ C, Ainv @ f0
     Minv = np.linalg.inv(M)      # block diagonal as M (the acceleration after a switch)
     n_lobes = asm.ix.size
-    # A^-1 of every basis vector a contact gradient is made of: (x, y, phi, follower, valve)
-    ainv_basis = np.empty((n, 5 * n_lobes))
+    hla, ipl = adjuster_record(asm, train)
+    # A^-1 of every basis vector a contact gradient is made of: (x, y, phi, follower, valve;
+    # the plunger, where an adjuster's chamber pushes)
+    lay = Layout(asm.ix, asm.iy, asm.iphi, asm.ifol, asm.ival, asm.valve, asm.blocks, ipl)
+    width = 6 if hla.on else 5
+    ainv_basis = np.empty((n, width * n_lobes))
     for j in range(n_lobes):
-        for k, dof in enumerate((asm.ix[j], asm.iy[j], asm.iphi[j], asm.ifol[j], asm.ival[j])):
-            ainv_basis[:, 5 * j + k] = Ainv[:, dof]
+        dofs = (asm.ix[j], asm.iy[j], asm.iphi[j], asm.ifol[j], asm.ival[j], ipl[j] if hla.on
+                else -1)
+        for k in range(width):
+            ainv_basis[:, width * j + k] = Ainv[:, dofs[k]]
     hub_basis = (np.ascontiguousarray(Ainv[:, [hub_x, hub_y]]) if hub_x >= 0
                  else np.zeros((n, 2)))
     drive_j = np.zeros(n)      # J 1 on the twist coordinates: the drive's inertia load
     drive_j[asm.t0:asm.tr0] = M[asm.t0:asm.tr0, asm.t0:asm.tr0].sum(axis=1)
-    lay = Layout(asm.ix, asm.iy, asm.iphi, asm.ifol, asm.ival, asm.valve, asm.blocks)
     step = Stepper(dt, a0, a1, x_f0, P, Q, ainv_basis, basis_rows(ainv_basis, lay))
     hub = Drive(hub_x, hub_y, hub_dir[0], hub_dir[1], hub_radius, hub_basis, drive_j,
                 Ainv @ drive_j)
-    sysm = System(lay, Matrices(K, C, M, Minv, f0), step, hub, unilateral(train))
+    sysm = System(lay, Matrices(K, C, M, Minv, f0), step, hub, unilateral(train), hla)
     return sysm, f0, None if hub_x < 0 else (hub_radius, hub_dir, f0[hub_x], f0[hub_y])
 
 
@@ -381,8 +424,13 @@ def _start(asm, lob, path, cam, train, f0, hub, start, lobes, friction_arm):
             start, cam, path.theta_grid, phases, ratio, axes, train, asm.M, asm.K, asm.C, f0,
             omega, asm, lob.b[:, -1], lob.bd[:, -1], lob.gx[:, -1], lob.gy[:, -1],
             lob.gphi[:, -1], drag, hub)
+    hp = np.zeros((n_lobes, 4))
+    if train.hla is not None:      # every chamber at rest: the supply pressure, no flow
+        hp[:, 0] = train.hla.supply_pressure
+        if start is not None:
+            adjusters_start(asm, train, start, path.theta_grid, phases, q, v, acc, hp)
     return State(q, v, acc, act_c, act_s, np.zeros(n_lobes), np.zeros(n_lobes),
-                 path.fs["h"])
+                 path.fs["h"], hp, hp.copy())
 
 
 def _start_loads(state, lob, train, asm) -> np.ndarray:

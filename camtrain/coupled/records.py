@@ -25,8 +25,9 @@ from collections import namedtuple
 import numpy as np
 
 #: state indices of every lobe's shaft coordinates (ix, iy, iphi), follower (ifol), seat
-#: (ival), valve (valve), and the block boundaries of the block-diagonal linear part
-Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks")
+#: (ival), valve (valve), the block boundaries of the block-diagonal linear part and every
+#: lobe's lash-adjuster plunger (ipl; empty without adjusters)
+Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks ipl")
 
 #: the linear part: K, C, M, the block-diagonal inverse of M, the constant forces f0
 Matrices = namedtuple("Matrices", "K C M Minv f0")
@@ -39,8 +40,9 @@ Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 P Q basis G")
 #: A^-1 at the two coordinates (basis); J 1 on the twist (j) and A^-1 of it (u)
 Drive = namedtuple("Drive", "x y cos sin radius basis j u")
 
-#: everything set once: Layout, Matrices, Stepper, Drive, Unilateral (uni)
-System = namedtuple("System", "lay mats step drive uni")
+#: everything set once: Layout, Matrices, Stepper, Drive, Unilateral (uni), the lash
+#: adjuster of every train (a :data:`camtrain.dynamics.records.Hydraulic`, ``on`` 0 without)
+System = namedtuple("System", "lay mats step drive uni hla")
 
 #: every lobe's inputs at every step (lobes, steps): valve-referred lift b, its rate bd, the
 #: contact gradient (gx, gy, gphi), friction arm, rocker ratio; follower axes (cosa, sina),
@@ -57,26 +59,30 @@ Friction = namedtuple("Friction", "table corr ln_first ln_step film squeeze unit
 #: stagger (bool), predictor code, passes per step at most, their tolerance, steps per sample
 Scheme = namedtuple("Scheme", "stagger predictor iterations step_tol substeps")
 
-#: q, v, acc, the contact states (act_c, act_s), the last two steps' loads, the films
-State = namedtuple("State", "q v acc act_c act_s w_prev w_older film")
+#: q, v, acc, the contact states (act_c, act_s), the last two steps' loads, the films; every
+#: adjuster's chamber ``hp`` (lobes, 4: pressure, check-valve and leak flows, last pressure
+#: rate, as the single train's) and its value at the trial step's end ``hp_end``
+State = namedtuple("State", "q v acc act_c act_s w_prev w_older film hp hp_end")
 
-#: the grid samples (lobes, grid): load, valve acceleration, film
-Samples = namedtuple("Samples", "load acc film")
+#: the grid samples (lobes, grid): load, valve acceleration, film; every adjuster's chamber
+#: pressure and plunger extension (lobes, 2, grid)
+Samples = namedtuple("Samples", "load acc film hla")
 
 #: every lobe's inputs at an instant: b, bd, gx, gy, gphi (arrays over the lobes)
 LobeAt = namedtuple("LobeAt", "b bd gx gy gphi")
 
 #: work arrays of a revolution (n: state size, L: lobes)
 Work = namedtuple("Work", "rhs_w rhs_c base x v1 a1v fric zf hub fr tang arm b0 bd0 w_pred "
-                          "w_end q_s v_s acc_s c_s s_s")
+                          "w_end q_s v_s acc_s c_s s_s hp_s")
 
 
-def workspace(n: int, lobes: int):
-    """(Work, the inputs at the step's end, the staggered step's prescribed inputs)."""
+def workspace(n: int, lobes: int, width: int = 5):
+    """(Work, the inputs at the step's end, the staggered step's prescribed inputs); ``width``
+    coordinates per lobe in the contact update (6 with lash adjusters)."""
     e, z = np.empty, np.zeros
-    work = Work(e(n), e(n), e(n), e(n), e(n), e(n), z(n), z(5 * lobes), z(2), z(lobes),
+    work = Work(e(n), e(n), e(n), e(n), e(n), e(n), z(n), z(width * lobes), z(2), z(lobes),
                 z(lobes), z(lobes), e(lobes), e(lobes), z(lobes), z(lobes), e(n), e(n), e(n),
-                e(lobes, dtype=np.bool_), e(lobes, dtype=np.bool_))
+                e(lobes, dtype=np.bool_), e(lobes, dtype=np.bool_), z((lobes, 4)))
     at = LobeAt(e(lobes), e(lobes), e(lobes), e(lobes), e(lobes))
     pre = LobeAt(e(lobes), e(lobes), z(lobes), z(lobes), z(lobes))
     return work, at, pre

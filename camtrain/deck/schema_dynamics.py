@@ -206,6 +206,13 @@ def dynamics_problems(deck) -> list[Problem]:
                            "the cam contact's sliding friction: a turning roller's traction is "
                            "not in it", "two_way", "one_way with a [roller] section (or "
                            "roller.pin = \"locked\")"))
+    hla = getattr(d, "lash_adjuster", None)
+    if (hla is not None and hla.check_valve == "ball" and shaft is not None
+            and getattr(shaft, "coupling", "one_way") == "two_way"):
+        out.append(Problem("dynamics.lash_adjuster.check_valve", "the two-way coupled march's "
+                           "chambers take the quasi-static check valve (their way to the "
+                           "periodic state sets each chamber's oil at its cracking threshold)",
+                           "ball", "quasi_static, or camshaft.flexibility.coupling = one_way"))
     if (roller is not None and d.roller == "marched" and roller.pin != "locked"
             and d.integrator != "newmark"):
         out.append(Problem("dynamics.integrator", "the roller's speed is marched by the newmark "

@@ -126,10 +126,6 @@ def lash_adjuster_problems(deck) -> list[Problem]:
     if h.viscosity is None and getattr(deck, "lubricant", None) is None:
         out.append(Problem(f"{path}.viscosity", "is required without a [lubricant] section",
                            None, "the oil viscosity in Pa·s"))
-    shaft = getattr(getattr(deck, "camshaft", None), "flexibility", None)
-    if shaft is not None and getattr(shaft, "coupling", "one_way") == "two_way":
-        out.append(Problem("camshaft.flexibility.coupling", f"[{path}] is not marched by the "
-                           "two-way coupled camshaft yet", "two_way", "one_way"))
     if h.location == "pivot" and deck.mechanism.type != "finger":
         out.append(Problem(f"{path}.location", "pivot applies to an end-pivoted finger "
                            "follower", "pivot", "follower or auto"))

@@ -34,6 +34,7 @@ import numpy as np
 from numba import njit
 
 from camtrain.dynamics.hla.chamber import chamber_advance, chamber_step, extension, plunger_force
+from camtrain.dynamics.hla.sealed import restart_force
 from camtrain.dynamics.spin.step import spin_step
 from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
@@ -317,7 +318,8 @@ def _locate(tr, uni, cl, inp, st, end, sub, work, first, alpha, n, tau, h):
 @njit(cache=True)
 def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
     """Contact ``first`` switched at time tau into step n: its event recorded, the
-    acceleration restarted from the equilibrium. Returns the events so far."""
+    acceleration restarted from the equilibrium (a sealed incompressible adjuster's chamber
+    with it: :mod:`camtrain.dynamics.hla.sealed`). Returns the events so far."""
     closing = not st.act[first]
     st.act[first] = closing
     bj, bdj = _input(inp.b, inp.bd, first, n, tau, inp.dt)
@@ -327,6 +329,13 @@ def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
         out.ev_kind[nev] = 2 * first + (1 if closing else 0)
         out.ev_rate[nev] = rate
     _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a, st.hp[0])
+    hla = tr.hla
+    if hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
+        f, q, r = hla.f, hla.q, hla.ratio
+        force = restart_force(hla, st.hp, -r * (st.a[f] - st.a[q]),
+                              r * r * (1.0 / tr.m[f] + 1.0 / tr.m[q]))
+        st.a[f] -= r * force / tr.m[f]
+        st.a[q] += r * force / tr.m[q]
     return nev + 1
 
 

@@ -1,0 +1,165 @@
+"""Every lobe's hydraulic lash adjuster in the coupled march (:mod:`camtrain.coupled.march`):
+the compiled record of the trains' adjuster with the state index of every lobe's plunger,
+every chamber's start from the single train's periodic response, and the chambers' way to
+their periodic state: closed through the shaft's start-up transient, then open, their oil
+contents solved over the revolutions (secant rule) (docs/lash_adjusters.md)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def adjuster_record(asm, train):
+    """Every train's lash adjuster (one record: the trains are copies, its nodes train-local)
+    and the state index of every lobe's plunger; without one, ``no_adjuster`` and none."""
+    from camtrain.dynamics.hla import hydraulic_record, no_adjuster
+    from camtrain.dynamics.train import CAM, static_state
+
+    if train.hla is None:
+        return no_adjuster(), np.zeros(0, dtype=np.int64)
+    if train.follower != train.uni_node[CAM]:
+        raise ValueError("the coupled march takes a lash adjuster on the cam's follower node")
+    u0 = static_state(train)[0]
+    w0 = float(u0[train.follower] - u0[train.plunger])
+    record = hydraulic_record(train.hla, train.follower, train.plunger, train.hla_ratio, w0)
+    starts = asm.tr0 + np.arange(asm.ix.size) * train.size
+    return record, (starts + train.plunger).astype(np.int64)
+
+
+def adjusters_start(asm, train, start, theta_grid, phases, q, v, acc, hp):
+    """Every adjuster from the single train's periodic response at its lobe's angle: the
+    plunger moved with its follower (the warm start moves the follower with the shaft), so
+    the chamber keeps the single train's volume, its pressure, and the acceleration with
+    the chamber's force (in place)."""
+    from camtrain.dynamics.hla.chamber import plunger_force
+    from camtrain.dynamics.hla.sealed import consistent_restart
+
+    period = 2.0 * math.pi
+    record, ipl = adjuster_record(asm, train)
+    force = np.zeros(q.size)
+    for j, g in enumerate(phases):
+        at = float(theta_grid[0]) - float(g)
+        f, p = asm.ifol[j], ipl[j]
+        q[p] += q[f] - np.interp(at, start.theta, start.u[train.follower], period=period)
+        v[p] += v[f] - np.interp(at, start.theta, start.v[train.follower], period=period)
+        hp[j, 0] = np.interp(at, start.theta, start.hydraulic[0], period=period)
+        ext = record.x_rest - record.ratio * (q[f] - q[p] - record.w0)
+        push = record.ratio * plunger_force(hp[j, 0], ext, record)
+        force[f] -= push
+        force[p] += push
+    acc += np.linalg.solve(asm.M, force)
+    for j, g in enumerate(phases):     # the plunger's acceleration relative to its body as
+        at = float(theta_grid[0]) - float(g)     # the single train's: no start-up jolt of a
+        rel = (np.interp(at, start.theta, start.a[train.plunger], period=period)  # stiff chamber
+               - np.interp(at, start.theta, start.a[train.follower], period=period))
+        acc[ipl[j]] = acc[asm.ifol[j]] + rel
+    if record.on:       # a sealed incompressible chamber: no acceleration in its body
+        minv = np.linalg.inv(asm.M)
+        for j in range(len(phases)):
+            consistent_restart(record, hp[j], acc, minv, asm.ifol[j], ipl[j])
+
+
+def closed_chambers(record):
+    """``record`` with every chamber closed: no check-valve inflow, no leak-down or Couette
+    flow, so each chamber keeps its oil and acts as the closed chamber's spring (its
+    compressibility). The coupled march's first revolutions use it (docs/lash_adjusters.md):
+    the shaft's start-up transient would otherwise pump the plungers up (a follower leaving
+    its cam opens the check valve) by more than their leak-down takes back in many
+    revolutions; once the closed chambers' revolutions agree, the chambers are opened."""
+    return record._replace(check_k=0.0, g_leak=0.0, c_couette=0.0)
+
+
+def _volumes(record, state, lay):
+    """Every chamber's volume [m^3] in ``state`` (its plunger's extension)."""
+    q = state.q
+    ext = record.x_rest - record.ratio * (q[lay.ifol] - q[lay.ipl] - record.w0)
+    return np.maximum(record.v_dead + record.area * ext, 1e-3 * record.v_dead)
+
+
+def chamber_contents(record, state, lay) -> np.ndarray | None:
+    """Every chamber's oil [m^3 at atmospheric pressure]: its volume over phi(p), the volume
+    a unit of the mixture takes at its pressure (:func:`camtrain.dynamics.hla.mixture_volume`);
+    None for incompressible oil without air (no pressure holds another content)."""
+    from camtrain.dynamics.hla import mixture_volume
+
+    if record.air == 0.0 and math.isinf(record.k_liq):
+        return None
+    phi = mixture_volume(state.hp[:, 0], record.k_liq, record.air, record.n_poly)
+    return _volumes(record, state, lay) / phi
+
+
+def _set_content(record, state, j, volume, content) -> bool:
+    """Chamber j set to the pressure at which it holds ``content`` in ``volume`` (in place);
+    False (nothing changed) where no pressure between the vapour pressure and 4 GPa does."""
+    from scipy.optimize import brentq
+
+    from camtrain.dynamics.hla import mixture_volume
+
+    def gap(p):
+        return float(mixture_volume(p, record.k_liq, record.air, record.n_poly)) \
+            - volume / content
+
+    lo, hi = record.p_floor, 4.0e9
+    if gap(lo) <= 0.0 or gap(hi) >= 0.0:
+        return False
+    state.hp[j, 0] = brentq(gap, lo, hi, xtol=1e-6, rtol=1e-12)
+    return True
+
+
+def refill_contents(record, state, lay, samples) -> None:
+    """Every chamber opened with the oil it holds in the periodic state's balance of refill and
+    leak-down, estimated from the last closed revolution's ``samples`` (pressure and extension,
+    lobes x 2 x n): over a periodic revolution the check valve just makes up what the annulus
+    lost, so the chamber's lowest pressure sits at the valve's cracking threshold (supply less
+    cracking pressure). The content that gives that pressure at the lowest sample's volume
+    (the closed chamber's content does not change over its revolution) replaces the content,
+    set by the pressure at the chamber's present volume (in place)."""
+    from camtrain.dynamics.hla import mixture_volume
+
+    if chamber_contents(record, state, lay) is None:
+        return
+    target = record.p_supply - record.p_crack
+    phi = float(mixture_volume(target, record.k_liq, record.air, record.n_poly))
+    volumes = _volumes(record, state, lay)
+    for j in range(volumes.size):
+        low = int(np.argmin(samples[j, 0]))
+        ext = samples[j, 1, low]
+        volume = max(record.v_dead + record.area * ext, 1e-3 * record.v_dead)
+        _set_content(record, state, j, volumes[j], volume / phi)
+
+
+def accelerate_chambers(sysm, state, series):
+    """After an open revolution, every chamber's oil content moved toward its periodic value
+    by the secant rule on its net change over a revolution (in place): ``series`` = (every
+    content at the revolution's start, the last revolution's (start contents, net changes) or
+    None). The periodic chamber keeps its content over a revolution (refill = leak-down), a
+    root of the net change f(m) = m_end - m_start; with two revolutions the secant through
+    them gives the root, taken where the revolution's map contracts (its slope 1 + f' within
+    0.9 of zero: the refill and leak-down balance converging), else the content the
+    revolution ended with. Each chamber is set to its content by the pressure at which it
+    holds it in its present volume. Returns the series for the next revolution."""
+    now = chamber_contents(sysm.hla, state, sysm.lay)
+    if now is None:
+        return series
+    start, last = series
+    change = now - start
+    target = now.copy()
+    if last is not None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            slope = (change - last[1]) / (start - last[0])
+        ok = np.isfinite(slope) & (np.abs(1.0 + slope) < 0.9)
+        target = np.where(ok, start - change / np.where(ok, slope, 1.0), now)
+    volumes = _volumes(sysm.hla, state, sysm.lay)
+    for j in range(now.size):
+        if target[j] != now[j]:
+            _set_content(sysm.hla, state, j, volumes[j], target[j])
+    return chamber_contents(sysm.hla, state, sysm.lay), (start, change)
+
+
+def extension_change(extensions, previous, record) -> float:
+    """The largest change of a plunger's extension at the grid samples (lobes, n) from the
+    ``previous`` revolution's, over the largest travel of one in the revolution (at least a
+    thousandth of the stroke)."""
+    travel = max(float(np.max(np.ptp(extensions, axis=1))), 1e-3 * record.stroke)
+    return float(np.max(np.abs(extensions - previous))) / travel
