@@ -202,11 +202,10 @@ def test_chambers_reach_the_periodic_state_of_the_plain_march_in_fewer_revolutio
 def test_the_dynamic_check_ball_is_refused_by_the_two_way_coupled_camshaft(tmp_path):
     """The coupled chambers are opened at the quasi-static valve's cracking threshold: a deck
     asking for the dynamic ball there exits 2 naming the field, not a silent orifice."""
+    import tomli_w
     from click.testing import CliRunner
 
     from camtrain.cli import main
-
-    import tomli_w
 
     raw = tomllib.loads((DECKS / "zeta_intake_camshaft_coupled_hla.toml").read_text("utf-8"))
     assert raw["camshaft"]["flexibility"]["coupling"] == "two_way"
