@@ -95,7 +95,8 @@ def test_grid_order_of_the_central_film():
 
 def goecmen_cycle(angles: int, sigma: float = 0.05e-6) -> CycleContact:
     """The Göçmen deck's contact over one revolution on ``angles`` steps (load per unit width
-    of the 20 mm cam, radius, signed entrainment and sliding of its kinematics)."""
+    of its cam, radius, signed entrainment and sliding of its kinematics; its speed, materials
+    and oil), with the roughness ``sigma`` each test chooses (the deck's is 0.65 um)."""
     from camtrain import api
     from camtrain.contact.model import CamContact
 
@@ -110,11 +111,12 @@ def goecmen_cycle(angles: int, sigma: float = 0.05e-6) -> CycleContact:
 
     def on_grid(name):
         return np.interp(grid, theta, res[name], period=2 * np.pi)
-    omega = 1000 * 2 * np.pi / 60
-    E_r = float(CamContact.from_deck(deck.model).reduced_modulus)
-    return CycleContact((grid - grid[0]) / omega, on_grid("load") / 0.02, on_grid("radius_x"),
-                        on_grid("entrainment"), on_grid("sliding"), E_r, 0.02,
-                        Oil(0.014, 14.3e-9), sigma=sigma)
+    pair = CamContact.from_deck(deck.model)      # the deck's cam width, materials and oil
+    lub, trib = pair.lubricant, pair.tribology
+    oil = Oil(lub.viscosity, lub.pressure_viscosity, trib.ehl_viscosity, trib.ehl_density)
+    return CycleContact((grid - grid[0]) / deck.model.speed.omega, on_grid("load") / pair.width,
+                        on_grid("radius_x"), on_grid("entrainment"), on_grid("sliding"),
+                        float(pair.reduced_modulus), pair.width, oil, sigma=sigma)
 
 
 def reversal(cavitation: str, steps: int = 60, solver: str = "auto"):
@@ -171,7 +173,7 @@ def test_cycle_film_lies_within_the_formula_spread_where_quasi_steady():
     c = goecmen_cycle(180)
     out = march_ehl_cycle(c, CycleResolution(nodes=256))
     theta = np.degrees(2 * np.pi * np.arange(180) / 180 - np.pi)
-    args = (c.w, c.R, np.abs(c.u), 0.014, 14.3e-9, c.E_r)
+    args = (c.w, c.R, np.abs(c.u), c.oil.eta0, c.oil.alpha, c.E_r)
     lo = np.minimum(dowson_higginson_1977(*args), pan_hamrock_1989_min(*args))
     hi = np.maximum(dowson_higginson_1977(*args), pan_hamrock_1989_min(*args))
     flank = ((np.abs(np.abs(theta) - 45.0) <= 4.0) | (np.abs(theta) >= 90.0)) & \
