@@ -4,7 +4,10 @@ Physics in :mod:`camtrain.roller`: the roller's speed from its torque balance (q
 marched to a periodic state), slip and slide-roll ratio, cam-roller traction and rolling
 resistance, pin friction. The effect reads only the chain's kinematics (cam and follower surface
 speeds, follower radius, line contact), the contact load and the Hertz field, so any mechanism
-whose kinematics describe a line contact on a curved face carries a roller.
+whose kinematics describe a line contact on a curved face carries a roller. When the elastic
+train marched the roller's speed (the dynamics effect's ``RollerSpin``, dynamics.roller =
+"marched") the effect takes that speed, and the traction the march balanced it with, as the
+run's, and solves none of its own (docs/rollers.md).
 
 It offers the film and the friction of the cam contact at the roller's speed as rank-1
 alternatives of ``ContactFilm`` and ``ContactFriction``: the power, camshaft and bearing effects
