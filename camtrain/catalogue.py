@@ -95,6 +95,7 @@ PRODUCTS: dict[str, str] = {
     "ContactFriction": "camtrain.contact.products:ContactFriction",
     "CamTorque": "camtrain.contact.products:CamTorque",
     "RollerMotion": "camtrain.roller.product:RollerMotion",
+    "RollerSpin": "camtrain.dynamics.spin.product:RollerSpin",
     "GuideLosses": "camtrain.contact.guides:GuideLosses",
     "ArmContacts": "camtrain.mechanisms.arm_contacts:ArmContacts",
     "CamshaftLoads": "camtrain.camshaft.product:CamshaftLoads",
@@ -131,7 +132,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
     EffectSpec("dynamics", "camtrain.effects.dynamics",
                "contact load of the elastic train in time: separation, spring surge, valve "
                "seating (replaces the rigid-train load when the deck has [dynamics])",
-               needs=("TrainKinematics",), produces=("ContactLoad",), rank=1,
+               needs=("TrainKinematics",), produces=("ContactLoad", "RollerSpin"), rank=1,
                key_metrics=("load_max", "dynamic_load_ratio", "separations", "jumps",
                             "separation_angle", "seat_impacts", "seat_impact_speed_max",
                             "valve_acceleration_max", "roller_slip_max_marched"),
@@ -155,6 +156,7 @@ VALVE_TRAIN: tuple[EffectSpec, ...] = (
                "roller turning on its pin: speed from its torque balance, slip, slide-roll "
                "ratio, pin loss; film and friction at the roller's speed",
                needs=("TrainKinematics", "ContactLoad", "ContactHertz"),
+               uses=("RollerSpin",),
                produces=("RollerMotion", "ContactFilm", "ContactFriction"), rank=1,
                key_metrics=("roller_slip_max", "roller_power_total", "roller_power_pin",
                             "roller_power_rolling", "roller_power_sliding",

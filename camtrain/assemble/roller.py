@@ -98,7 +98,7 @@ def spin_tables(deck, kin, load_cap: float):
     for level, w in enumerate(loads[1:], start=1):
         load = np.full(n, w)
         traction = Traction(contact, kin, load, contact.hertz(kin, load), r.traction,
-                            r.rolling_resistance)
+                            r.rolling_resistance, tabulated=True)
         rows = traction.force(sliding, idx).reshape(first.size, grid.size)
         table[:, level, :] = rows[np.ravel(inverse)]
     speed_scale = 2.0 * (vmax / radius + 1e-12)

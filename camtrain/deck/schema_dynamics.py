@@ -113,8 +113,9 @@ class Dynamics:
     roller: Literal["marched", "after"] = option(
         "A deck with [roller]: marched (the roller's speed on its pin is a state of the "
         "elastic train's march, driven by the marched contact force: backward Euler in the "
-        "Newmark step; newmark integrator only) or after (only the roller effect solves it, "
-        "from the train's load after the march)", default="marched")
+        "Newmark step; newmark integrator only; the roller effect then takes that speed as "
+        "the run's roller speed) or after (only the roller effect solves it, from the "
+        "train's load after the march)", default="marched")
     roller_load_levels: int = quantity(
         "Load levels of the marched roller's traction and pin-torque tables, from 0 to "
         "3 x the rigid train's largest load, uniform and linear in the square root of the load",

@@ -6,6 +6,8 @@ Physics in :mod:`camtrain.dynamics` (lumped train, integrators), the deck's [dyn
 turned into it in :mod:`camtrain.assemble.dynamics`. Writes the dynamic load, follower and valve
 motion, spring and seat forces, contact status and the rigid load beside them; events for every
 separation and re-contact during the lift event and every seat impact; warnings for bounce.
+With ``dynamics.roller = "marched"`` it hands on the roller's speed marched with the train
+(``RollerSpin``; its speed None otherwise), which the roller effect takes as the run's.
 """
 from __future__ import annotations
 
@@ -138,6 +140,7 @@ def run(deck, inputs, res):
     from camtrain.assemble.dynamics import rigid_load, setup
     from camtrain.dynamics import StepTooLarge, march
     from camtrain.dynamics.findings import findings
+    from camtrain.dynamics.spin.product import RollerSpin
     from camtrain.errors import field_error
     from camtrain.loads import ContactLoad, contact_mask
     from camtrain.mechanisms import TrainKinematics
@@ -215,9 +218,13 @@ def run(deck, inputs, res):
                  "last revolution")
     if model.hla is not None:
         _lash_adjuster(deck, run_setup, resp, res)
+    spin = RollerSpin()
     if resp.roller is not None:
         _roller(kin, model.roller, resp.roller, load, res)
+        spin = RollerSpin(speed=np.asarray(resp.roller[0], dtype=float),
+                          traction=np.asarray(resp.roller[2], dtype=float),
+                          inertia=float(model.roller.inertia))
     if resp.cut_switches:
         res.warn(f"dynamics: {resp.cut_switches} steps had more contact changes than the "
                  "integrator locates per step (chattering); refine steps_per_degree")
-    return ContactLoad(load=load, in_contact=inside, model=MODEL)
+    return ContactLoad(load=load, in_contact=inside, model=MODEL), spin

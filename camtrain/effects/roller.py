@@ -4,7 +4,10 @@ Physics in :mod:`camtrain.roller`: the roller's speed from its torque balance (q
 marched to a periodic state), slip and slide-roll ratio, cam-roller traction and rolling
 resistance, pin friction. The effect reads only the chain's kinematics (cam and follower surface
 speeds, follower radius, line contact), the contact load and the Hertz field, so any mechanism
-whose kinematics describe a line contact on a curved face carries a roller.
+whose kinematics describe a line contact on a curved face carries a roller. When the elastic
+train marched the roller's speed (the dynamics effect's ``RollerSpin``, dynamics.roller =
+"marched") the effect takes that speed, and the traction the march balanced it with, as the
+run's, and solves none of its own (docs/rollers.md).
 
 It offers the film and the friction of the cam contact at the roller's speed as rank-1
 alternatives of ``ContactFilm`` and ``ContactFriction``: the power, camshaft and bearing effects
@@ -27,10 +30,22 @@ def missing(deck) -> list[str]:
     return []
 
 
+def takes_marched_speed(deck, planned) -> bool:
+    """The roller's speed is the one the elastic train marched (the dynamics effect planned,
+    ``RollerSpin``, with dynamics.roller = "marched" and a turning pin): the roller effect then
+    computes its film, friction and losses at that speed instead of solving its own."""
+    from camtrain.assemble.roller import marches_roller
+
+    return "RollerSpin" in planned and marches_roller(deck)
+
+
 def reason(deck, planned) -> str:
     r = deck.roller
     solver = ("quasi-static (no inertia)" if r.solver == "quasi_static"
               else f"inertial, periodic march ({r.substeps} substeps per grid step)")
+    if takes_marched_speed(deck, planned):
+        solver = ("marched with the elastic train (dynamics.roller = \"marched\"; "
+                  f"roller.solver = \"{r.solver}\" not used)")
     return (f"[roller] given: the roller turns on a {r.pin} pin, {r.traction} traction, "
             f"{r.rolling_resistance} rolling resistance, speed {solver}; film and friction "
             "at the roller's speed")
@@ -108,7 +123,8 @@ def roller_metrics(theta, field, loaded) -> list:
         CaseMetric("roller_power_total", sum(means), "W",
                    "cycle-mean roller loss: cam-roller sliding + rolling + pin"),
         CaseMetric("roller_revolutions", field.revolutions, "-",
-                   "revolutions marched to the roller's periodic speed (0: quasi-static)")]
+                   "revolutions marched to the roller's periodic speed (0: quasi-static, or "
+                   "marched with the elastic train)")]
 
 
 def run(deck, inputs, res):
@@ -117,11 +133,11 @@ def run(deck, inputs, res):
     from camtrain.components import MAIN
     from camtrain.contact.model import CamContact
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz, FrictionField
+    from camtrain.dynamics.spin.product import RollerSpin
     from camtrain.errors import field_error
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
     from camtrain.roller.product import RollerMotion
-    from camtrain.roller.solve import solve_roller
     from camtrain.roller.traction import Traction
 
     kin = inputs[TrainKinematics].main
@@ -134,8 +150,7 @@ def run(deck, inputs, res):
     r = deck.roller
     contact = CamContact.from_deck(deck)
     traction = Traction(contact, kin, load, hz, r.traction, r.rolling_resistance)
-    field = solve_roller(traction, pin_of(deck), radius, r.moment_of_inertia(radius, face_mass(deck)),
-                         settings_of(deck))
+    field = motion(deck, traction, radius, inputs.get(RollerSpin))
     film = traction.film(field.sliding)
     force = cam_force(field, traction.v_s0)
     used = (load > 0.0) & np.isfinite(film.for_shear) & np.isfinite(hz.pmax)
@@ -152,6 +167,21 @@ def run(deck, inputs, res):
     return (RollerMotion(((MAIN, field),)), ContactFilm(((MAIN, film),), with_load=True),
             ContactFriction(((MAIN, FrictionField(force=force, hertz=hz, film=film, used=used)),),
                             model=f"roller ({r.traction})"))
+
+
+def motion(deck, traction, radius, spin):
+    """The roller's motion: at the speed the elastic train marched and with the traction that
+    balanced it (``spin``, a :class:`~camtrain.dynamics.spin.product.RollerSpin` with a
+    speed), else its own solve (roller.solver) at the chain's load."""
+    from camtrain.roller.solve import motion_of, solve_roller
+
+    r = deck.roller
+    if spin is not None and spin.marched:
+        return motion_of(traction, pin_of(deck), radius, spin.inertia, spin.speed,
+                         "marched with the elastic train (dynamics.roller = marched)", 0, 0.0,
+                         r.skid_slip, f_t=spin.traction)
+    return solve_roller(traction, pin_of(deck), radius,
+                        r.moment_of_inertia(radius, face_mass(deck)), settings_of(deck))
 
 
 def warn_crown_edge(res, theta, hz, loaded, width) -> None:

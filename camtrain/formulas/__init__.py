@@ -100,6 +100,7 @@ from .mixed import (
     greenwood_tripp_1970_load,
     greenwood_tripp_f52_fit,
     greenwood_tripp_function,
+    greenwood_tripp_tabulated,
     teodorescu_2005_friction,
 )
 from .viscosity import (
@@ -126,7 +127,8 @@ __all__ = [
     "FILM_METHODS", "film_parameter", "film_thickness", "film_thickness_methods", "film_thicknesses",
     "friction_coefficient", "FRICTION_MODELS", "friction_power", "friction_torque",
     "greenwood_tripp_1970_area", "greenwood_tripp_1970_load", "greenwood_tripp_f52_fit",
-    "greenwood_tripp_function", "hamrock_dowson_1977_cen", "hamrock_dowson_1977_min",
+    "greenwood_tripp_function", "greenwood_tripp_tabulated", "hamrock_dowson_1977_cen",
+    "hamrock_dowson_1977_min",
     "hamrock_dowson_ellipticity", "hertz_line", "hertz_line_half_width", "hertz_line_max_pressure",
     "hertz_point", "hertz_point_max_pressure", "HERTZ_POINT_METHODS", "log_barus_ellipse_integral",
     "log_barus_line_integral", "martin_1916", "martin_1985_shear_power", "moes_1992",

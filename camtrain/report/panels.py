@@ -370,11 +370,10 @@ def spring_forces(ax, r, ctx):
 
 
 def roller_spin(ax, r, ctx):
-    """The roller's slip marched with the elastic train, over the roller effect's own solve at
-    the train's load (quasi-static or periodic)."""
-    return _cycle(ax, r, ctx, ["roller_slip_marched", "roller_slip"], ylabel="slip", zero=True,
-                  legend=True, labels={"roller_slip_marched": "marched with the train",
-                                       "roller_slip": "roller effect at the train's load"})
+    """The roller's slip marched with the elastic train (the run's roller slip: the roller
+    effect takes the marched speed, so its own slip column is this curve)."""
+    return _cycle(ax, r, ctx, ["roller_slip_marched"], ylabel="slip", zero=True,
+                  labels={"roller_slip_marched": "marched with the train"})
 
 
 PANELS = {

@@ -276,16 +276,22 @@ def forces(traction: Traction, pin: Pin, w, u_s, known=None):
 
 
 def motion_of(traction: Traction, pin: Pin, radius, inertia, w, label, revs, change,
-              skid_slip, known=None) -> RollerField:
+              skid_slip, known=None, f_t=None) -> RollerField:
     """Every per-angle quantity of the roller at speeds ``w`` [rad/s] (``known``: see
-    :func:`forces`)."""
+    :func:`forces`). ``f_t``: the traction [N] the speeds were solved with, when a march
+    solved them on tables of it (the elastic train's, :mod:`camtrain.dynamics.spin`): near
+    rolling the traction is steep in the sliding, so the law at a speed within the tables'
+    error would not be the traction that balanced it; else the law at ``w``."""
     kin = traction.kin
     u_s = speeds.sliding_speed(kin.v_cam, kin.v_follower, w, radius)
     if pin.kind == "frictionless":
         u_s = np.where(traction.load > 0.0, 0.0, u_s)   # exact rolling, no round-off
     u_e = speeds.entrainment_speed(kin.v_cam, u_s)
     slip = speeds.slip(u_s, traction.v_s0)
-    f_t, t_pin = forces(traction, pin, w, u_s, known)
+    if f_t is None:
+        f_t, t_pin = forces(traction, pin, w, u_s, known)
+    else:
+        t_pin = pin.torque(w, traction.load)
     f_r = traction.rolling_force(u_s)
     kinetic = np.zeros(w.shape)
     if inertia:

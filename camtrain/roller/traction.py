@@ -80,6 +80,10 @@ class Traction:
     hertz: HertzField
     law: str = "limiting_shear"
     rolling: str = "goksem_hargreaves"
+    #: the Greenwood-Tripp integrals of the mixed film from their table
+    #: (:func:`camtrain.formulas.mixed.greenwood_tripp_tabulated`, within 2e-13 of the exact
+    #: ones): the marched roller's tables evaluate the traction at some 10^5-10^6 points
+    tabulated: bool = False
 
     def __post_init__(self):
         if self.law not in TRACTION_LAWS:
@@ -231,7 +235,7 @@ class Traction:
                     rate = np.where(hu > 0.0, rate / hu, np.where(rate > 0.0, np.inf, 0.0))
                 newton = self.unit_shear[idx][use] * rate
                 mag = mixed_traction(self.contact, self.area[idx][use], load, h, newton, use,
-                                     self.law)
+                                     self.law, self.tabulated)
             out[use] = np.sign(u_s[use]) * mag
         return out
 
@@ -303,12 +307,14 @@ def goksem_hargreaves_ellipse_rolling(u_e, eta0, alpha, E_r, R, a_y, W):
     return np.where(alpha > 0.0, F, 0.0)
 
 
-def mixed_traction(contact, area, load, h, newtonian, use, law: str) -> np.ndarray:
+def mixed_traction(contact, area, load, h, newtonian, use, law: str,
+                   tabulated: bool = False) -> np.ndarray:
     """|F| [N] on the angles ``use``: fluid shear (Newtonian ``newtonian`` [N] over the whole
     zone, or its Eyring form, below the limiting shear) on the fluid share plus Greenwood-Tripp
     asperity friction, capped at mu_b W; ``area`` the Hertz area of those angles
-    (:attr:`Traction.area`)."""
+    (:attr:`Traction.area`); ``tabulated``: the Greenwood-Tripp integrals from their table."""
     from camtrain.formulas import teodorescu_2005_friction
+    from camtrain.formulas.mixed import greenwood_tripp_function, greenwood_tripp_tabulated
 
     lub, trib = contact.lubricant, contact.tribology
     sigma = at(lub.roughness, use)
@@ -328,7 +334,9 @@ def mixed_traction(contact, area, load, h, newtonian, use, law: str) -> np.ndarr
                                      np.broadcast_to(sigma, area.shape)[mixed],
                                      np.broadcast_to(beta, area.shape)[mixed],
                                      np.broadcast_to(zeta, area.shape)[mixed],
-                                     lambda_limit=LAMBDA_LIMIT)
+                                     lambda_limit=LAMBDA_LIMIT,
+                                     integral=(greenwood_tripp_tabulated if tabulated
+                                               else greenwood_tripp_function))
         boundary[mixed] = t.boundary
         asperity_area[mixed] = t.asperity_area
         asperity_load[mixed] = t.asperity_load

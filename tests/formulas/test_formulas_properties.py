@@ -137,6 +137,25 @@ def test_greenwood_tripp_function_matches_quadrature(n, lam):
     assert cf.greenwood_tripp_function(lam, n) == pytest.approx(q / np.sqrt(2 * np.pi), rel=1e-8)
 
 
+@pytest.mark.derived
+@pytest.mark.parametrize("n", [2.0, 2.5])
+def test_greenwood_tripp_tabulated_is_the_exact_function(n):
+    """The tabulated F_n (cubic Hermite pieces in ln F_n, 0.002 apart on [0, 3]) against the
+    exact parabolic-cylinder evaluation at 20,000 points off the nodes, to 3e-13 relative; the
+    exact function outside the table (negative and large lambda)."""
+    lam = np.random.default_rng(7).uniform(0.0, 3.0, 20000)
+    np.testing.assert_allclose(cf.greenwood_tripp_tabulated(lam, n),
+                               cf.greenwood_tripp_function(lam, n), rtol=3e-13, atol=0.0)
+    off = np.array([-0.7, 3.5, 31.0])
+    np.testing.assert_array_equal(cf.greenwood_tripp_tabulated(off, n),
+                                  cf.greenwood_tripp_function(off, n))
+
+
+def test_greenwood_tripp_tabulated_needs_a_positive_order():
+    with pytest.raises(ValueError, match="n > 0"):
+        cf.greenwood_tripp_tabulated(1.0, 0.0)
+
+
 def test_greenwood_tripp_fit_range():
     """The common fit 4.4086e-5 (4 - lambda)^6.804 is within 10 % for 0.5 <= lambda <= 2."""
     lam = np.linspace(0.5, 2.0, 16)

@@ -104,6 +104,24 @@ def test_stiff_train_marched_speed_is_the_roller_effects_periodic_speed(finger):
     assert err < TABLE_TOLERANCE, err
 
 
+@pytest.mark.derived
+def test_tables_from_the_tabulated_integrals_are_the_exact_ones(monkeypatch):
+    """The traction tables with the Greenwood-Tripp integrals from their table are those with
+    the exact integrals (parabolic-cylinder functions at every table point) to 1e-12 of the
+    largest traction, on the shipped roller finger with its adjuster (mixed film at light load
+    and low entrainment)."""
+    from camtrain.assemble.roller import spin_tables
+    from camtrain.formulas import mixed
+
+    deck = api.load(DECKS / "roller_finger_hla.toml").model
+    kin = _kinematics(deck)
+    fast = spin_tables(deck, kin, 1500.0).traction
+    monkeypatch.setattr(mixed, "greenwood_tripp_tabulated", mixed.greenwood_tripp_function)
+    exact = spin_tables(deck, kin, 1500.0).traction
+    assert np.count_nonzero(exact != fast) > 1000   # the mixed film is in the tables
+    assert np.max(np.abs(fast - exact)) < 1e-12 * np.max(np.abs(exact))
+
+
 @pytest.mark.convergence
 def test_load_tables_converge_at_second_order(finger):
     """The marched speed's distance from the roller effect's balance at the marched load falls
