@@ -13,7 +13,7 @@ from scipy.linalg import toeplitz
 from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
 
-from .asperity import asperity_pressure_coefficient, gt_function
+from .asperity import asperity_pressure_coefficient, gt_functions
 from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _State
 from .ehl_elastic import ElasticKernel, influence_row
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
@@ -131,8 +131,9 @@ class _Marcher:
 
             def asperity(H, sig_H=sig_H, p_h=p_h):
                 lam_ = np.maximum(H / sig_H, -3.9)     # an iterate may pass through H < 0
-                A = self.a_coef * gt_function(lam_, 2.5) / p_h
-                dA = -2.5 * self.a_coef * gt_function(lam_, 1.5) / (p_h * sig_H)  # F_n' = -n F_n-1
+                F25, F15 = gt_functions(lam_, (2.5, 1.5))
+                A = self.a_coef * F25 / p_h
+                dA = -2.5 * self.a_coef * F15 / (p_h * sig_H)  # F_n' = -n F_n-1
                 return A, dA
         sysm = StepSystem(X, kernel, dense, ScaledOil(c.oil, p_h), lam, abs(u), c_t, a0,
                           Q_hist, res.scheme, res.cavitation, asperity,
@@ -253,7 +254,7 @@ class _Marcher:
 
     def _damped_trials(self, sysm, s, H0, step, norm, backtrack, A_lag):
         low = 0.0 if sysm.cavitation == "reynolds" else -1.0
-        t = 1.0
+        t, full = 1.0, None
         while True:
             s_new = s.copy()
             s_new[1:-1] = np.maximum(s[1:-1] + t * step[:-1], low)
@@ -263,12 +264,10 @@ class _Marcher:
             good = f_new.H.min() > 0 and norm_new < (1.0 - 1e-4 * t) * norm  # NaN: not good
             if good or not backtrack:
                 return s_new, H0_new, F_new, f_new, norm_new, t
-            if t < 1e-3:             # no descent: the full step (see newton)
-                t = 1.0
-                s_new = s.copy()
-                s_new[1:-1] = np.maximum(s[1:-1] + step[:-1], low)
-                H0_new = H0 + step[-1]
-                F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
+            if full is None:         # the full step's trial, kept for the fallback below
+                full = s_new, H0_new, F_new, f_new
+            if t < 1e-3:             # no descent: the full step (see newton), as tried first
+                s_new, H0_new, F_new, f_new = full
                 if not (f_new.H.min() > 0 and np.all(np.isfinite(F_new))):
                     return s, H0, F_new, f_new, norm, 0.0
                 return s_new, H0_new, F_new, f_new, np.abs(F_new).max(), 0.5
