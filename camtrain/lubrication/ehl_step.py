@@ -38,10 +38,10 @@ REVERSAL_FLOOR = 0.05
 #: tolerance to ``max_iterations``, and the step is split after all)
 STALL_WINDOW, STALL_FACTOR = 5, 0.9
 #: ... or, within STALL_NEAR times the tolerance, fell by less than 1 - STALL_FACTOR over the last
-#: STALL_WINDOW iterations whatever their steps (measured on the Goecmen cam: 39 iterations
-#: sit at 1-16 times the tolerance, where the asperity lag's update undoes each Newton step's
-#: gain, up to ``max_iterations`` and are split; none of the iterations that converge, slowly
-#: or not, ever did: stopping them leaves every film as it was)
+#: STALL_WINDOW iterations whatever their steps (measured on the Goecmen cam: iterations that
+#: reach 1-16 times the tolerance and sit there, the asperity lag's update undoing each Newton
+#: step's gain, ran to ``max_iterations`` and were split; none of the iterations that converge,
+#: slowly or not, ever did: stopping them leaves every film as it was)
 STALL_NEAR = 100.0
 #: share of the change of the asperity pressure taken into its deflection per Newton iterate
 ASPERITY_RELAXATION = 0.5
