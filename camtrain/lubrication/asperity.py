@@ -35,11 +35,16 @@ def _log_table(n: float) -> np.ndarray:
     return CubicSpline(lam, np.log(greenwood_tripp_function(lam, n))).c
 
 
-def _log_f(lam: np.ndarray, n: float) -> np.ndarray:
-    c = _log_table(float(n))
+def _cells(lam: np.ndarray):
+    """(cell index, offset in the cell) of each lambda in the table."""
     s = (lam - _LAMBDA_MIN) / _STEP
     i = np.minimum(s.astype(np.intp), _CELLS - 1)
-    d = (s - i) * _STEP
+    return i, (s - i) * _STEP
+
+
+def _log_f(lam: np.ndarray, n: float, cells=None) -> np.ndarray:
+    c = _log_table(float(n))
+    i, d = _cells(lam) if cells is None else cells
     return ((c[0, i] * d + c[1, i]) * d + c[2, i]) * d + c[3, i]
 
 
@@ -55,6 +60,24 @@ def gt_function(lam, n: float) -> np.ndarray:
     if np.any(low):
         val[low] = greenwood_tripp_function(lam[low], n)
     return val
+
+
+def gt_functions(lam, orders) -> tuple:
+    """F_n(lambda) for each n of ``orders`` (as :func:`gt_function`; the table cells are
+    located once for all orders: a Newton iterate needs F_5/2 and its slope -5/2 F_3/2)."""
+    lam = np.asarray(lam, dtype=float)
+    inside = (lam >= _LAMBDA_MIN) & (lam <= _LAMBDA_MAX)
+    low = lam < _LAMBDA_MIN
+    some_low = bool(np.any(low))
+    cells = _cells(lam[inside])
+    values = []
+    for n in orders:
+        val = np.zeros(lam.shape)
+        val[inside] = np.exp(_log_f(None, n, cells))
+        if some_low:
+            val[low] = greenwood_tripp_function(lam[low], n)
+        values.append(val)
+    return tuple(values)
 
 
 def asperity_pressure_coefficient(E_r, zeta_beta_sigma, sigma_over_beta) -> float:

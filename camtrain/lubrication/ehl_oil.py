@@ -13,7 +13,7 @@ Options (named, documented in docs/ehl.md):
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -46,16 +46,26 @@ class ScaledOil:
 
     oil: Oil
     p_h: float
+    #: Roelands' (z, ln(eta0/eta_inf)), fixed by the oil: computed once, not per iterate
+    _roelands: tuple = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        z = s = 0.0
+        if self.oil.viscosity == "roelands":
+            z = float(roelands_z(self.oil.eta0, self.oil.alpha))
+            s = float(np.log(self.oil.eta0 / ROELANDS_ETA_INF))
+        object.__setattr__(self, "_roelands", (z, s))
 
     def log_viscosity(self, P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """ln(eta/eta0) and its P-derivative."""
-        p = self.p_h * np.maximum(P, 0.0)
+        """ln(eta/eta0) and its P-derivative; Roelands' slope as (1 + p/p_r)^z / (1 + p/p_r)
+        (one power per call)."""
         if self.oil.viscosity == "barus":
+            p = self.p_h * np.maximum(P, 0.0)
             return self.oil.alpha * p, np.full_like(P, self.oil.alpha * self.p_h)
-        z = roelands_z(self.oil.eta0, self.oil.alpha)
-        scale = np.log(self.oil.eta0 / ROELANDS_ETA_INF)
-        base = 1.0 + p / ROELANDS_P_R
-        return scale * (base**z - 1.0), scale * z * base ** (z - 1.0) * self.p_h / ROELANDS_P_R
+        z, scale = self._roelands
+        base = 1.0 + (self.p_h / ROELANDS_P_R) * np.maximum(P, 0.0)
+        power = base**z
+        return scale * (power - 1.0), (scale * z * self.p_h / ROELANDS_P_R) * (power / base)
 
     def density(self, P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """rho/rho0 and its P-derivative."""

@@ -13,7 +13,7 @@ from scipy.linalg import toeplitz
 from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
 
-from .asperity import asperity_pressure_coefficient, gt_function
+from .asperity import asperity_pressure_coefficient, gt_functions
 from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _State
 from .ehl_elastic import ElasticKernel, influence_row
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
@@ -37,18 +37,25 @@ REVERSAL_FLOOR = 0.05
 #: is cycling: it stops there (measured on the Goecmen cam: such iterations cycle just above the
 #: tolerance to ``max_iterations``, and the step is split after all)
 STALL_WINDOW, STALL_FACTOR = 5, 0.9
+#: ... or, within STALL_NEAR times the tolerance, fell by less than 1 - STALL_FACTOR over the last
+#: STALL_WINDOW iterations whatever their steps (measured on the Goecmen cam: iterations that
+#: reach 1-16 times the tolerance and sit there, the asperity lag's update undoing each Newton
+#: step's gain, ran to ``max_iterations`` and were split; none of the iterations that converge,
+#: slowly or not, ever did: stopping them leaves every film as it was)
+STALL_NEAR = 100.0
 #: share of the change of the asperity pressure taken into its deflection per Newton iterate
 ASPERITY_RELAXATION = 0.5
 
 
-def _cycling(history: list, norm: float) -> bool:
-    """Whether the last ``STALL_WINDOW`` iterations of ``history`` ((norm before, no descent)
-    each) all gave no descent and the norm is now above STALL_FACTOR times
-    the norm before them."""
+def _cycling(history: list, norm: float, tol: float) -> bool:
+    """Whether the norm is now above STALL_FACTOR times the norm before the last
+    ``STALL_WINDOW`` iterations of ``history`` ((norm before, no descent) each) and these all
+    gave no descent, or the norm is within ``STALL_NEAR`` times the tolerance ``tol``."""
     if len(history) < STALL_WINDOW:
         return False
     last = history[-STALL_WINDOW:]
-    return all(blind for _, blind in last) and norm > STALL_FACTOR * last[0][0]
+    stuck = norm > STALL_FACTOR * last[0][0]
+    return stuck and (norm < STALL_NEAR * tol or all(blind for _, blind in last))
 
 
 class _LagRelaxation:
@@ -131,8 +138,9 @@ class _Marcher:
 
             def asperity(H, sig_H=sig_H, p_h=p_h):
                 lam_ = np.maximum(H / sig_H, -3.9)     # an iterate may pass through H < 0
-                A = self.a_coef * gt_function(lam_, 2.5) / p_h
-                dA = -2.5 * self.a_coef * gt_function(lam_, 1.5) / (p_h * sig_H)  # F_n' = -n F_n-1
+                F25, F15 = gt_functions(lam_, (2.5, 1.5))
+                A = self.a_coef * F25 / p_h
+                dA = -2.5 * self.a_coef * F15 / (p_h * sig_H)  # F_n' = -n F_n-1
                 return A, dA
         sysm = StepSystem(X, kernel, dense, ScaledOil(c.oil, p_h), lam, abs(u), c_t, a0,
                           Q_hist, res.scheme, res.cavitation, asperity,
@@ -187,7 +195,7 @@ class _Marcher:
             return s, H0, f, 0, True
         history = []                   # (norm, a step without descent) per iteration
         for it in range(1, self.res.max_iterations + 1):
-            if stall and _cycling(history, norm):
+            if stall and _cycling(history, norm, tol):
                 break                  # the split step is cheaper
             fresh, step = self._direction(sysm, s, H0, f, F, A_lag)
             if not np.all(np.isfinite(step)):
@@ -253,7 +261,7 @@ class _Marcher:
 
     def _damped_trials(self, sysm, s, H0, step, norm, backtrack, A_lag):
         low = 0.0 if sysm.cavitation == "reynolds" else -1.0
-        t = 1.0
+        t, full = 1.0, None
         while True:
             s_new = s.copy()
             s_new[1:-1] = np.maximum(s[1:-1] + t * step[:-1], low)
@@ -263,12 +271,10 @@ class _Marcher:
             good = f_new.H.min() > 0 and norm_new < (1.0 - 1e-4 * t) * norm  # NaN: not good
             if good or not backtrack:
                 return s_new, H0_new, F_new, f_new, norm_new, t
-            if t < 1e-3:             # no descent: the full step (see newton)
-                t = 1.0
-                s_new = s.copy()
-                s_new[1:-1] = np.maximum(s[1:-1] + step[:-1], low)
-                H0_new = H0 + step[-1]
-                F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
+            if full is None:         # the full step's trial, kept for the fallback below
+                full = s_new, H0_new, F_new, f_new
+            if t < 1e-3:             # no descent: the full step (see newton), as tried first
+                s_new, H0_new, F_new, f_new = full
                 if not (f_new.H.min() > 0 and np.all(np.isfinite(F_new))):
                     return s, H0, F_new, f_new, norm, 0.0
                 return s_new, H0_new, F_new, f_new, np.abs(F_new).max(), 0.5

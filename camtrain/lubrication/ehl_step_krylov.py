@@ -94,7 +94,6 @@ class StepOperator:
         weights = kr[np.abs(np.subtract.outer(offsets, d)).T]        # (2m + 1, offsets)
         value = weights @ np.array([self.t_H[o][1:-1] for o in offsets])   # [d, i]
         cols = np.arange(1, self.n - 1)[None, :] + d[:, None]        # node of column i + d
-        inside = (cols >= 1) & (cols <= self.n - 2)
         value *= self.f.dP[np.clip(cols, 0, self.n - 1)]
         for o, c in self.local.items():
             value[o + m] += c[1:-1]
@@ -102,12 +101,24 @@ class StepOperator:
         if self.active is not None:
             value[:, self.active] = 0.0
             value[m, self.active] = 1.0
-        value[~inside] = 0.0
         ab = np.zeros((2 * m + 1, n))
-        for k in range(2 * m + 1):          # row i, column i + d[k]: ab[m - d[k], i + d[k]]
-            lo, hi = max(0, -d[k]), min(n, n - d[k])
-            ab[m - d[k], lo + d[k]:hi + d[k]] = value[k, lo:hi]
+        to, at = _band_storage(m, n)        # row i, column i + d[k]: ab[m - d[k], i + d[k]]
+        ab[to] = value[at]
         return ab
+
+
+@lru_cache(maxsize=8)
+def _band_storage(m: int, n: int):
+    """Where the band's values value[k, i] (row i, column i + d[k], d = -m..m) go in LAPACK
+    band storage ab[m - d[k], i + d[k]], for the columns inside the matrix: (to, at) flat
+    index pairs, computed once per size (one scatter instead of a loop over diagonals)."""
+    d = np.arange(-m, m + 1)[:, None]
+    i = np.arange(n)[None, :]
+    inside = (i + d >= 0) & (i + d < n)
+    rows, cols = np.broadcast_to(m - d, inside.shape), i + d
+    to = np.ravel_multi_index((rows[inside], cols[inside]), (2 * m + 1, n))
+    at = np.flatnonzero(inside.ravel())
+    return np.unravel_index(to, (2 * m + 1, n)), np.unravel_index(at, inside.shape)
 
 
 class TwoLevel:
@@ -140,7 +151,7 @@ class TwoLevel:
         if op.active is not None:
             g = np.where(op.active, 0.0, g)
         rhs = np.concatenate((np.interp(c.X[1:-1], X[1:-1], g) * self.scale_c, [r[-1]]))
-        d = sla.lu_solve(self.lu, rhs, check_finite=False)
+        d = lapack.dgetrs(*self.lu, rhs)[0]     # sla.lu_solve without its wrappers' checks
         z = np.interp(X[1:-1], c.X, np.concatenate(([0.0], d[:-1], [0.0])))
         return np.concatenate((z, [d[-1]]))
 
@@ -216,7 +227,11 @@ def gmres_right(matvec, precond, b: np.ndarray, rtol: float, restart: int, resta
             total += 1
             if abs(g[k]) <= target or breakdown:
                 break
-        x = x + sla.solve_triangular(H[:k, :k], g[:k], check_finite=False) @ Z[:k]
+        # the upper triangle as sla.solve_triangular solves it, without its wrappers' checks
+        y, info = lapack.dtrtrs(H[:k, :k].T, g[:k], lower=1, trans=1)
+        if info > 0:
+            raise np.linalg.LinAlgError(f"singular Hessenberg matrix: zero diagonal {info}")
+        x = x + y @ Z[:k]
         r = b - matvec(x)
         beta = float(np.linalg.norm(r))
     return x, total, beta <= target

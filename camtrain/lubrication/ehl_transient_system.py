@@ -109,10 +109,17 @@ class StepSystem:
         return StepFields(P, theta, dP, dtheta, H, rho, drho, dlog_eta, eps, rho * theta * H, A, dA)
 
     def _wedge(self, n: int) -> list[np.ndarray]:
+        """The wedge and time weights of Q_i, Q_{i-1}, Q_{i-2} per node: fixed for the step,
+        built on the first call (read only: the callers copy before changing them)."""
+        key = (n, self.speed, self.c_t, self.a0, self.dx, self.scheme)
+        kept = self.__dict__.get("_wedge_kept")
+        if kept is not None and kept[0] == key:
+            return kept[1]
         weights = [np.full(n, self.speed * c / self.dx) for c in WEDGE[self.scheme]]
         for k, c in enumerate(WEDGE["upwind1"]):
             weights[k][:2] = self.speed * c / self.dx
         weights[0] = weights[0] + self.c_t * self.a0
+        self.__dict__["_wedge_kept"] = (key, weights)
         return weights
 
     def reynolds(self, f: StepFields) -> np.ndarray:
