@@ -27,8 +27,15 @@ def film_map(ax, r, ctx):
     reach = 3.0 * float(np.nanmedian(np.nanmax(np.abs(np.where(zone, X, 0.0)), axis=1)))
     central = float(np.nanmedian(np.nanmin(H, axis=1)))
     logs = np.log10(np.maximum(H, 1e-300))
-    mesh = ax.pcolormesh(A, X, logs, shading="nearest", cmap="viridis", rasterized=True,
-                         vmin=np.log10(0.5 * central), vmax=np.log10(30.0 * central))
+    # each angle has its own grid (scaled by its Hertz half-width): the rows are resampled on
+    # one position axis, so that the map's cell centres increase along both axes
+    span = reach if reach > 0.0 else float(np.nanmax(np.abs(X)))
+    across = np.linspace(-span, span, 2 * X.shape[1] + 1)
+    order = np.argsort(A[:, 0], kind="stable")
+    resampled = np.array([_row_on(across, X[i], logs[i]) for i in order])
+    mesh = ax.pcolormesh(A[order, 0], across, resampled.T, shading="nearest", cmap="viridis",
+                         rasterized=True, vmin=np.log10(0.5 * central),
+                         vmax=np.log10(30.0 * central))
     cax = ax.inset_axes([0.93, 0.1, 0.015, 0.8])
     cbar = ax.figure.colorbar(mesh, cax=cax)
     cbar.set_label(f"log10 film [{unit_h}]", fontsize=7)
@@ -39,6 +46,16 @@ def film_map(ax, r, ctx):
     angle_axis(ax)
     finish_axes(ax, legend=False)
     return True
+
+
+def _row_on(across, x, values):
+    """One angle's values at the positions ``across`` (NaN outside its own grid)."""
+    keep = np.isfinite(x) & np.isfinite(values)
+    if np.count_nonzero(keep) < 2:
+        return np.full(across.size, np.nan)
+    xs, vs = x[keep], values[keep]
+    rank = np.argsort(xs)
+    return np.interp(across, xs[rank], vs[rank], left=np.nan, right=np.nan)
 
 
 def elastic_films(ax, r, ctx):
