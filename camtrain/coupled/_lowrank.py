@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_step, extension
+from camtrain.dynamics.hla.chamber import chamber_step, extension, plunger_force
 
 #: adjuster sweeps of a step at most, and their relative agreement of the chamber forces
 HLA_SWEEPS = 50
@@ -151,7 +151,9 @@ def _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
         vf, vp = a1 * (base[w * k + 3] - q[f]) - v[f], a1 * (base[w * k + 5] - q[p]) - v[p]
         Xd[k] = -R * (vf - vp)
         x0[k] = extension(q[f], q[p], hla)
-    F = np.zeros(lobes)
+    F = np.empty(lobes)     # the sweeps start from every chamber's force predicted at the
+    for k in range(lobes):  # step's end (its last pressure rate carried over the step), not 0
+        F[k] = plunger_force(st.hp[k, 0] + st.hp[k, 3] * h, x0[k], hla)
     for _ in range(HLA_SWEEPS):
         change, top = 0.0, 0.0
         for j in range(lobes):
