@@ -15,7 +15,10 @@ Measured (2 shared cores): 3.7 s / 1.72 s = 2.16x (smallest CPU times 3.5 s / 1.
 was 5.0x): the chambers closed through the start-up transient, opened at their refill balance
 and their oil contents solved by the secant rule reach their periodic state in 8 revolutions
 (3 closed) against the constant-load trains' 4 (30 marched plainly), at 7 steps per grid
-interval against 6 (target not quite met).
+interval against 6 (target not quite met). Later, side by side with the code before the start's
+second inversion of M was dropped and the chambers' sweeps were started from their predicted
+forces: cpu 2.53 s / 1.07 s = 2.36x against 2.56 s / 1.10 s = 2.33x (loaded machine; within
+the spread; docs/lash_adjusters.md, "Where the adjusters' time goes").
 """
 from __future__ import annotations
 

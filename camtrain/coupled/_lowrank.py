@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_step, extension
+from camtrain.dynamics.hla.chamber import chamber_step, extension, plunger_force
 
 #: adjuster sweeps of a step at most, and their relative agreement of the chamber forces
 HLA_SWEEPS = 50
@@ -128,6 +128,43 @@ def _corrected(xc, G, z, coef, lobe_of, Sinv, m, w):
 
 
 @njit(cache=True)
+def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
+    """E[k, j]: lobe k's extension per unit plunger force of lobe j with the closed contacts'
+    correction (:func:`_corrected` of the force pair R on (plunger, follower) alone, worked
+    out only where E reads it: the force touches two columns of G, the extensions two rows
+    per lobe; the same sums in the same order)."""
+    nc, w = G.shape[0], 6
+    E = np.empty((lobes, lobes))
+    c = np.empty(nc)
+    for j in range(lobes):
+        for r in range(nc):
+            c[r] = G[r, w * j + 3] * -R + G[r, w * j + 5] * R
+        y = np.zeros(m)
+        if m > 0:
+            hc = np.zeros(m)
+            for r in range(m):
+                for e in range(w):
+                    hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
+            y = Sinv @ hc
+        for k in range(lobes):
+            plunger = _less_contacts(c, w * k + 5, G, coef, lobe_of, y, m, w)
+            follower = _less_contacts(c, w * k + 3, G, coef, lobe_of, y, m, w)
+            E[k, j] = R * (plunger - follower)
+    return E
+
+
+@njit(cache=True)
+def _less_contacts(c, r, G, coef, lobe_of, y, m, w):
+    """c[r] less the closed contacts' correction (G C^T y)[r] (:func:`_corrected`'s row r)."""
+    total = 0.0
+    for s in range(m):
+        for f in range(w):
+            if coef[s, f] != 0.0:
+                total += G[r, w * lobe_of[s] + f] * coef[s, f] * y[s]
+    return c[r] - total
+
+
+@njit(cache=True)
 def _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
     """Every lobe's chamber force solved against its contact-corrected extension (the
     module's docstring); the forces R F on (plunger, follower) added to ``z``, every chamber's
@@ -136,13 +173,7 @@ def _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
     h = 2.0 / a1
     Sinv = np.linalg.inv(small) if m > 0 else small
     base, _y = _corrected(xc, G, z, coef, lobe_of, Sinv, m, w)
-    E = np.empty((lobes, lobes))     # extension of lobe k per unit plunger force of lobe j
-    for j in range(lobes):
-        dz = np.zeros(xc.size)
-        dz[w * j + 5], dz[w * j + 3] = R, -R
-        col, _y = _corrected(np.zeros(xc.size), G, dz, coef, lobe_of, Sinv, m, w)
-        for k in range(lobes):
-            E[k, j] = R * (col[w * k + 5] - col[w * k + 3])
+    E = _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R)
     q, v = st.q, st.v
     X, Xd, x0 = np.empty(lobes), np.empty(lobes), np.empty(lobes)
     for k in range(lobes):
@@ -151,7 +182,9 @@ def _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
         vf, vp = a1 * (base[w * k + 3] - q[f]) - v[f], a1 * (base[w * k + 5] - q[p]) - v[p]
         Xd[k] = -R * (vf - vp)
         x0[k] = extension(q[f], q[p], hla)
-    F = np.zeros(lobes)
+    F = np.empty(lobes)     # the sweeps start from every chamber's force predicted at the
+    for k in range(lobes):  # step's end (its last pressure rate carried over the step), not 0
+        F[k] = plunger_force(st.hp[k, 0] + st.hp[k, 3] * h, x0[k], hla)
     for _ in range(HLA_SWEEPS):
         change, top = 0.0, 0.0
         for j in range(lobes):

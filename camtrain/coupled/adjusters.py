@@ -27,14 +27,16 @@ def adjuster_record(asm, train):
     return record, (starts + train.plunger).astype(np.int64)
 
 
-def adjusters_start(asm, train, start, theta_grid, phases, q, v, acc, hp):
+def adjusters_start(asm, train, start, theta_grid, phases, state, minv):
     """Every adjuster from the single train's periodic response at its lobe's angle: the
     plunger moved with its follower (the warm start moves the follower with the shaft), so
     the chamber keeps the single train's volume, its pressure, and the acceleration with
-    the chamber's force (in place)."""
+    the chamber's force (in place in ``state`` = (q, v, acc, hp)); ``minv`` = M^-1 (the
+    march's, set once: block diagonal, not inverted again here)."""
     from camtrain.dynamics.hla.chamber import plunger_force
     from camtrain.dynamics.hla.sealed import consistent_restart
 
+    q, v, acc, hp = state
     period = 2.0 * math.pi
     record, ipl = adjuster_record(asm, train)
     force = np.zeros(q.size)
@@ -48,14 +50,13 @@ def adjusters_start(asm, train, start, theta_grid, phases, q, v, acc, hp):
         push = record.ratio * plunger_force(hp[j, 0], ext, record)
         force[f] -= push
         force[p] += push
-    acc += np.linalg.solve(asm.M, force)
+    acc += minv @ force
     for j, g in enumerate(phases):     # the plunger's acceleration relative to its body as
         at = float(theta_grid[0]) - float(g)     # the single train's: no start-up jolt of a
         rel = (np.interp(at, start.theta, start.a[train.plunger], period=period)  # stiff chamber
                - np.interp(at, start.theta, start.a[train.follower], period=period))
         acc[ipl[j]] = acc[asm.ifol[j]] + rel
     if record.on:       # a sealed incompressible chamber: no acceleration in its body
-        minv = np.linalg.inv(asm.M)
         for j in range(len(phases)):
             consistent_restart(record, hp[j], acc, minv, asm.ifol[j], ipl[j])
 

@@ -164,8 +164,8 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     if film is not None:
         friction_table = friction = None
     path = _FrictionPath(cam.theta, theta, phases, ratio, friction, friction_table, film)
-    state = _start(asm, lob, path, cam, train, f0, hub, start, (phases, ratio, axes, omega),
-                   friction_arm)
+    state = _start(asm, lob, path, cam, train, (f0, sysm.mats.Minv), hub, start,
+                   (phases, ratio, axes, omega), friction_arm)
     if start is not None and film is not None:
         state.film[:] = start_film(film, start, cam.theta, phases, ratio, omega)
     if staggered:   # the shaft's first predicted loads: the start's contact loads
@@ -405,12 +405,13 @@ class _FrictionPath:
             self._lag()
 
 
-def _start(asm, lob, path, cam, train, f0, hub, start, lobes, friction_arm):
+def _start(asm, lob, path, cam, train, forces, hub, start, lobes, friction_arm):
     """The march's :data:`.records.State`: at rest with the valves seated, or from the single
-    train's periodic response ``start`` (:func:`.start.warm_start`); ``lobes`` = (phases,
-    ratio, axes, omega)."""
+    train's periodic response ``start`` (:func:`.start.warm_start`); ``forces`` = (the constant
+    forces, M^-1 of the system), ``lobes`` = (phases, ratio, axes, omega)."""
     from .start import warm_start
 
+    f0, minv = forces
     phases, ratio, axes, omega = lobes
     n, n_lobes = asm.M.shape[0], len(phases)
     q, v, acc = np.zeros(n), np.zeros(n), np.zeros(n)  # at rest: the start-up transient decays
@@ -428,7 +429,7 @@ def _start(asm, lob, path, cam, train, f0, hub, start, lobes, friction_arm):
     if train.hla is not None:      # every chamber at rest: the supply pressure, no flow
         hp[:, 0] = train.hla.supply_pressure
         if start is not None:
-            adjusters_start(asm, train, start, path.theta_grid, phases, q, v, acc, hp)
+            adjusters_start(asm, train, start, path.theta_grid, phases, (q, v, acc, hp), minv)
     return State(q, v, acc, act_c, act_s, np.zeros(n_lobes), np.zeros(n_lobes),
                  path.fs["h"], hp, hp.copy())
 
