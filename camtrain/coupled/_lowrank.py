@@ -116,7 +116,7 @@ def _corrected(xc, G, z, coef, lobe_of, Sinv, m, w):
         for r in range(m):
             for e in range(w):
                 hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
-        y = Sinv @ hc
+        y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
         for r in range(nc):
             total = 0.0
             for s in range(m):
@@ -145,7 +145,7 @@ def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
             for r in range(m):
                 for e in range(w):
                     hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
-            y = Sinv @ hc
+            y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
         for k in range(lobes):
             plunger = _less_contacts(c, w * k + 5, G, coef, lobe_of, y, m, w)
             follower = _less_contacts(c, w * k + 3, G, coef, lobe_of, y, m, w)
