@@ -102,6 +102,19 @@ def _small(G, coef, lobe_of, kk, m, w):
 
 
 @njit(cache=True)
+def _contact_forces(c, coef, lobe_of, Sinv, m, w):
+    """The closed contacts' forces y = Sinv C c at the coordinates' values ``c``."""
+    y = np.zeros(m)
+    if m > 0:
+        hc = np.zeros(m)
+        for r in range(m):
+            for e in range(w):
+                hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
+        y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
+    return y
+
+
+@njit(cache=True)
 def _corrected(xc, G, z, coef, lobe_of, Sinv, m, w):
     """The coordinates' values x_c + G z less the closed contacts' correction, and y (the
     contacts' forces) with it: c = (xc + G z) - G C^T y, y = Sinv C (xc + G z)."""
@@ -110,20 +123,10 @@ def _corrected(xc, G, z, coef, lobe_of, Sinv, m, w):
     for r in range(nc):
         for b in range(nc):
             c[r] += G[r, b] * z[b]
-    y = np.zeros(m)
+    y = _contact_forces(c, coef, lobe_of, Sinv, m, w)
     if m > 0:
-        hc = np.zeros(m)
-        for r in range(m):
-            for e in range(w):
-                hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
-        y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
         for r in range(nc):
-            total = 0.0
-            for s in range(m):
-                for f in range(w):
-                    if coef[s, f] != 0.0:
-                        total += G[r, w * lobe_of[s] + f] * coef[s, f] * y[s]
-            c[r] -= total
+            c[r] = _less_contacts(c, r, G, coef, lobe_of, y, m, w)
     return c, y
 
 
@@ -139,13 +142,7 @@ def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
     for j in range(lobes):
         for r in range(nc):
             c[r] = G[r, w * j + 3] * -R + G[r, w * j + 5] * R
-        y = np.zeros(m)
-        if m > 0:
-            hc = np.zeros(m)
-            for r in range(m):
-                for e in range(w):
-                    hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
-            y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
+        y = _contact_forces(c, coef, lobe_of, Sinv, m, w)
         for k in range(lobes):
             plunger = _less_contacts(c, w * k + 5, G, coef, lobe_of, y, m, w)
             follower = _less_contacts(c, w * k + 3, G, coef, lobe_of, y, m, w)
@@ -155,7 +152,7 @@ def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
 
 @njit(cache=True)
 def _less_contacts(c, r, G, coef, lobe_of, y, m, w):
-    """c[r] less the closed contacts' correction (G C^T y)[r] (:func:`_corrected`'s row r)."""
+    """c[r] less the closed contacts' correction (G C^T y)[r]."""
     total = 0.0
     for s in range(m):
         for f in range(w):

@@ -18,6 +18,7 @@ import numpy as np
 from numba import njit
 
 from camtrain.numerics.compile_notice import announce
+from camtrain.numerics.tables import held_linear
 
 BISECTIONS = 60
 
@@ -49,22 +50,9 @@ class Scheme(NamedTuple):
 
 
 @njit(cache=True, inline="always")
-def _lookup(grid, row, x):
-    """Linear interpolation of ``row`` on ``grid`` at x, held at the ends."""
-    n = grid.size
-    if x <= grid[0]:
-        return row[0]
-    if x >= grid[n - 1]:
-        return row[n - 1]
-    k = np.searchsorted(grid, x) - 1
-    t = (x - grid[k]) / (grid[k + 1] - grid[k])
-    return (1.0 - t) * row[k] + t * row[k + 1]
-
-
-@njit(cache=True, inline="always")
 def _blend(grid, row_i, row_j, t, x_i, x_j):
     """(1 - t) row_i(x_i) + t row_j(x_j), each row interpolated on ``grid``."""
-    return (1.0 - t) * _lookup(grid, row_i, x_i) + t * _lookup(grid, row_j, x_j)
+    return (1.0 - t) * held_linear(grid, row_i, x_i) + t * held_linear(grid, row_j, x_j)
 
 
 @njit(cache=True, inline="always")

@@ -5,6 +5,7 @@ import numpy as np
 from numba import njit
 
 from camtrain.numerics.roots import false_position, illinois_update
+from camtrain.numerics.tables import held_linear
 
 #: most evaluations of the backward-Euler residual per step, and the bracket or last move
 #: (relative to the speeds bracketed) at which the speed counts as found
@@ -12,19 +13,6 @@ ITERATIONS = 80
 TOLERANCE = 1e-13
 #: the load levels are uniform in W^(1/LEVEL_POWER), finer at light load (spin_tables)
 LEVEL_POWER = 3.0
-
-
-@njit(cache=True)
-def _row(grid, values, x):
-    """Linear interpolation of ``values`` on ``grid`` at x, held at the ends."""
-    n = grid.size
-    if x <= grid[0]:
-        return values[0]
-    if x >= grid[n - 1]:
-        return values[n - 1]
-    k = np.searchsorted(grid, x) - 1
-    t = (x - grid[k]) / (grid[k + 1] - grid[k])
-    return (1.0 - t) * values[k] + t * values[k + 1]
 
 
 @njit(cache=True)
@@ -47,8 +35,8 @@ def _traction(sp, a, lev, tl, u):
     exponentially with the Hertz pressure; see the package), linearly where a level carries
     none."""
     x = u / sp.sliding_scale[a]
-    f0 = _row(sp.grid, sp.traction[a, lev], x)
-    f1 = _row(sp.grid, sp.traction[a, lev + 1], x)
+    f0 = held_linear(sp.grid, sp.traction[a, lev], x)
+    f1 = held_linear(sp.grid, sp.traction[a, lev + 1], x)
     if f0 * f1 > 0.0:
         return np.sign(f0) * np.exp((1.0 - tl) * np.log(abs(f0)) + tl * np.log(abs(f1)))
     return (1.0 - tl) * f0 + tl * f1
@@ -63,7 +51,7 @@ def _balance(sp, i, j, ta, lev, tl, v0, w0, w1, h):
     ts, tw = tl
     f = (1.0 - ta) * _traction(sp, i, lev, ts, u) + ta * _traction(sp, j, lev, ts, u)
     x = w1 / sp.speed_scale
-    tp = (1.0 - tw) * _row(sp.grid, sp.pin[lev], x) + tw * _row(sp.grid, sp.pin[lev + 1], x)
+    tp = (1.0 - tw) * held_linear(sp.grid, sp.pin[lev], x) + tw * held_linear(sp.grid, sp.pin[lev + 1], x)
     inertial = sp.inertia * (w1 - w0) / h if h > 0.0 else 0.0
     return inertial - sp.radius * f + tp, u, f
 
