@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test test-reverse test-folders test-oldest fuzz bench lint docs clean venv
+.PHONY: demo test test-all test-reverse test-folders test-oldest fuzz bench lint docs clean venv
 
 venv: $(STAMP)
 
@@ -21,7 +21,12 @@ demo: $(STAMP)
 	$(BIN)/camtrain warmup
 	$(BIN)/camtrain run decks/harrison_flat.toml --out out/harrison_flat
 
+# `make test` leaves out the tests marked slow (each a minute or more of marching on two cores)
+# so that it stays under ten minutes; `make test-all` runs every test.
 test: $(STAMP)
+	$(BIN)/python -m pytest -m "not slow"
+
+test-all: $(STAMP)
 	$(BIN)/python -m pytest
 
 # Order-dependence checks: the whole suite last test first, and each test folder on its own.

@@ -41,6 +41,8 @@ def minimal_deck() -> str:
 def pytest_configure(config):
     for tier in TIERS:
         config.addinivalue_line("markers", f"{tier}: validation tier (tests/tiers.py)")
+    config.addinivalue_line("markers", "slow: out of `make test` (kept under ten minutes on two "
+                            "cores); `make test-all` runs it")
 
 
 def pytest_addoption(parser):

@@ -155,6 +155,7 @@ def test_mutated_deck_runs_or_fails_cleanly(seed, tmp_path, monkeypatch, fuzz_re
     assert_sane(res, out, f"fuzz case {seed}: {name}: {done}")
 
 
+@pytest.mark.slow   # make test-all (about a minute on two cores)
 def test_every_source_is_fuzzed_and_runs_unmutated(tmp_path, monkeypatch):
     """The fuzz starts from every shipped deck and template, each valid as given."""
     monkeypatch.chdir(ROOT / "decks")   # standard input: decks name their files from here

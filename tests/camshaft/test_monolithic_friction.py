@@ -22,6 +22,7 @@ def _run(law: str):
 
 
 @pytest.mark.derived
+@pytest.mark.slow   # make test-all (about a minute on two cores)
 @pytest.mark.parametrize("law", ["cap", "greenwood_tripp"])
 def test_per_step_and_lagged_friction_reach_one_periodic_state(law, monkeypatch):
     """Two lobes on the x10 shaft, Ball's capped friction and Teodorescu's Greenwood-Tripp

@@ -174,6 +174,7 @@ def _plain(monkeypatch):
     monkeypatch.setattr(adjusters, "accelerate_chambers", lambda sysm, state, series: series)
 
 
+@pytest.mark.slow   # make test-all (about a minute on two cores)
 def test_chambers_reach_the_periodic_state_of_the_plain_march_in_fewer_revolutions(
         monkeypatch):
     """Four trains of decks/zeta_intake_camshaft_coupled_hla.toml on the elastic shaft (the

@@ -34,6 +34,7 @@ def shipped(solver: str, **flexibility) -> dict:
 
 
 @pytest.mark.derived
+@pytest.mark.slow   # make test-all (about a minute on two cores)
 def test_staggered_meets_monolithic_on_the_shipped_deck_at_a_quarter_step():
     """The shipped eight-train deck (the assumed shaft, its belt's hub load, friction at every
     step), the staggered march with its defaults (linear predictor, up to 10 passes a step):

@@ -30,6 +30,10 @@ def fine_exchange(angle_points: int) -> dict:
     return raw
 
 
+#: the module marches the shipped coupled deck several times over (make test-all)
+pytestmark = pytest.mark.slow
+
+
 @pytest.fixture(scope="module")
 def exchanged():
     return {points: api.run(validate(fine_exchange(points), f"fine {points}", DECKS))

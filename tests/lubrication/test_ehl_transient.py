@@ -130,6 +130,7 @@ def reversal(cavitation: str, steps: int = 60, solver: str = "auto"):
                                                        linear_solver=solver))
 
 
+@pytest.mark.slow   # make test-all (about a minute on two cores)
 def test_entrainment_reversal_keeps_a_film_and_closes_the_mass_balance():
     u, out = reversal("elrod_adams")
     assert np.all(out.h_min > 0.0)
