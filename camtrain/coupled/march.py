@@ -218,7 +218,7 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
         path.after(out.load, out.film)
         if series is not None:
             series = accelerate_chambers(sysm, state, series)
-        if previous is not None:
+        if cycle > 1:
             change = _change(out, previous, sysm.hla)
             if change <= period_tol:
                 break
@@ -400,8 +400,10 @@ class _FrictionPath:
 
 def _start(asm, lob, path, cam, train, forces, hub, start, lobes, friction_arm):
     """The march's :data:`.records.State`: at rest with the valves seated, or from the single
-    train's periodic response ``start`` (:func:`.start.warm_start`); ``forces`` = (the constant
-    forces, M^-1 of the system), ``lobes`` = (phases, ratio, axes, omega)."""
+    train's periodic response ``start`` (:func:`.start.warm_start`; with lash adjusters its
+    quiet start, which throws no follower off its cam: one that left its cam would pump its
+    adjuster up); ``forces`` = (the constant forces, M^-1 of the system), ``lobes`` = (phases,
+    ratio, axes, omega)."""
     from .start import warm_start
 
     f0, minv = forces
