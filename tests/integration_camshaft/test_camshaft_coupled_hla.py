@@ -63,6 +63,28 @@ def test_stiff_shaft_gives_every_train_its_single_train_with_adjuster(stiff_hla)
         assert landing(lobe_load) == last
 
 
+@pytest.mark.derived
+def test_quiet_start_answers_the_orders_below_half_the_lowest_bending_frequency():
+    """The adjusters' quiet start answers the shaft's bending only to the orders of the
+    revolution below half its lowest natural frequency, where the bare shaft's undamped answer
+    1/(1 - r^2) is within 4/3 of its static one. One mass on a spring at 95.9 orders (the Zeta
+    shaft's lowest bending mode): orders up to 47 (r = 0.490, 1.32), not 48 (r = 0.5005,
+    1.335). Two masses: the lower mode sets it. A mode below the second order: the mean and
+    the first order all the same."""
+    from camtrain.coupled.start import quiet_bending_orders
+
+    omega, m = 157.08, 2.0
+    k = m * (95.9 * omega) ** 2
+    orders = quiet_bending_orders(np.array([[k]]), np.array([[m]]), omega)
+    amplification = lambda order: 1.0 / (1.0 - (order / 95.9) ** 2)     # noqa: E731
+    assert orders == 47
+    assert amplification(orders) <= 4.0 / 3.0 < amplification(orders + 1)
+    two = np.array([[2.0 * k, -k], [-k, k]])       # modes at 0.618 and 1.618 of sqrt(k/m)
+    lower = 95.9 * math.sqrt((3.0 - math.sqrt(5.0)) / 2.0)
+    assert quiet_bending_orders(two, np.diag([m, m]), omega) == math.ceil(lower / 2.0) - 1
+    assert quiet_bending_orders(np.array([[m * omega ** 2]]), np.array([[m]]), omega) == 1
+
+
 class _Built(Exception):
     """Raised by the stand-in solver to hand the coupled problem back."""
 
