@@ -56,8 +56,9 @@ def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, 
     (pitch radius, hub-load direction, the preload's constant x and y parts) is), the
     follower (and an open valve) moved with the lobe, the contact states from
     their indicators and the acceleration from the equilibrium. ``quiet``: the shaft's
-    bending answered only up to :func:`quiet_bending_orders` (its twist to every order), a
-    start that does not throw followers off their cams (the lash adjusters' march)."""
+    bending in each plane answered only up to its :func:`quiet_bending_orders` (its twist to
+    every order up to 100), a start that does not throw followers off their cams (the lash
+    adjusters' march)."""
     from camtrain.dynamics.train import CAM
 
     idx = dict(ix=sysm.ix, iy=sysm.iy, iphi=sysm.iphi, ifol=sysm.ifol, ival=sysm.ival,
@@ -104,10 +105,10 @@ def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, 
         radius, direction, const_x, const_y = hub
         fb[sysm.hub_x] += np.abs(torque) / radius * direction[0] + const_x
         fb[sysm.hub_y] += np.abs(torque) / radius * direction[1] + const_y
-    orders = quiet_bending_orders(K[:nb, :nb], M[:nb, :nb], omega) if quiet else 100
-    for lo, hi, force in ((0, nb, fb[:nb]), (nb, 2 * nb, fb[nb:])):
-        q[lo:hi], v[lo:hi] = _periodic_start(K[lo:hi, lo:hi], M[lo:hi, lo:hi], C[lo:hi, lo:hi],
-                                             force, omega, orders)
+    for lo, hi, force in ((0, nb, fb[:nb]), (nb, 2 * nb, fb[nb:])):    # each plane's bending
+        Kb, Mb = K[lo:hi, lo:hi], M[lo:hi, lo:hi]
+        orders = quiet_bending_orders(Kb, Mb, omega) if quiet else 100
+        q[lo:hi], v[lo:hi] = _periodic_start(Kb, Mb, C[lo:hi, lo:hi], force, omega, orders)
     hi = idx["tr0"]
     q[t0:hi], v[t0:hi] = _periodic_start(K[t0:hi, t0:hi], M[t0:hi, t0:hi], C[t0:hi, t0:hi],
                                          ft[:hi - t0], omega)
