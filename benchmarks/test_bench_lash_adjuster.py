@@ -11,8 +11,8 @@ Coupled: four trains (one lobe per cylinder) of decks/zeta_intake_camshaft_coupl
 the elastic camshaft marched together to their periodic state (the monolithic march, from the
 single train's periodic start), against the same four trains of
 decks/zeta_intake_camshaft_coupled.toml (the constant-load adjuster), same run. Target: 2x.
-Measured (2 shared cores, three runs alternating with the code before): cpu 1.62-1.65x
-(1.81-2.12 s / 1.11-1.28 s) against 1.82-2.23x before (earlier sessions 2.16-2.36x; 5.0x at
+Measured (2 shared cores, four runs alternating with the code before): cpu 1.47-1.65x
+(1.81-2.12 s / 1.11-1.44 s) against 1.82-2.23x before (earlier sessions 2.16-2.36x; 5.0x at
 first): from the quiet start (the shaft's bending answered below half its lowest natural
 frequency: no follower thrown off its cam) the chambers, open from the start with their oil
 contents solved by the secant rule, reach their periodic state in 6 revolutions against the
