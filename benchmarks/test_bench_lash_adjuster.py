@@ -11,14 +11,13 @@ Coupled: four trains (one lobe per cylinder) of decks/zeta_intake_camshaft_coupl
 the elastic camshaft marched together to their periodic state (the monolithic march, from the
 single train's periodic start), against the same four trains of
 decks/zeta_intake_camshaft_coupled.toml (the constant-load adjuster), same run. Target: 2x.
-Measured (2 shared cores): 3.7 s / 1.72 s = 2.16x (smallest CPU times 3.5 s / 1.61 s = 2.17x;
-was 5.0x): the chambers closed through the start-up transient, opened at their refill balance
-and their oil contents solved by the secant rule reach their periodic state in 8 revolutions
-(3 closed) against the constant-load trains' 4 (30 marched plainly), at 7 steps per grid
-interval against 6 (target not quite met). Later, side by side with the code before the start's
-second inversion of M was dropped and the chambers' sweeps were started from their predicted
-forces: cpu 2.53 s / 1.07 s = 2.36x against 2.56 s / 1.10 s = 2.33x (loaded machine; within
-the spread; docs/lash_adjusters.md, "Where the adjusters' time goes").
+Measured (2 shared cores, four runs alternating with the code before): cpu 1.47-1.65x
+(1.81-2.12 s / 1.11-1.44 s) against 1.82-2.23x before (earlier sessions 2.16-2.36x; 5.0x at
+first): from the quiet start (the shaft's bending answered below half its lowest natural
+frequency: no follower thrown off its cam) the chambers, open from the start with their oil
+contents solved by the secant rule, reach their periodic state in 6 revolutions against the
+constant-load trains' 4 (8 with the earlier closed first revolutions, 30 marched plainly), at 7
+steps per grid interval against 6 (docs/lash_adjusters.md, "Where the adjusters' time goes").
 """
 from __future__ import annotations
 

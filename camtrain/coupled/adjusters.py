@@ -1,8 +1,8 @@
 """Every lobe's hydraulic lash adjuster in the coupled march (:mod:`camtrain.coupled.march`):
 the compiled record of the trains' adjuster with the state index of every lobe's plunger,
 every chamber's start from the single train's periodic response, and the chambers' way to
-their periodic state: closed through the shaft's start-up transient, then open, their oil
-contents solved over the revolutions (secant rule) (docs/lash_adjusters.md)."""
+their periodic state: their oil contents solved over the revolutions (secant rule)
+(docs/lash_adjusters.md)."""
 from __future__ import annotations
 
 import math
@@ -61,16 +61,6 @@ def adjusters_start(asm, train, start, theta_grid, phases, state, minv):
             consistent_restart(record, hp[j], acc, minv, asm.ifol[j], ipl[j])
 
 
-def closed_chambers(record):
-    """``record`` with every chamber closed: no check-valve inflow, no leak-down or Couette
-    flow, so each chamber keeps its oil and acts as the closed chamber's spring (its
-    compressibility). The coupled march's first revolutions use it (docs/lash_adjusters.md):
-    the shaft's start-up transient would otherwise pump the plungers up (a follower leaving
-    its cam opens the check valve) by more than their leak-down takes back in many
-    revolutions; once the closed chambers' revolutions agree, the chambers are opened."""
-    return record._replace(check_k=0.0, g_leak=0.0, c_couette=0.0)
-
-
 def _volumes(record, state, lay):
     """Every chamber's volume [m^3] in ``state`` (its plunger's extension)."""
     q = state.q
@@ -106,28 +96,6 @@ def _set_content(record, state, j, volume, content) -> bool:
         return False
     state.hp[j, 0] = brentq(gap, lo, hi, xtol=1e-6, rtol=1e-12)
     return True
-
-
-def refill_contents(record, state, lay, samples) -> None:
-    """Every chamber opened with the oil it holds in the periodic state's balance of refill and
-    leak-down, estimated from the last closed revolution's ``samples`` (pressure and extension,
-    lobes x 2 x n): over a periodic revolution the check valve just makes up what the annulus
-    lost, so the chamber's lowest pressure sits at the valve's cracking threshold (supply less
-    cracking pressure). The content that gives that pressure at the lowest sample's volume
-    (the closed chamber's content does not change over its revolution) replaces the content,
-    set by the pressure at the chamber's present volume (in place)."""
-    from camtrain.dynamics.hla import mixture_volume
-
-    if chamber_contents(record, state, lay) is None:
-        return
-    target = record.p_supply - record.p_crack
-    phi = float(mixture_volume(target, record.k_liq, record.air, record.n_poly))
-    volumes = _volumes(record, state, lay)
-    for j in range(volumes.size):
-        low = int(np.argmin(samples[j, 0]))
-        ext = samples[j, 1, low]
-        volume = max(record.v_dead + record.area * ext, 1e-3 * record.v_dead)
-        _set_content(record, state, j, volumes[j], volume / phi)
 
 
 def accelerate_chambers(sysm, state, series):

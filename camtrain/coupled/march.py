@@ -198,36 +198,29 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     after each): the last one's loads, valve accelerations and films, revolutions, the last
     change and (contact changes, steps cut short, staggered steps missed) of the last.
 
-    With lash adjusters the revolutions first march every chamber closed
-    (:func:`.adjusters.closed_chambers`) until they agree within the square root of the
-    tolerance, then open them at their refill balance (:func:`.adjusters.refill_contents`),
-    each open revolution followed by the secant rule on every chamber's content
-    (:func:`.adjusters.accelerate_chambers`), until they agree, the plungers' extensions as
-    well as the loads (:func:`_change`)."""
+    With lash adjusters every revolution is followed by the secant rule on every chamber's
+    oil content (:func:`.adjusters.accelerate_chambers`), and two revolutions agree when the
+    plungers' extensions do as well as the loads (:func:`_change`)."""
     from ._revolution import revolution
-    from .adjusters import accelerate_chambers, chamber_contents, closed_chambers, refill_contents
+    from .adjusters import accelerate_chambers, chamber_contents
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
                   np.zeros((n_lobes, grid)), np.zeros((n_lobes, 2, grid)))
     width = 6 if sysm.hla.on else 5
-    marching = sysm._replace(hla=closed_chambers(sysm.hla)) if sysm.hla.on else sysm
+    contents = chamber_contents(sysm.hla, state, sysm.lay) if sysm.hla.on else None
+    series = None if contents is None else (contents, None)
     counts = (0, 0, 0)
-    previous, change, cycle, series = None, math.inf, 0, None
+    previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
         work, at, pre = workspace(state.q.size, n_lobes, width)
-        counts = revolution(marching, lob, path.record(), scheme, state, out, work, at, pre)
+        counts = revolution(sysm, lob, path.record(), scheme, state, out, work, at, pre)
         path.after(out.load, out.film)
         if series is not None:
             series = accelerate_chambers(sysm, state, series)
-        if previous is not None:
+        if cycle > 1:
             change = _change(out, previous, sysm.hla)
-            if marching is not sysm and change <= math.sqrt(period_tol):
-                marching = sysm     # the start-up transient has passed: open the chambers
-                refill_contents(sysm.hla, state, sysm.lay, out.hla)
-                contents = chamber_contents(sysm.hla, state, sysm.lay)
-                series = None if contents is None else (contents, None)
-            elif change <= period_tol and cycle >= 2:
+            if change <= period_tol:
                 break
         previous = (out.load.copy(), out.hla[:, 1].copy())
     return out.load, out.acc, out.film, cycle, change, counts, out.hla
@@ -407,8 +400,10 @@ class _FrictionPath:
 
 def _start(asm, lob, path, cam, train, forces, hub, start, lobes, friction_arm):
     """The march's :data:`.records.State`: at rest with the valves seated, or from the single
-    train's periodic response ``start`` (:func:`.start.warm_start`); ``forces`` = (the constant
-    forces, M^-1 of the system), ``lobes`` = (phases, ratio, axes, omega)."""
+    train's periodic response ``start`` (:func:`.start.warm_start`; with lash adjusters its
+    quiet start, which throws no follower off its cam: one that left its cam would pump its
+    adjuster up); ``forces`` = (the constant forces, M^-1 of the system), ``lobes`` = (phases,
+    ratio, axes, omega)."""
     from .start import warm_start
 
     f0, minv = forces
@@ -424,7 +419,7 @@ def _start(asm, lob, path, cam, train, forces, hub, start, lobes, friction_arm):
         q, v, acc, act_c, act_s = warm_start(
             start, cam, path.theta_grid, phases, ratio, axes, train, asm.M, asm.K, asm.C, f0,
             omega, asm, lob.b[:, -1], lob.bd[:, -1], lob.gx[:, -1], lob.gy[:, -1],
-            lob.gphi[:, -1], drag, hub)
+            lob.gphi[:, -1], drag, hub, quiet=train.hla is not None)
     hp = np.zeros((n_lobes, 4))
     if train.hla is not None:      # every chamber at rest: the supply pressure, no flow
         hp[:, 0] = train.hla.supply_pressure

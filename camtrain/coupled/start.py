@@ -26,8 +26,28 @@ def _periodic_start(K, M, C, forces, omega, orders: int = 100):
     return q, v
 
 
+def quiet_bending_orders(K, M, omega) -> int:
+    """The highest order of the shaft's revolution below half the lowest natural frequency
+    of its bending block (stiffness ``K``, mass ``M``), at least 1: up to it the bare shaft's
+    answer to a load is within 4/3 of its static answer (undamped single-mode amplification
+    1/(1 - r^2), r <= 1/2).
+
+    Why a start may leave out the orders above it: the bending modes of a camshaft between
+    its bearings are lightly damped (on the Zeta shaft at orders 96-112 of the cam speed,
+    modal damping ratios 0.1-0.5 %), and the bare shaft's resonant answer to the small high
+    orders of the single trains' rigid-shaft loads there is not the coupled shaft's (the
+    trains riding on the shaft detune and damp those modes): on the Zeta shaft it gave the
+    followers 0.14-0.36 m/s away from their cams at the start, which threw the
+    followers on the base circle off their cams in the first revolution."""
+    import scipy.linalg
+
+    lowest = math.sqrt(max(float(scipy.linalg.eigh(K, M, eigvals_only=True,
+                                                   subset_by_index=[0, 0])[0]), 0.0))
+    return max(int(math.ceil(0.5 * lowest / omega)) - 1, 1)
+
+
 def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, omega, sysm,
-               b0, bd0, gx0, gy0, gphi0, drag=None, hub=None):
+               b0, bd0, gx0, gy0, gphi0, drag=None, hub=None, quiet: bool = False):
     """State at the march's first angle from the single train's periodic response (see
     :func:`march_coupled`): each train at its lobe's angle, the shaft at its periodic answer
     to the trains' contact forces and torques (with their friction when ``drag`` = (coefficient
@@ -35,7 +55,10 @@ def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, 
     whether the levels are cam-level loads) is given, and the drive's hub load when ``hub`` =
     (pitch radius, hub-load direction, the preload's constant x and y parts) is), the
     follower (and an open valve) moved with the lobe, the contact states from
-    their indicators and the acceleration from the equilibrium."""
+    their indicators and the acceleration from the equilibrium. ``quiet``: the shaft's
+    bending in each plane answered only up to its :func:`quiet_bending_orders` (its twist to
+    every order up to 100), a start that does not throw followers off their cams (the lash
+    adjusters' march)."""
     from camtrain.dynamics.train import CAM
 
     idx = dict(ix=sysm.ix, iy=sysm.iy, iphi=sysm.iphi, ifol=sysm.ifol, ival=sysm.ival,
@@ -82,9 +105,10 @@ def warm_start(start, cam, theta_grid, phases, ratio, axes, train, M, K, C, f0, 
         radius, direction, const_x, const_y = hub
         fb[sysm.hub_x] += np.abs(torque) / radius * direction[0] + const_x
         fb[sysm.hub_y] += np.abs(torque) / radius * direction[1] + const_y
-    for lo, hi, force in ((0, nb, fb[:nb]), (nb, 2 * nb, fb[nb:])):
-        q[lo:hi], v[lo:hi] = _periodic_start(K[lo:hi, lo:hi], M[lo:hi, lo:hi], C[lo:hi, lo:hi],
-                                             force, omega)
+    for lo, hi, force in ((0, nb, fb[:nb]), (nb, 2 * nb, fb[nb:])):    # each plane's bending
+        Kb, Mb = K[lo:hi, lo:hi], M[lo:hi, lo:hi]
+        orders = quiet_bending_orders(Kb, Mb, omega) if quiet else 100
+        q[lo:hi], v[lo:hi] = _periodic_start(Kb, Mb, C[lo:hi, lo:hi], force, omega, orders)
     hi = idx["tr0"]
     q[t0:hi], v[t0:hi] = _periodic_start(K[t0:hi, t0:hi], M[t0:hi, t0:hi], C[t0:hi, t0:hi],
                                          ft[:hi - t0], omega)

@@ -211,8 +211,8 @@ def dynamics_problems(deck) -> list[Problem]:
     if (hla is not None and hla.check_valve == "ball" and shaft is not None
             and getattr(shaft, "coupling", "one_way") == "two_way"):
         out.append(Problem("dynamics.lash_adjuster.check_valve", "the two-way coupled march's "
-                           "chambers take the quasi-static check valve (their way to the "
-                           "periodic state sets each chamber's oil at its cracking threshold)",
+                           "chambers take the quasi-static check valve (the march carries "
+                           "each chamber's pressure and flows, not the ball's lift and speed)",
                            "ball", "quasi_static, or camshaft.flexibility.coupling = one_way"))
     if (roller is not None and d.roller == "marched" and roller.pin != "locked"
             and d.integrator != "newmark"):
