@@ -173,3 +173,35 @@ def test_matrix_free_steps_give_the_dense_solution():
     assert free.h_central == pytest.approx(dense.h_central, rel=1e-7)
     assert free.h_min == pytest.approx(dense.h_min, rel=1e-7)
     assert np.abs(free.p - dense.p).max() < 1e-6 * dense.p_h
+
+
+def test_multilevel_grids_end_on_a_small_dense_grid():
+    """The preconditioner's grids coarsen by four down to at most COARSEST nodes, whatever
+    the fine grid: no dense factorisation grows with n."""
+    from camtrain.lubrication.ehl_krylov import COARSEST, coarse_grids
+    from camtrain.lubrication.ehl_line import _discrete
+
+    fine, _ = _discrete(ml_contact(20, 10), EHLResolution(nodes=65536))
+    sizes = [g.X.size for g in coarse_grids(fine)]
+    assert sizes == [16384, 4096, 1024, 256] and sizes[-1] <= COARSEST
+    assert all(g.X[0] == fine.X[0] and g.X[-1] == fine.X[-1] for g in coarse_grids(fine))
+
+
+def test_four_grid_preconditioner_gives_the_dense_solution(monkeypatch):
+    """With the coarsest dense grid forced down to 64 nodes, 1500 points go through three
+    coarse grids (375, 94 and 24 nodes, the last one dense): the dense Newton's solution."""
+    from camtrain.lubrication import ehl_krylov
+
+    c = ml_contact(20, 10, "dowson_higginson")
+    dense = solve_ehl_line(c, EHLResolution(nodes=1500, dense_nodes=4000))
+    monkeypatch.setattr(ehl_krylov, "COARSEST", 64)
+    assert [g.X.size for g in ehl_krylov.coarse_grids(_fine(c, 1500))] == [375, 94, 24]
+    free = solve_ehl_line(c, EHLResolution(nodes=1500, dense_nodes=400))
+    assert free.h_central == pytest.approx(dense.h_central, rel=1e-7)
+    assert free.h_min == pytest.approx(dense.h_min, rel=1e-7)
+    assert np.abs(free.p - dense.p).max() < 1e-6 * dense.p_h
+
+
+def _fine(contact, nodes):
+    from camtrain.lubrication.ehl_line import _discrete
+    return _discrete(contact, EHLResolution(nodes=nodes))[0]

@@ -153,6 +153,21 @@ def test_matrix_free_march_gives_the_dense_march(cavitation):
     assert (np.nanmax(free.mass_error) < 1e-5) == (np.nanmax(dense.mass_error) < 1e-5)
 
 
+def test_multilevel_preconditioner_march_gives_the_dense_march(monkeypatch):
+    """The coarse correction recursing: with the coarsest dense grid forced down to 32 nodes,
+    the 256-point reversal's directions go through grids of 64 (band-smoothed, itself
+    preconditioned) and 16 nodes (dense); the films are the dense march's to the same 5e-5."""
+    from camtrain.lubrication import ehl_step_krylov
+
+    _, dense = reversal("elrod_adams", solver="dense")
+    monkeypatch.setattr(ehl_step_krylov, "COARSEST", 32)
+    _, free = reversal("elrod_adams", solver="krylov")
+    assert free.krylov_iterations > 0
+    for name in ("h_central", "h_min", "p_max"):
+        a, b = getattr(free, name), getattr(dense, name)
+        assert np.abs(a / b - 1.0).max() < 5e-5, name
+
+
 def test_reynolds_cavitation_does_not_conserve_mass():
     """The same reversal with the Reynolds exit condition loses mass at its rupture: the
     balance that closes with Elrod-Adams does not close here (the test above can fail)."""
