@@ -49,7 +49,7 @@ def band_values(kernel_row, t_H: dict, local: dict, scale, active, width: int,
     return value
 
 
-@lru_cache(maxsize=16)
+@lru_cache(maxsize=6)     # ~1.6 kB per point each: a few sizes only
 def _band_storage(m: int, n: int):
     """Where the band's values value[k, i] (row i, column i + d[k], d = -m..m) go in LAPACK
     band storage ab[m - d[k], i + d[k]], for the columns inside the matrix: (to, at) flat
