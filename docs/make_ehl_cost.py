@@ -75,8 +75,10 @@ def draw(series, path: Path) -> None:
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for (label, points, costs), marker in zip(series, "os"):
+        top = list(points).index(1024)
         ax.loglog(points, costs, marker + "-", lw=1.6,
-                  label=f"{label}: n^{exponent(points, costs):.2f} fitted")
+                  label=f"{label}: n^{exponent(points, costs):.2f} fitted "
+                        f"(n^{exponent(points[top:], costs[top:]):.2f} from 1,024)")
         n = np.geomspace(points[0], points[-1], 50)
         c0 = costs[list(points).index(1024)]
         for shape, style, name in ((n / 1024, ":", "n"),
@@ -89,7 +91,7 @@ def draw(series, path: Path) -> None:
     ax.set_title("Elastic line contact: cost against points")
     ax.set_ylim(min(min(c) for _, _, c in series) / 3, max(max(c) for _, _, c in series) * 3)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)

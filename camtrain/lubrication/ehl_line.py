@@ -24,10 +24,11 @@ Solver (the choice, measured in docs/ehl.md): semismooth Newton on the coupled s
 the dense influence matrix (the residual itself uses the FFT deflection), on grids up to
 ``dense_nodes``; a factorised Jacobian is reused while it keeps halving the residual. Finer grids
 take matrix-free GMRES steps (:mod:`.ehl_krylov`, O(n log n) products) preconditioned by a
-multilevel V-cycle (coarse grids four times coarser each, a band solve on each, the dense LU
+multilevel W-cycle (coarse grids four times coarser each, a band solve on each, the dense LU
 only on a coarsest grid of at most 256 nodes), so that the cost grows as n log n. Steps are
-damped by backtracking on the residual norm. Nested grids (128, 256, ... nodes) give each level the previous solution as its guess; the
-first starts from the Hertz pressure with Moes' film; a level too coarse to converge is skipped.
+damped by backtracking on the residual norm. Nested grids (128, 256, ... nodes) give each level
+the previous solution as its guess; the first starts from the Hertz pressure with Moes' film; a
+level too coarse to converge is skipped.
 """
 from __future__ import annotations
 
