@@ -153,6 +153,33 @@ def test_matrix_free_march_gives_the_dense_march(cavitation):
     assert (np.nanmax(free.mass_error) < 1e-5) == (np.nanmax(dense.mass_error) < 1e-5)
 
 
+def test_coarse_kernel_keeps_the_fine_kernels_constant():
+    """The deflection is defined up to a constant (H0 absorbs it); the march's kernel, scaled
+    from unit spacing, carries -ln dx of it. The preconditioner's coarse kernel keeps the
+    fine one's, so the Hertz pressure deflects both grids alike (to the discretisation, 1e-3
+    here); a coarse kernel scaled from unit spacing in turn would differ by (ln 4)/2 = 0.69."""
+    from camtrain.lubrication.ehl_elastic import ElasticKernel
+    from camtrain.lubrication.ehl_step_krylov import _coarse_kernel, _per_length_constant
+
+    X = np.linspace(-4.5, 4.5, 1024)
+    Xc = np.linspace(-4.5, 4.5, 256)
+    dx, dxc = X[1] - X[0], Xc[1] - Xc[0]
+    unit = ElasticKernel.of_grid(X.size, 1.0)
+    fine = ElasticKernel(X.size, dx, dx * unit.row, dx * unit.spectrum, unit.length)
+    coarse, _ = _coarse_kernel(fine, Xc.size, dxc)
+    assert _per_length_constant(coarse) == pytest.approx(-np.log(dx), rel=1e-12)
+    hertz = np.sqrt(np.maximum(1.0 - X**2, 0.0))
+    hertz_c = np.sqrt(np.maximum(1.0 - Xc**2, 0.0))
+    hertz *= 0.5 * np.pi / (dx * hertz.sum())          # the same load on both grids, as the
+    hertz_c *= 0.5 * np.pi / (dxc * hertz_c.sum())     # load balance of each holds it
+    V_fine = np.interp(Xc, X, fine.deflection(hertz))
+    assert np.abs(coarse.deflection(hertz_c) - V_fine).max() < 1e-3 * np.abs(V_fine).max()
+    unit_c = ElasticKernel.of_grid(Xc.size, 1.0)
+    scaled = ElasticKernel(Xc.size, dxc, dxc * unit_c.row, dxc * unit_c.spectrum, unit_c.length)
+    assert np.median(scaled.deflection(hertz_c) - V_fine) == pytest.approx(0.5 * np.log(4),
+                                                                          rel=0.01)
+
+
 def test_multilevel_preconditioner_march_gives_the_dense_march(monkeypatch):
     """The coarse correction recursing: with the coarsest dense grid forced down to 32 nodes,
     the 256-point reversal's directions go through grids of 64 (band-smoothed, itself
