@@ -26,6 +26,7 @@ class FilmMarch:
     ehl_angle_step: float = 0.008726646259971648    #: 0.5 deg [rad]
     ehl_tolerance: float = 1e-6
     ehl_march: str = "bdf2"
+    ehl_linear_solver: str = "auto"
 
 
 DEFAULTS = FilmMarch()

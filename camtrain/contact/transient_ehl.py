@@ -49,6 +49,7 @@ def ehl_resolution(contact):
                            inlet=float(_knob(contact, "ehl_inlet")),
                            tolerance=float(_knob(contact, "ehl_tolerance")),
                            march=str(_knob(contact, "ehl_march")),
+                           linear_solver=str(_knob(contact, "ehl_linear_solver")),
                            cavitation=getattr(trib, "ehl_cavitation", "elrod_adams"))
 
 

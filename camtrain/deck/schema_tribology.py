@@ -222,6 +222,13 @@ class Solver:
     ehl_march: Literal["bdf2", "implicit_euler"] = option(
         "Time scheme of the elastic film: bdf2 (second order) or implicit_euler (first order)",
         default="bdf2", applies="film_model = ehl")
+    ehl_linear_solver: Literal["auto", "krylov", "dense"] = option(
+        "Linear solver of the elastic film's Newton directions: krylov (matrix-free GMRES with "
+        "a multilevel preconditioner; cost per direction ~ n log n), dense (the Jacobian's LU; "
+        "cost ~ n^3 per factorisation, kept while it converges: cheaper below about 384 "
+        "points), or auto (dense below 384 ehl_nodes, krylov from there). The same equations "
+        "to the same ehl_tolerance: the films agree to about 1e-5", default="auto",
+        applies="film_model = ehl")
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -23,10 +23,12 @@ Solver (the choice, measured in docs/ehl.md): semismooth Newton on the coupled s
 [min(P_i, s_i G_i) = 0 ; load balance] in (P, H0) with the exact Jacobian, whose elastic part is
 the dense influence matrix (the residual itself uses the FFT deflection), on grids up to
 ``dense_nodes``; a factorised Jacobian is reused while it keeps halving the residual. Finer grids
-take matrix-free GMRES steps (:mod:`.ehl_krylov`, O(n log n) products) preconditioned by the
-dense system on a grid four times coarser. Steps are damped by backtracking on the residual
-norm. Nested grids (128, 256, ... nodes) give each level the previous solution as its guess; the
-first starts from the Hertz pressure with Moes' film; a level too coarse to converge is skipped.
+take matrix-free GMRES steps (:mod:`.ehl_krylov`, O(n log n) products) preconditioned by a
+multilevel W-cycle (coarse grids four times coarser each, a band solve on each, the dense LU
+only on a coarsest grid of at most 256 nodes), so that the cost grows as n log n. Steps are
+damped by backtracking on the residual norm. Nested grids (128, 256, ... nodes) give each level
+the previous solution as its guess; the first starts from the Hertz pressure with Moes' film; a
+level too coarse to converge is skipped.
 """
 from __future__ import annotations
 
@@ -40,7 +42,7 @@ from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressu
 from camtrain.numerics.blas_threads import one_blas_thread
 
 from .ehl_elastic import ElasticKernel
-from .ehl_krylov import krylov_step
+from .ehl_krylov import coarse_grids, krylov_step
 from .ehl_newton import DiscreteEHL
 from .ehl_oil import Oil, ScaledOil
 
@@ -93,8 +95,8 @@ class EHLResolution:
     (None: automatic, -4.5 / 1.5 b or wider where the rigid film sqrt(2 R h) exceeds b);
     tolerance: on max |residual| of the scaled system and the relative change of H0;
     scheme: wedge-term differences; cavitation: exit condition; dense_nodes: largest grid
-    solved with the dense Jacobian (finer grids: matrix-free GMRES steps preconditioned on a
-    grid four times coarser, with the dense Jacobian as fallback)."""
+    solved with the dense Jacobian (finer grids: matrix-free GMRES steps with the multilevel
+    preconditioner of :mod:`.ehl_krylov`, with the dense Jacobian as fallback)."""
 
     nodes: int = 1024
     inlet: float | None = None
@@ -103,7 +105,7 @@ class EHLResolution:
     max_iterations: int = 60
     scheme: str = "upwind2"
     cavitation: str = "reynolds"
-    dense_nodes: int = 1024
+    dense_nodes: int = 256
 
     def __post_init__(self):
         if self.nodes < 16:
@@ -200,13 +202,13 @@ def _newton(problem: DiscreteEHL, P: np.ndarray, H0: float, tolerance: float,
     return P, H0, max_iterations, norm, False
 
 
-def _newton_krylov(problem: DiscreteEHL, coarse: DiscreteEHL, P: np.ndarray, H0: float,
-                   resolution: EHLResolution):
+def _newton_krylov(problem: DiscreteEHL, coarser: list[DiscreteEHL], P: np.ndarray,
+                   H0: float, resolution: EHLResolution):
     """Damped semismooth Newton with matrix-free GMRES steps (:mod:`.ehl_krylov`)."""
     F, _ = problem.system(P, H0, jacobian=False)
     norm = np.abs(F).max()
     for it in range(1, resolution.max_iterations + 1):
-        F, step, _ = krylov_step(problem, coarse, P, H0)
+        F, step, _ = krylov_step(problem, coarser, P, H0)
         P_new, H0_new, F_new, norm_new, t = _damped(problem, P, H0, step, norm, True)
         moved = abs(t * step[-1]) / max(abs(H0_new), 1e-300)
         P, H0, norm = P_new, H0_new, norm_new
@@ -249,8 +251,8 @@ def solve_ehl_line(contact: LineContact,
             P[[0, -1]] = 0.0
         problem = fresh
         if nodes > resolution.dense_nodes:
-            coarse, _ = _discrete(contact, replace(resolution, nodes=(nodes + 3) // 4))
-            P, H0, its, res, ok = _newton_krylov(problem, coarse, P, H0, resolution)
+            P, H0, its, res, ok = _newton_krylov(problem, coarse_grids(problem), P, H0,
+                                                 resolution)
             if not ok:      # the dense Jacobian is the robust fallback
                 P, H0, more, res, ok = _newton(problem, P, H0, resolution.tolerance,
                                                resolution.max_iterations)

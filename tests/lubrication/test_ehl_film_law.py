@@ -80,3 +80,35 @@ def test_the_film_model_the_plan_records():
     deck = api.load_deck_text(text, "gocmen_ehl.toml").model
     assert film.model(deck, frozenset({"ContactLoad"})) == "ehl"
     assert film.model(deck, frozenset()) == "steady"
+
+
+class _Captured(Exception):
+    """Raised by the stand-in march once it has the resolution the run built."""
+
+
+@pytest.mark.parametrize("solver", ["dense", "krylov", "auto"])
+def test_the_deck_linear_solver_reaches_the_march(solver, monkeypatch):
+    """solver.ehl_linear_solver is the march's CycleResolution.linear_solver (the march
+    itself stood in: the solvers' equal films are tests/lubrication/test_ehl_transient.py's)."""
+    from camtrain.lubrication import ehl_transient
+
+    seen = {}
+
+    def stand_in(contact, resolution=None, *args, **kwargs):
+        seen["resolution"] = resolution
+        raise _Captured
+    monkeypatch.setattr(ehl_transient, "march_ehl_cycle", stand_in)
+    text = (GOCMEN.replace('film_model = "averaged_reynolds"', 'film_model = "ehl"') + COARSE
+            + f'ehl_linear_solver = "{solver}"\n')
+    with pytest.raises(_Captured):
+        api.run(api.load_deck_text(text, "gocmen_ehl.toml"))
+    res = seen["resolution"]
+    assert res.linear_solver == solver and res.nodes == 128
+    assert res.krylov == (solver == "krylov")       # auto: dense at 128 points
+
+
+def test_a_bad_linear_solver_names_the_field():
+    text = (GOCMEN.replace('film_model = "averaged_reynolds"', 'film_model = "ehl"') + COARSE
+            + 'ehl_linear_solver = "cholesky"\n')
+    with pytest.raises(InputError, match="ehl_linear_solver"):
+        api.load_deck_text(text, "gocmen_ehl.toml")

@@ -153,6 +153,48 @@ def test_matrix_free_march_gives_the_dense_march(cavitation):
     assert (np.nanmax(free.mass_error) < 1e-5) == (np.nanmax(dense.mass_error) < 1e-5)
 
 
+def test_coarse_kernel_keeps_the_fine_kernels_constant():
+    """The deflection is defined up to a constant (H0 absorbs it); the march's kernel, scaled
+    from unit spacing, carries -ln dx of it. The preconditioner's coarse kernel keeps the
+    fine one's, so the Hertz pressure deflects both grids alike (to the discretisation, 1e-3
+    here); a coarse kernel scaled from unit spacing in turn would differ by (ln 4)/2 = 0.69."""
+    from camtrain.lubrication.ehl_elastic import ElasticKernel
+    from camtrain.lubrication.ehl_step_krylov import _coarse_kernel, _per_length_constant
+
+    X = np.linspace(-4.5, 4.5, 1024)
+    Xc = np.linspace(-4.5, 4.5, 256)
+    dx, dxc = X[1] - X[0], Xc[1] - Xc[0]
+    unit = ElasticKernel.of_grid(X.size, 1.0)
+    fine = ElasticKernel(X.size, dx, dx * unit.row, dx * unit.spectrum, unit.length)
+    coarse, _ = _coarse_kernel(fine, Xc.size, dxc)
+    assert _per_length_constant(coarse) == pytest.approx(-np.log(dx), rel=1e-12)
+    hertz = np.sqrt(np.maximum(1.0 - X**2, 0.0))
+    hertz_c = np.sqrt(np.maximum(1.0 - Xc**2, 0.0))
+    hertz *= 0.5 * np.pi / (dx * hertz.sum())          # the same load on both grids, as the
+    hertz_c *= 0.5 * np.pi / (dxc * hertz_c.sum())     # load balance of each holds it
+    V_fine = np.interp(Xc, X, fine.deflection(hertz))
+    assert np.abs(coarse.deflection(hertz_c) - V_fine).max() < 1e-3 * np.abs(V_fine).max()
+    unit_c = ElasticKernel.of_grid(Xc.size, 1.0)
+    scaled = ElasticKernel(Xc.size, dxc, dxc * unit_c.row, dxc * unit_c.spectrum, unit_c.length)
+    assert np.median(scaled.deflection(hertz_c) - V_fine) == pytest.approx(0.5 * np.log(4),
+                                                                          rel=0.01)
+
+
+def test_multilevel_preconditioner_march_gives_the_dense_march(monkeypatch):
+    """The coarse correction recursing: with the coarsest dense grid forced down to 32 nodes,
+    the 256-point reversal's directions go through grids of 64 (band-smoothed, itself
+    preconditioned) and 16 nodes (dense); the films are the dense march's to the same 5e-5."""
+    from camtrain.lubrication import ehl_step_krylov
+
+    _, dense = reversal("elrod_adams", solver="dense")
+    monkeypatch.setattr(ehl_step_krylov, "COARSEST", 32)
+    _, free = reversal("elrod_adams", solver="krylov")
+    assert free.krylov_iterations > 0
+    for name in ("h_central", "h_min", "p_max"):
+        a, b = getattr(free, name), getattr(dense, name)
+        assert np.abs(a / b - 1.0).max() < 5e-5, name
+
+
 def test_reynolds_cavitation_does_not_conserve_mass():
     """The same reversal with the Reynolds exit condition loses mass at its rupture: the
     balance that closes with Elrod-Adams does not close here (the test above can fail)."""
