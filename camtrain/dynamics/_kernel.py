@@ -154,8 +154,7 @@ def _accel(tr, uni, cl, inp, act, u, v, n, tau, a, p):
             bj, bdj = _input(b, bd, j, n, tau, dt)
             a[node[j]] += _spring(j, bj - u[node[j]] + uni.off[j], uni.k, cl.law, cl.hz, r1,
                                   ratio) + uni.c[j] * (bdj - v[node[j]])
-    if tr.hla.on:
-        add_chamber_force(tr.hla, u, p, a)
+    add_chamber_force(tr.hla, u, p, a)
     for i in range(size):
         a[i] /= m[i]
 
@@ -297,8 +296,7 @@ def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
         out.ev_kind[nev] = 2 * first + (1 if closing else 0)
         out.ev_rate[nev] = rate
     _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a, st.hp[0])
-    if tr.hla.on:
-        sealed_restart(tr.hla, st.hp, st.a, tr.m)
+    sealed_restart(tr.hla, st.hp, st.a, tr.m)
     return nev + 1
 
 

@@ -28,7 +28,7 @@ FOOTPRINTS: dict[str, tuple[str, frozenset[str], dict[str, str]]] = {
             "camtrain.dynamics.records": "record fields: Train.hla, TrainState.hp, Marched.h",
             "camtrain.dynamics.train": "TrainModel.series (the generic series element) and "
                                        "its three read-only accessors for the coupled adapter",
-            "camtrain.dynamics._kernel": "one guarded call per hook point (hla/in_train.py)",
+            "camtrain.dynamics._kernel": "one call per hook point (hla/in_train.py)",
             "camtrain.dynamics.integrators": "the record's construction (march_record), its "
                                              "warm start (chamber_from), the sampled rows",
             "camtrain.assemble.dynamics": "the element from the deck (with_lash_adjuster)",

@@ -1,5 +1,8 @@
 """The adjuster in the single train's Newmark march (:mod:`camtrain.dynamics._kernel`): the
-four hook points the march calls, each once and guarded by ``Train.hla.on``.
+four hook points the march calls, each once and guarded by ``Train.hla.on`` (the two of a
+contact change, :func:`add_chamber_force` and :func:`sealed_restart`, guard themselves and
+return at once without an adjuster: so the march's code without one ran as fast as before the
+hooks moved here; with the guard in the march it measured 2-6 % slower, in-process A/B).
 
 * :func:`add_chamber_force`: the chamber's force at a known pressure in the train's
   equilibrium (the acceleration a contact change restarts from);
@@ -24,7 +27,10 @@ from camtrain.dynamics.hla.sealed import restart_force
 @njit(cache=True)
 def add_chamber_force(hla, u, p, a):
     """Add the adjuster's force at chamber pressure p to the node forces ``a`` (valve-referred:
-    the plunger force times its motion ratio, body and plunger pushed apart)."""
+    the plunger force times its motion ratio, body and plunger pushed apart); nothing without
+    an adjuster."""
+    if hla.on == 0:
+        return
     f = hla.ratio * plunger_force(p, extension(u[hla.f], u[hla.q], hla), hla)
     a[hla.f] -= f
     a[hla.q] += f
@@ -62,7 +68,10 @@ def chamber_in_step(hla, hp, u, Ainv, A, h, pu, pv, a1, z, hp_end):
 def sealed_restart(hla, hp, a, m):
     """At a contact change, a sealed incompressible chamber's pressure is the constraint's
     (:func:`.sealed.restart_force`): the accelerations ``a`` restarted from the equilibrium
-    (lumped masses ``m``) take its force's change; any other chamber is left as it is."""
+    (lumped masses ``m``) take its force's change; any other chamber (or none) is left as it
+    is."""
+    if hla.on == 0:
+        return
     f, q, r = hla.f, hla.q, hla.ratio
     force = restart_force(hla, hp, -r * (a[f] - a[q]), r * r * (1.0 / m[f] + 1.0 / m[q]))
     a[f] -= r * force / m[f]
