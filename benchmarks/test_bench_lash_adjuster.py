@@ -33,7 +33,7 @@ from camtrain.assemble.lift_law import build_lift_law
 from camtrain.assemble.mechanism import kinematics
 from camtrain.deck.load import validate
 from camtrain.dynamics import auto_steps, march
-from camtrain.dynamics.hla import rigid_adjuster
+from camtrain.dynamics.hla import rigid_adjuster, with_element
 from camtrain.lift import angle_grid
 
 
@@ -64,7 +64,7 @@ def test_bench_lash_adjuster_ball_check_valve(benchmark):
     deck = api.load(str(ROOT / "decks" / "zeta_intake_hla.toml")).model
     curve = build_lift_law(deck.lift).evaluate(angle_grid(deck.solver.angle_points))
     s = setup(deck, kinematics(deck, curve)[0])
-    ball = replace(s.model, hla=replace(s.model.hla, check_valve="ball"))
+    ball = with_element(s.model, replace(s.model.hla, check_valve="ball"))
     run = replace(s.settings, cycles_min=6, cycles_max=6)   # the same work: six revolutions
     march(ball, s.cam, s.base, run)                         # compile / load the kernel
     timing = paired(lambda: march(ball, s.cam, s.base, run),

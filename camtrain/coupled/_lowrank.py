@@ -3,22 +3,14 @@ cam contact's gradient lies in its lobe's five coordinates (x, y, phi, follower,
 closed contacts enter the factorised linear part as a small dense system on 5 L numbers.
 
 A hydraulic lash adjuster on every train (``lay.ipl``, the plungers' coordinates) adds a sixth
-coordinate per lobe: its chamber force acts along (plunger - follower), so it too is a force
-on the lobe's coordinates. The chamber is solved with the single train's
-:func:`camtrain.dynamics.hla.chamber_step` against the contact-corrected compliance of its
-extension; the lobes are coupled only through the shaft (the other lobes' chamber forces move
-a lobe's extension through its closed contact), so the chambers are swept lobe by lobe until
-their forces agree (Gauss-Seidel on the lobes' scalar equations)."""
+coordinate per lobe, on which its chamber force acts: the update calls
+:func:`camtrain.coupled.adjuster_step.solve_chambers` once, before the contacts' solve."""
 from __future__ import annotations
 
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_step, extension, plunger_force
-
-#: adjuster sweeps of a step at most, and their relative agreement of the chamber forces
-HLA_SWEEPS = 50
-HLA_TOL = 1e-12
+from camtrain.coupled.adjuster_step import solve_chambers
 
 
 @njit(cache=True)
@@ -102,108 +94,6 @@ def _small(G, coef, lobe_of, kk, m, w):
 
 
 @njit(cache=True)
-def _contact_forces(c, coef, lobe_of, Sinv, m, w):
-    """The closed contacts' forces y = Sinv C c at the coordinates' values ``c``."""
-    y = np.zeros(m)
-    if m > 0:
-        hc = np.zeros(m)
-        for r in range(m):
-            for e in range(w):
-                hc[r] += coef[r, e] * c[w * lobe_of[r] + e]
-        y = np.ascontiguousarray(Sinv) @ hc   # a slice of the workspace: BLAS wants it whole
-    return y
-
-
-@njit(cache=True)
-def _corrected(xc, G, z, coef, lobe_of, Sinv, m, w):
-    """The coordinates' values x_c + G z less the closed contacts' correction, and y (the
-    contacts' forces) with it: c = (xc + G z) - G C^T y, y = Sinv C (xc + G z)."""
-    nc = xc.size
-    c = xc.copy()
-    for r in range(nc):
-        for b in range(nc):
-            c[r] += G[r, b] * z[b]
-    y = _contact_forces(c, coef, lobe_of, Sinv, m, w)
-    if m > 0:
-        for r in range(nc):
-            c[r] = _less_contacts(c, r, G, coef, lobe_of, y, m, w)
-    return c, y
-
-
-@njit(cache=True)
-def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
-    """E[k, j]: lobe k's extension per unit plunger force of lobe j with the closed contacts'
-    correction (:func:`_corrected` of the force pair R on (plunger, follower) alone, worked
-    out only where E reads it: the force touches two columns of G, the extensions two rows
-    per lobe; the same sums in the same order)."""
-    nc, w = G.shape[0], 6
-    E = np.empty((lobes, lobes))
-    c = np.empty(nc)
-    for j in range(lobes):
-        for r in range(nc):
-            c[r] = G[r, w * j + 3] * -R + G[r, w * j + 5] * R
-        y = _contact_forces(c, coef, lobe_of, Sinv, m, w)
-        for k in range(lobes):
-            plunger = _less_contacts(c, w * k + 5, G, coef, lobe_of, y, m, w)
-            follower = _less_contacts(c, w * k + 3, G, coef, lobe_of, y, m, w)
-            E[k, j] = R * (plunger - follower)
-    return E
-
-
-@njit(cache=True)
-def _less_contacts(c, r, G, coef, lobe_of, y, m, w):
-    """c[r] less the closed contacts' correction (G C^T y)[r]."""
-    total = 0.0
-    for s in range(m):
-        for f in range(w):
-            if coef[s, f] != 0.0:
-                total += G[r, w * lobe_of[s] + f] * coef[s, f] * y[s]
-    return c[r] - total
-
-
-@njit(cache=True)
-def _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
-    """Every lobe's chamber force solved against its contact-corrected extension (the
-    module's docstring); the forces R F on (plunger, follower) added to ``z``, every chamber's
-    end state into ``hp_end``."""
-    lobes, w, R = lay.ix.size, 6, hla.ratio
-    h = 2.0 / a1
-    Sinv = np.linalg.inv(small) if m > 0 else small
-    base, _y = _corrected(xc, G, z, coef, lobe_of, Sinv, m, w)
-    E = _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R)
-    q, v = st.q, st.v
-    X, Xd, x0 = np.empty(lobes), np.empty(lobes), np.empty(lobes)
-    for k in range(lobes):
-        f, p = lay.ifol[k], lay.ipl[k]
-        X[k] = extension(base[w * k + 3], base[w * k + 5], hla)
-        vf, vp = a1 * (base[w * k + 3] - q[f]) - v[f], a1 * (base[w * k + 5] - q[p]) - v[p]
-        Xd[k] = -R * (vf - vp)
-        x0[k] = extension(q[f], q[p], hla)
-    F = np.empty(lobes)     # the sweeps start from every chamber's force predicted at the
-    for k in range(lobes):  # step's end (its last pressure rate carried over the step), not 0
-        F[k] = plunger_force(st.hp[k, 0] + st.hp[k, 3] * h, x0[k], hla)
-    for _ in range(HLA_SWEEPS):
-        change, top = 0.0, 0.0
-        for j in range(lobes):
-            xj, xdj = X[j], Xd[j]
-            for k in range(lobes):
-                if k != j:
-                    xj += E[j, k] * F[k]
-                    xdj += a1 * E[j, k] * F[k]
-            p1, fj, qin, qout = chamber_step(hla, st.hp[j], x0[j], xj, xdj, E[j, j], h)
-            change = max(change, abs(fj - F[j]))
-            top = max(top, abs(fj))
-            F[j] = fj
-            hp_end[j, 0], hp_end[j, 1], hp_end[j, 2] = p1, qin, qout
-            hp_end[j, 3] = (p1 - st.hp[j, 0]) / h
-        if change <= HLA_TOL * max(top, 1.0) or lobes == 1:
-            break
-    for j in range(lobes):
-        z[w * j + 5] += R * F[j]
-        z[w * j + 3] -= R * F[j]
-
-
-@njit(cache=True)
 def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x, hla):
     """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
     ``basis`` = A^-1 E the columns of A^-1 at every lobe's W contact coordinates (x, y, phi,
@@ -211,8 +101,8 @@ def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x, hla):
     ``z`` forces on those coordinates (friction; overwritten), the contact states and (q, v)
     of the state ``st``, every lobe's inputs at the step's end ``at``, a1 = 2 / step. Every
     contact gradient h lies in its lobe's coordinates, so the update works on W L numbers and
-    touches the full state once. An adjuster (``hla.on``): :func:`_adjusters`, its chambers'
-    end states into ``st.hp_end``."""
+    touches the full state once. An adjuster (``hla.on``): its chambers' forces into ``z``,
+    their end states into ``st.hp_end`` (:func:`camtrain.coupled.adjuster_step.solve_chambers`)."""
     n, lobes, w = x0.size, lay.ix.size, width(lay)
     coef, lobe_of, kk, m = _contact_rows(z, lay, uni, st, at, a1)
     small = _small(G, coef, lobe_of, kk, m, w) if m > 0 else np.zeros((0, 0))
@@ -222,7 +112,7 @@ def woodbury(x0, basis, G, z, lay, uni, st, at, a1, x, hla):
         for e in range(w):
             xc[w * j + e] = x0[dofs[e]]
     if hla.on:
-        _adjusters(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, st.hp_end)
+        solve_chambers(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, st.hp_end)
     if m > 0:
         rhs = np.zeros(m)
         for r in range(m):

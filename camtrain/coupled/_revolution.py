@@ -16,7 +16,7 @@ from numba import njit
 from camtrain.coupled._film_kernel import film_step, table_coefficient
 from camtrain.coupled._partition import predict_loads
 from camtrain.coupled._step import advance, cam_gap
-from camtrain.dynamics.hla.chamber import extension
+from camtrain.coupled.adjuster_step import sample_chambers
 from camtrain.numerics.compile_notice import announce
 
 
@@ -197,10 +197,8 @@ def revolution(sys, lob, fric, scheme, st, out, work, at, pre):
                 out.acc[j, g] = st.acc[sys.lay.valve[j]]
                 if fric.film:
                     out.film[j, g] = st.film[j]
-                if sys.hla.on:
-                    f, p = sys.lay.ifol[j], sys.lay.ipl[j]
-                    out.hla[j, 0, g] = st.hp[j, 0]
-                    out.hla[j, 1, g] = extension(st.q[f], st.q[p], sys.hla)
+            if sys.hla.on:
+                sample_chambers(sys.hla, st.hp, st.q, sys.lay.ifol, sys.lay.ipl, out.hla, g)
     return switches_total, cut, missed
 
 

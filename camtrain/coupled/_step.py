@@ -19,9 +19,8 @@ from numba import njit
 
 from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
+from camtrain.coupled.adjuster_step import add_chamber_forces, restart_sealed
 from camtrain.coupled.records import LobeAt
-from camtrain.dynamics.hla.chamber import extension, plunger_force
-from camtrain.dynamics.hla.sealed import consistent_restart
 from camtrain.numerics.roots import false_position, illinois_update
 
 #: contact changes located inside one step at most (more: the rest of the step is accepted)
@@ -150,7 +149,7 @@ def _substep(tau, sys, st, fric, at, x, stagger):
 def _equilibrium(sys, st, fric, at, stagger):
     """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
     block-diagonal inverse of M); a sealed incompressible adjuster's chamber restarted
-    consistently with it (:func:`camtrain.dynamics.hla.sealed.consistent_restart`)."""
+    consistently with it (:mod:`camtrain.coupled.adjuster_step`)."""
     lay, mats, uni = sys.lay, sys.mats, sys.uni
     K, C, Minv, blocks = mats.K, mats.C, mats.Minv, lay.blocks
     q, v, acc = st.q, st.v, st.acc
@@ -172,12 +171,8 @@ def _equilibrium(sys, st, fric, at, stagger):
                 r[lay.iphi[j]] -= w * at.gphi[j]
         if st.act_s[j]:
             r[lay.ival[j]] += ks * (offs - q[lay.ival[j]]) - cs * v[lay.ival[j]]
-        if sys.hla.on:     # the adjuster's chamber at its pressure: body and plunger apart
-            f, p = lay.ifol[j], lay.ipl[j]
-            force = sys.hla.ratio * plunger_force(st.hp[j, 0], extension(q[f], q[p], sys.hla),
-                                                  sys.hla)
-            r[f] -= force
-            r[p] += force
+    if sys.hla.on:     # the adjusters' chambers at their pressures: body and plunger apart
+        add_chamber_forces(sys.hla, st.hp, q, lay.ifol, lay.ipl, r)
     for k in range(blocks.size - 1):
         lo, hi = blocks[k], blocks[k + 1]
         for i in range(lo, hi):
@@ -191,8 +186,7 @@ def _equilibrium(sys, st, fric, at, stagger):
                 s += Minv[i, e] * rb[e]
             acc[i] = s
     if sys.hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
-        for j in range(lay.ix.size):
-            consistent_restart(sys.hla, st.hp[j], acc, Minv, lay.ifol[j], lay.ipl[j])
+        restart_sealed(sys.hla, st.hp, acc, Minv, lay.ifol, lay.ipl)
 
 
 @njit(cache=True)

@@ -33,9 +33,13 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from camtrain.dynamics.hla.chamber import chamber_advance, chamber_step, extension, plunger_force
-from camtrain.dynamics.hla.sealed import restart_force
-from camtrain.dynamics.spin.step import spin_step
+from camtrain.dynamics.hla.in_train import (
+    add_chamber_force,
+    chamber_in_step,
+    sample_chamber,
+    sealed_restart,
+)
+from camtrain.dynamics.spin.in_train import sample_spin, spin_step
 from camtrain.numerics.compile_notice import announce
 from camtrain.numerics.roots import false_position, illinois_update
 
@@ -133,17 +137,6 @@ def _psi(u, v, j, node, k, c, off, bj, bdj, law, hz, r1, ratio):
 
 
 @njit(cache=True)
-def _adjuster_force(hla, u, p, a):
-    """Add a hydraulic lash adjuster's force at chamber pressure p to the node forces ``a``
-    (valve-referred: the plunger force times its motion ratio, body and plunger pushed apart)."""
-    if hla.on == 0:
-        return
-    f = hla.ratio * plunger_force(p, extension(u[hla.f], u[hla.q], hla), hla)
-    a[hla.f] -= f
-    a[hla.q] += f
-
-
-@njit(cache=True)
 def _accel(tr, uni, cl, inp, act, u, v, n, tau, a, p):
     """a = M^-1 (f0 + contact forces - C v - K u) for the given contact state (an adjuster's
     chamber at pressure p)."""
@@ -161,7 +154,7 @@ def _accel(tr, uni, cl, inp, act, u, v, n, tau, a, p):
             bj, bdj = _input(b, bd, j, n, tau, dt)
             a[node[j]] += _spring(j, bj - u[node[j]] + uni.off[j], uni.k, cl.law, cl.hz, r1,
                                   ratio) + uni.c[j] * (bdj - v[node[j]])
-    _adjuster_force(tr.hla, u, p, a)
+    add_chamber_force(tr.hla, u, p, a)
     for i in range(size):
         a[i] /= m[i]
 
@@ -186,39 +179,13 @@ def _matrix(tr, uni, act, h, law):
 
 
 @njit(cache=True)
-def _hydraulic(tr, hp, u, Ainv, A, h, out, work):
-    """A hydraulic lash adjuster's force in the Newmark step: a1 += F z (z = A^-1 (e_q - e_f)),
-    the chamber's pressure and F solved together (hla.chamber_step) with the plunger's end
-    extension x1 = X + sigma F; the chamber's end state (hla.chamber_advance) into
-    ``out[3]``."""
-    hla, pu, pv, a1, z = tr.hla, work.pu, work.pv, out[2], work.zh
-    f, q = hla.f, hla.q
-    if Ainv.shape[0] > 0:
-        for i in range(z.size):
-            z[i] = Ainv[i, q] - Ainv[i, f]
-    else:
-        z[:] = 0.0
-        z[q], z[f] = 1.0, -1.0
-        z[:] = np.linalg.solve(A, z.copy())
-    s = z[q] - z[f]
-    w_end = pu[f] - pu[q] + 0.25 * h * h * (a1[f] - a1[q])
-    wd_end = pv[f] - pv[q] + 0.5 * h * (a1[f] - a1[q])
-    big_x = hla.x_rest - hla.ratio * (w_end - hla.w0)
-    sigma = hla.ratio * hla.ratio * 0.25 * h * h * s
-    p1, force, qin, qout = chamber_step(hla, hp, extension(u[f], u[q], hla), big_x,
-                                        -hla.ratio * wd_end, sigma, h)
-    for i in range(z.size):
-        a1[i] += hla.ratio * force * z[i]
-    chamber_advance(hla, hp, p1, qin, qout, h, out[3])
-
-
-@njit(cache=True)
 def _trial(tr, uni, cl, inp, act, u, v, a, hp, n, tau, h, Ainv, out, work):
     """One Newmark step of length h from time tau of step n, contact state fixed: the end
     state into ``out`` (u1, v1, a1, adjuster's chamber), ``work`` (pu, pv, rhs, z, zh) its work
     arrays. A Hertz cam contact: a1 = A^-1 (rhs + e_i F) with the scalar F solving
     F = F_hertz(delta(a1)), delta = D - h^2/4 z_i F (z = A^-1 e_i); a hydraulic lash adjuster
-    (``hp`` its chamber at the start): :func:`_hydraulic`. The deck allows not both."""
+    (``hp`` its chamber at the start): :func:`camtrain.dynamics.hla.in_train.chamber_in_step`.
+    The deck allows not both."""
     u1, v1, a1 = out[0], out[1], out[2]
     pu, pv, rhs, z = work.pu, work.pv, work.rhs, work.z
     m, K, C, f0, node = tr.m, tr.K, tr.C, tr.f0, tr.node
@@ -270,7 +237,7 @@ def _trial(tr, uni, cl, inp, act, u, v, a, hp, n, tau, h, Ainv, out, work):
         for q in range(size):
             a1[q] += f * z[q]
     if tr.hla.on:
-        _hydraulic(tr, hp, u, Ainv, A, h, out, work)
+        chamber_in_step(tr.hla, hp, u, Ainv, A, h, pu, pv, a1, work.zh, out[3])
     for i in range(size):
         u1[i] = pu[i] + 0.25 * h * h * a1[i]
         v1[i] = pv[i] + 0.5 * h * a1[i]
@@ -329,13 +296,7 @@ def _switch(tr, uni, cl, inp, st, out, nev, first, n, tau):
         out.ev_kind[nev] = 2 * first + (1 if closing else 0)
         out.ev_rate[nev] = rate
     _accel(tr, uni, cl, inp, st.act, st.u, st.v, n, tau, st.a, st.hp[0])
-    hla = tr.hla
-    if hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
-        f, q, r = hla.f, hla.q, hla.ratio
-        force = restart_force(hla, st.hp, -r * (st.a[f] - st.a[q]),
-                              r * r * (1.0 / tr.m[f] + 1.0 / tr.m[q]))
-        st.a[f] -= r * force / tr.m[f]
-        st.a[q] += r * force / tr.m[q]
+    sealed_restart(tr.hla, st.hp, st.a, tr.m)
     return nev + 1
 
 
@@ -354,14 +315,10 @@ def _sample(tr, uni, cl, inp, st, out, n):
                                   cl.hz, r1, ratio) + uni.c[j] * (bd[j, n + 1] - st.v[node[j]])
         else:
             out.f[j, r] = 0.0
-    out.h[0, r], out.h[1, r], out.h[2, r] = st.hp[0], st.hp[1], st.hp[2]
-    out.h[3, r] = extension(st.u[tr.hla.f], st.u[tr.hla.q], tr.hla) if tr.hla.on else 0.0
-    if out.h.shape[0] > 6 and st.hp.size > 7:
-        # the volumes over the sample's interval (the accumulators restart), the ball's lift
-        out.h[4, r], out.h[5, r], out.h[6, r] = st.hp[4], st.hp[5], st.hp[6]
-        st.hp[4] = 0.0
-        st.hp[5] = 0.0
-    out.r[0, r], out.r[1, r], out.r[2, r] = st.wr[0], st.wr[1], st.wr[2]
+    if tr.hla.on:
+        sample_chamber(tr.hla, st.hp, st.u, out.h, r)
+    if tr.roller.on:
+        sample_spin(st.wr, out.r, r)
 
 
 @njit(cache=True)

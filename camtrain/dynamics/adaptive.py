@@ -20,9 +20,9 @@ class Adaptive:
         self.model, self.cam, self.base, self.theta0 = model, cam, base, theta0
         self.sample_dt, self.grid, self.s = sample_dt, grid, settings
         n = model.size
-        if model.hla is not None:
-            raise ValueError("the hydraulic lash adjuster's chamber is marched by the newmark "
-                             "integrator only")
+        if model.series is not None:
+            raise ValueError("a series element's state (the hydraulic lash adjuster's chamber) "
+                             "is marched by the newmark integrator only")
         u0, act = static_state(model)
         self.y = np.concatenate((u0, np.zeros(n)))
         self.act = [bool(a) for a in act]

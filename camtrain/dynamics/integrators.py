@@ -190,10 +190,10 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
             runner.v = np.array(start.v[:, i0], dtype=float)
             runner.a = np.array(start.a[:, i0], dtype=float)
             runner.act = start.contact_force[:, i0] > 0.0
-            if start.hydraulic is not None and model.hla is not None:
-                runner.hp[:] = 0.0   # no rate guess, no volumes yet, the ball at rest
-                runner.hp[:3] = start.hydraulic[:3, i0]
-                runner.hp[6] = start.hydraulic[6, i0]
+            if start.hydraulic is not None and model.series is not None:
+                from camtrain.dynamics.hla import chamber_from
+
+                chamber_from(runner.hp, start.hydraulic, i0)
             if start.roller is not None and model.roller is not None:
                 runner.wr[:] = start.roller[:, i0]
     else:
@@ -210,7 +210,7 @@ def march(model: TrainModel, cam: CamInput, base: TimeBase, settings: Settings,
                 break
         previous = (out[0].copy(), out[8][0].copy() if len(out) > 8 else None)
     u, v, a, f, events, work, cut = out[:7]
-    hydraulic = out[7] if len(out) > 7 and model.hla is not None else None
+    hydraulic = out[7] if len(out) > 7 and model.series is not None else None
     spin = out[8] if len(out) > 8 and model.roller is not None else None
     # sample r is grid index (i0 + r + 1) % grid: roll into grid order
     sample_t = (np.arange(grid) + 1) * dt * sub
@@ -325,8 +325,10 @@ class _FixedStep:
         self.act = act.astype(np.bool_)   # the valve rests on its seat
         self.psi_prev = np.where(act, model.uni_k * 1e-9, 0.0)
         self.thr = np.full(2, CLOSE_THRESHOLD * max(model.spring_preload, 1.0))
-        self.hla, self.hp = _hydraulic_start(model, u0)
-        if model.hla is not None and self.explicit:
+        from camtrain.dynamics.hla import march_record
+
+        self.hla, self.hp = march_record(model, u0)
+        if model.series is not None and self.explicit:
             raise ValueError("the hydraulic lash adjuster's chamber is marched by the newmark "
                              "integrator only")
         from camtrain.dynamics.spin import no_roller
@@ -337,13 +339,12 @@ class _FixedStep:
     def spin_on(self, angles) -> None:
         """The roller's record at the step angles [rad] of a revolution (a model with a roller),
         its speed started at pure rolling at the first of them."""
-        from camtrain.dynamics.spin import spin_record
+        from camtrain.dynamics.spin import spin_record, spin_start
 
         if self.model.roller is None:
             return
         self.spin = spin_record(self.model.roller, angles)
-        pos = int(np.floor(self.spin.pos[0])) % self.spin.v_s0.size
-        self.wr[:] = (self.spin.v_s0[pos] / self.spin.radius, 0.0, 0.0)
+        self.wr[:] = spin_start(self.spin)
 
     def revolution(self):
         from camtrain.dynamics.records import (
@@ -379,18 +380,6 @@ class _FixedStep:
         events = list(zip(out.ev_t[:nev].tolist(), out.ev_kind[:nev].tolist(),
                           out.ev_rate[:nev].tolist(), strict=True))
         return out.u, out.v, out.a, out.f, events, work, cut, out.h, out.r
-
-
-def _hydraulic_start(model: TrainModel, u0):
-    """The march's adjuster record and its chamber at rest: the supply pressure, no flow."""
-    from camtrain.dynamics.hla import chamber_start, hydraulic_record, no_adjuster
-    from camtrain.dynamics.records import HP_SIZE
-
-    if model.hla is None:
-        return no_adjuster(), np.zeros(HP_SIZE)
-    w0 = float(u0[model.follower] - u0[model.plunger])
-    record = hydraulic_record(model.hla, model.follower, model.plunger, model.hla_ratio, w0)
-    return record, chamber_start(record, model.hla.supply_pressure)
 
 
 def bilateral(model: TrainModel, contacts=(CAM, SEAT)) -> TrainModel:

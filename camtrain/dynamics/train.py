@@ -98,26 +98,31 @@ class TrainModel:
     #: With a law, uni_k[CAM] is its largest tangent stiffness over the cycle (for the step, the
     #: stability guard and the printed elements).
     cam_law: object = None
-    #: a hydraulic lash adjuster (:class:`camtrain.dynamics.hla.LashAdjuster`) between the
-    #: follower node (its body) and node ``plunger``, the plunger moving ``hla_ratio`` times the
-    #: valve-referred motion; None: the constant-load adjuster or none
-    hla: object = None
-    plunger: int = -1
-    hla_ratio: float = 1.0
+    #: a series element with a state of its own marched with the train, between the follower
+    #: node and a node of its own (the hydraulic lash adjuster,
+    #: :class:`camtrain.dynamics.hla.placement.SeriesAdjuster`), or None. The train asks it
+    #: for ``node`` (its own node), ``stiffness()`` [N/m] (valve-referred, at rest: a spring
+    #: of the closed matrices) and ``rest_force()`` [N] (valve-referred, pushing the follower
+    #: and its node apart at rest beyond the train's springs and preloads)
+    series: object = None
     #: a roller turning on its pin, its spin marched with the train
     #: (:class:`camtrain.dynamics.spin.RollerTables`); None: no roller, or one solved after
     #: the march by the roller effect
     roller: object = None
 
-    def hla_rest_force(self) -> float:
-        """The adjuster chamber's valve-referred force on the base circle [N] (0 without)."""
-        if self.hla is None:
-            return 0.0
-        return self.hla_ratio * self.hla.supply_pressure * self.hla.area
+    # Read by the coupled march's adjuster adapter (camtrain.coupled.adjusters, march): the
+    # series element's parts under their former field names.
+    @property
+    def hla(self):
+        return None if self.series is None else self.series.adjuster
 
-    def hla_stiffness(self) -> float:
-        """The closed chamber's valve-referred stiffness at rest [N/m] (0 without)."""
-        return 0.0 if self.hla is None else self.hla_ratio ** 2 * self.hla.stiffness()
+    @property
+    def plunger(self) -> int:
+        return -1 if self.series is None else self.series.node
+
+    @property
+    def hla_ratio(self) -> float:
+        return 1.0 if self.series is None else self.series.ratio
 
     @property
     def size(self) -> int:
@@ -130,8 +135,9 @@ class TrainModel:
             i = self.uni_node[j]
             k[i, i] += self.uni_k[j]
             c[i, i] += self.uni_c[j]
-        if self.hla is not None:   # the closed chamber as its spring
-            _add_link(k, np.zeros_like(c), self.follower, self.plunger, self.hla_stiffness(), 0.0)
+        if self.series is not None:   # a series element as its spring at rest
+            _add_link(k, np.zeros_like(c), self.follower, self.series.node,
+                      self.series.stiffness(), 0.0)
         return k, c
 
     def omega_max(self) -> float:
@@ -368,9 +374,9 @@ def static_state(model: TrainModel) -> tuple[np.ndarray, np.ndarray]:
         act[CAM] = cam_closed
         k = model.stiffness.copy()
         rhs = model.preload.copy()
-        if model.hla is not None:   # the chamber at the supply pressure pushes them apart
-            rhs[model.follower] -= model.hla_rest_force()
-            rhs[model.plunger] += model.hla_rest_force()
+        if model.series is not None:   # a series element's force at rest pushes them apart
+            rhs[model.follower] -= model.series.rest_force()
+            rhs[model.series.node] += model.series.rest_force()
         uni_k = model.uni_k.copy()
         off = model.uni_offset[CAM]
         if model.cam_law is not None and off > 0.0:

@@ -216,7 +216,7 @@ def run(deck, inputs, res):
         res.warn(f"dynamics: no periodic state after {resp.cycles} revolutions (last change "
                  f"{resp.change:.3g} > period_tol {settings.period_tol:g}); results are the "
                  "last revolution")
-    if model.hla is not None:
+    if model.series is not None:
         _lash_adjuster(deck, run_setup, resp, res)
     spin = RollerSpin()
     if resp.roller is not None:

@@ -148,7 +148,7 @@ def test_closed_chamber_is_a_spring_of_K_A2_over_V_in_series(zeta):
                   radial_clearance=0.0, cracking_pressure=1e9, spring_rate=0.0)
     model = with_lash_adjuster(zeta.model, adj)
     k_h = chamber_stiffness(adj.bulk_modulus, adj.area, adj.rest_volume)
-    assert model.hla_stiffness() == pytest.approx(k_h, rel=1e-12)
+    assert model.series.stiffness() == pytest.approx(k_h, rel=1e-12)
     linear = _as_linear_spring(model, k_h)
     hla = _march(zeta, model, cycles_min=3, cycles_max=3)
     spring = _march(zeta, linear, cycles_min=3, cycles_max=3)
@@ -173,9 +173,9 @@ def _as_linear_spring(model, k_h):
     k[f, q] -= r
     k[q, f] -= r
     preload = model.preload.copy()
-    preload[f] -= model.hla_rest_force()
-    preload[q] += model.hla_rest_force()
-    return _spring_at_rest(replace(model, stiffness=k, preload=preload, hla=None), r)
+    preload[f] -= model.series.rest_force()
+    preload[q] += model.series.rest_force()
+    return _spring_at_rest(replace(model, stiffness=k, preload=preload, series=None), r, q)
 
 
 def test_rigid_adjuster_undoes_the_placement(zeta):

@@ -15,6 +15,7 @@ from camtrain.dynamics.hla import (
     ball_end,
     hydraulic_record,
     quasi_static_equivalent,
+    with_element,
 )
 from tests.conftest import DECKS
 from tests.dynamics.test_hla import ADJUSTER
@@ -37,7 +38,7 @@ def _march(s, adjuster, refine=1, cycles=4):
 
     run = replace(s.settings, substeps=s.settings.substeps * refine, cycles_min=cycles,
                   cycles_max=cycles)
-    return march(replace(s.model, hla=adjuster), s.cam, s.base, run)
+    return march(with_element(s.model, adjuster), s.cam, s.base, run)
 
 
 # --------------------------------------------------------------------------- the ball alone
@@ -226,7 +227,7 @@ def test_refill_equals_the_collapse_of_an_incompressible_chamber(zeta_hla):
 
     s = zeta_hla
     stiff = replace(s.model.hla, air_fraction=0.0, bulk_modulus=1e11)
-    model = replace(s.model, hla=stiff)
+    model = with_element(s.model, stiff)
     run = replace(s.settings, cycles_min=20, cycles_max=20)
     r = march(model, s.cam, s.base, run)
     assert r.change < 1e-9

@@ -37,13 +37,13 @@ def test_sealed_chamber_stays_the_rigid_adjuster_over_many_revolutions(zeta_hla)
     reached the vapour pressure in the fourth revolution and the plunger ratcheted out
     (73 % of the peak load by the sixth)."""
     from camtrain.dynamics import march
-    from camtrain.dynamics.hla import rigid_adjuster
+    from camtrain.dynamics.hla import rigid_adjuster, with_element
 
     s = zeta_hla
     adj = replace(s.model.hla, bulk_modulus=math.inf, air_fraction=0.0, radial_clearance=0.0,
                   cracking_pressure=1e9)
     settings = replace(s.settings, cycles_min=8, cycles_max=8)
-    sealed = march(replace(s.model, hla=adj), s.cam, s.base, settings)
+    sealed = march(with_element(s.model, adj), s.cam, s.base, settings)
     rigid = march(rigid_adjuster(s.model), s.cam, s.base, settings)
     peak = float(np.max(rigid.contact_force))
     assert np.max(np.abs(sealed.contact_force - rigid.contact_force)) < 1e-8 * peak

@@ -111,11 +111,11 @@ def sealed_pair(problem, **chamber):
     """``problem`` with the sealed incompressible chamber (no compressibility, no air, no
     clearance, a check valve that never cracks; ``chamber`` overrides more of the adjuster),
     and with the constant-load adjuster it reduces to (:func:`rigid_adjuster`)."""
-    from camtrain.dynamics.hla import rigid_adjuster
+    from camtrain.dynamics.hla import rigid_adjuster, with_element
 
     adj = replace(problem.train.hla, bulk_modulus=math.inf, air_fraction=0.0,
                   radial_clearance=0.0, cracking_pressure=1e9, **chamber)
-    return (replace(problem, train=replace(problem.train, hla=adj)),
+    return (replace(problem, train=with_element(problem.train, adj)),
             replace(problem, train=rigid_adjuster(problem.train)))
 
 

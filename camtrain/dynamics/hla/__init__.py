@@ -78,7 +78,15 @@ from camtrain.dynamics.hla.element import (
     quasi_static_equivalent,
 )
 from camtrain.dynamics.hla.leakdown import leakdown_test
-from camtrain.dynamics.hla.placement import _spring_at_rest, rigid_adjuster, with_lash_adjuster
+from camtrain.dynamics.hla.placement import (
+    SeriesAdjuster,
+    _spring_at_rest,
+    chamber_from,
+    march_record,
+    rigid_adjuster,
+    with_element,
+    with_lash_adjuster,
+)
 
 __all__ = ["LashAdjuster", "BULK_MODELS", "CHAMBER_SCHEMES", "P_ATM", "effective_bulk_modulus",
            "mixture_volume", "leak_conductance", "couette_coefficient", "check_valve_flow",
@@ -86,4 +94,5 @@ __all__ = ["LashAdjuster", "BULK_MODELS", "CHAMBER_SCHEMES", "P_ATM", "effective
            "no_adjuster", "pivot_ratio", "with_lash_adjuster", "rigid_adjuster", "chamber_step",
            "extension", "plunger_force", "_spring_at_rest", "CHECK_VALVES", "ball_end",
            "chamber_advance", "chamber_start", "ball_cracking_pressure", "curtain_area",
-           "quasi_static_equivalent"]
+           "quasi_static_equivalent", "SeriesAdjuster", "with_element", "march_record",
+           "chamber_from"]

@@ -1,11 +1,66 @@
 """The adjuster placed in the lumped train: a plunger node between the follower (its body) and
-the links to the valve (:func:`with_lash_adjuster`), and the constant-load adjuster it replaces
-(:func:`rigid_adjuster`, the reference of the lift loss)."""
+the links to the valve (:func:`with_lash_adjuster`), the train's series element it is there
+(:class:`SeriesAdjuster`), the march's record and chamber of it (:func:`march_record`), and the
+constant-load adjuster it replaces (:func:`rigid_adjuster`, the reference of the lift loss)."""
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 
 from camtrain.dynamics.hla.element import LashAdjuster
+
+
+@dataclass(frozen=True)
+class SeriesAdjuster:
+    """The adjuster as the train's series element (``TrainModel.series``): ``adjuster``
+    between the follower node (its body) and node ``node`` (its plunger), the plunger moving
+    ``ratio`` times the valve-referred motion."""
+
+    adjuster: LashAdjuster
+    node: int
+    ratio: float = 1.0
+
+    def rest_force(self) -> float:
+        """The chamber's valve-referred force on the base circle [N]: at the supply pressure
+        (the plunger spring is in the train's stiffness and preload)."""
+        return self.ratio * self.adjuster.supply_pressure * self.adjuster.area
+
+    def stiffness(self) -> float:
+        """The closed chamber's valve-referred stiffness at rest [N/m]."""
+        return self.ratio ** 2 * self.adjuster.stiffness()
+
+
+def with_element(model, adj: LashAdjuster):
+    """The train ``model`` (with an adjuster placed) with the adjuster's element ``adj``
+    instead (same plunger node and ratio: other oil, chamber or valve data)."""
+    from dataclasses import replace
+
+    return replace(model, series=replace(model.series, adjuster=adj))
+
+
+def march_record(model, u0):
+    """The march's adjuster record of ``model`` (a ``records.Hydraulic``; ``no_adjuster``
+    without one) and its chamber at rest (the supply pressure, no flow), ``u0`` the train's
+    displacements at rest."""
+    from camtrain.dynamics.hla.chamber import chamber_start, hydraulic_record, no_adjuster
+    from camtrain.dynamics.records import HP_SIZE
+
+    if model.series is None:
+        return no_adjuster(), np.zeros(HP_SIZE)
+    s = model.series
+    w0 = float(u0[model.follower] - u0[s.node])
+    record = hydraulic_record(s.adjuster, model.follower, s.node, s.ratio, w0)
+    return record, chamber_start(record, s.adjuster.supply_pressure)
+
+
+def chamber_from(hp, rows, i: int) -> None:
+    """A chamber state ``hp`` (records.HP_SLOTS) started from the sampled rows (records.H_ROWS)
+    of a periodic response at sample i: its pressure, flows and ball lift; no rate guess, no
+    volumes yet, the ball at rest."""
+    hp[:] = 0.0
+    hp[:3] = rows[:3, i]
+    hp[6] = rows[6, i]
 
 
 def with_lash_adjuster(model, adj: LashAdjuster, ratio: float = 1.0):
@@ -49,19 +104,20 @@ def with_lash_adjuster(model, adj: LashAdjuster, ratio: float = 1.0):
         Element("hydraulic lash adjuster chamber (closed, at rest)",
                 ratio ** 2 * adj.stiffness(), float(mass[q])),)
     placed = replace(model, mass=mass, stiffness=k, damping=c, preload=preload,
-                     uni_offset=off, elements=elements, hla=adj, plunger=q, hla_ratio=ratio)
-    return _spring_at_rest(placed, k_s)
+                     uni_offset=off, elements=elements, series=SeriesAdjuster(adj, q, ratio))
+    return _spring_at_rest(placed, k_s, q)
 
 
-def _spring_at_rest(model, k_s: float):
+def _spring_at_rest(model, k_s: float, q: int):
     """The plunger spring's preload pair shifted so that the spring pushes with its preload in
     the train's state at rest (where the links' compressions move the plunger against the
-    follower by w0): the rest solved without the spring's rate first."""
+    follower by w0; ``q`` the plunger's node): the rest solved without the spring's rate
+    first."""
     from dataclasses import replace
 
     from camtrain.dynamics.train import static_state
 
-    f, q = model.follower, model.plunger
+    f = model.follower
     k = model.stiffness.copy()
     k[f, f] -= k_s
     k[q, q] -= k_s
@@ -82,7 +138,7 @@ def rigid_adjuster(model):
     constant force pushing follower and valve apart (``assemble_train``'s ``adjuster_load``)."""
     from dataclasses import replace
 
-    f, v, q = model.follower, model.valve, model.plunger
+    f, v, q = model.follower, model.valve, model.series.node
     n = model.size - 1
     k = model.stiffness[:n, :n].copy()
     c = model.damping[:n, :n].copy()
@@ -94,9 +150,9 @@ def rigid_adjuster(model):
         mat[f, v] = mat[v, f] = -val
     mass = model.mass[:n].copy()
     mass[f] += model.mass[q]
-    rest = model.hla_ratio * model.hla.rest_force()
+    rest = model.series.ratio * model.series.adjuster.rest_force()
     preload = model.preload[:n].copy()
     preload[f] = -rest
     preload[v] += rest
     return replace(model, mass=mass, stiffness=k, damping=c, preload=preload,
-                   elements=model.elements[:-1], hla=None, plunger=-1, hla_ratio=1.0)
+                   elements=model.elements[:-1], series=None)

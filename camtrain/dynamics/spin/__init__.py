@@ -42,7 +42,8 @@ from camtrain.dynamics.spin.record import (
     RollerTables,
     no_roller,
     spin_record,
+    spin_start,
     step_positions,
 )
 
-__all__ = ["RollerTables", "no_roller", "spin_record", "step_positions"]
+__all__ = ["RollerTables", "no_roller", "spin_record", "spin_start", "step_positions"]

@@ -57,6 +57,13 @@ def spin_record(tables: RollerTables, angles: np.ndarray) -> Spin:
                 _plain(ratio))
 
 
+def spin_start(record: Spin) -> tuple[float, float, float]:
+    """The roller's state ``wr`` (speed, sliding speed, traction) at the start of a march:
+    pure rolling at the record's first step angle's grid angle, no traction."""
+    pos = int(np.floor(record.pos[0])) % record.v_s0.size
+    return record.v_s0[pos] / record.radius, 0.0, 0.0
+
+
 def _plain(values) -> np.ndarray:
     """A writable C-contiguous float64 copy: one compiled specialization of the march for every
     train (a read-only or strided array would compile another)."""
