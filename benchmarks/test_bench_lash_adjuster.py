@@ -64,7 +64,7 @@ def test_bench_lash_adjuster_ball_check_valve(benchmark):
     deck = api.load(str(ROOT / "decks" / "zeta_intake_hla.toml")).model
     curve = build_lift_law(deck.lift).evaluate(angle_grid(deck.solver.angle_points))
     s = setup(deck, kinematics(deck, curve)[0])
-    ball = with_element(s.model, replace(s.model.hla, check_valve="ball"))
+    ball = with_element(s.model, replace(s.model.series.adjuster, check_valve="ball"))
     run = replace(s.settings, cycles_min=6, cycles_max=6)   # the same work: six revolutions
     march(ball, s.cam, s.base, run)                         # compile / load the kernel
     timing = paired(lambda: march(ball, s.cam, s.base, run),

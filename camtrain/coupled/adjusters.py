@@ -16,15 +16,15 @@ def adjuster_record(asm, train):
     from camtrain.dynamics.hla import hydraulic_record, no_adjuster
     from camtrain.dynamics.train import CAM, static_state
 
-    if train.hla is None:
+    if train.series is None:
         return no_adjuster(), np.zeros(0, dtype=np.int64)
     if train.follower != train.uni_node[CAM]:
         raise ValueError("the coupled march takes a lash adjuster on the cam's follower node")
     u0 = static_state(train)[0]
-    w0 = float(u0[train.follower] - u0[train.plunger])
-    record = hydraulic_record(train.hla, train.follower, train.plunger, train.hla_ratio, w0)
+    w0 = float(u0[train.follower] - u0[train.series.node])
+    record = hydraulic_record(train.series.adjuster, train.follower, train.series.node, train.series.ratio, w0)
     starts = asm.tr0 + np.arange(asm.ix.size) * train.size
-    return record, (starts + train.plunger).astype(np.int64)
+    return record, (starts + train.series.node).astype(np.int64)
 
 
 def adjusters_start(asm, train, start, theta_grid, phases, state, minv):
@@ -53,7 +53,7 @@ def adjusters_start(asm, train, start, theta_grid, phases, state, minv):
     acc += minv @ force
     for j, g in enumerate(phases):     # the plunger's acceleration relative to its body as
         at = float(theta_grid[0]) - float(g)     # the single train's: no start-up jolt of a
-        rel = (np.interp(at, start.theta, start.a[train.plunger], period=period)  # stiff chamber
+        rel = (np.interp(at, start.theta, start.a[train.series.node], period=period)  # stiff chamber
                - np.interp(at, start.theta, start.a[train.follower], period=period))
         acc[ipl[j]] = acc[asm.ifol[j]] + rel
     if record.on:       # a sealed incompressible chamber: no acceleration in its body

@@ -190,7 +190,7 @@ def march_coupled(shaft, train, cam, ratio, axes, phases, omega: float, *, subst
     return MonolithicResult(loads.copy(), valve_acc.copy(), cycle, change <= period_tol,
                             change, steps, int(counts[0]), int(counts[1]),
                             films.copy() if film is not None else None, int(counts[2]),
-                            adjuster.copy() if train.hla is not None else None)
+                            adjuster.copy() if train.series is not None else None)
 
 
 def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
@@ -419,10 +419,10 @@ def _start(asm, lob, path, cam, train, forces, hub, start, lobes, friction_arm):
         q, v, acc, act_c, act_s = warm_start(
             start, cam, path.theta_grid, phases, ratio, axes, train, asm.M, asm.K, asm.C, f0,
             omega, asm, lob.b[:, -1], lob.bd[:, -1], lob.gx[:, -1], lob.gy[:, -1],
-            lob.gphi[:, -1], drag, hub, quiet=train.hla is not None)
+            lob.gphi[:, -1], drag, hub, quiet=train.series is not None)
     hp = np.zeros((n_lobes, 4))
-    if train.hla is not None:      # every chamber at rest: the supply pressure, no flow
-        hp[:, 0] = train.hla.supply_pressure
+    if train.series is not None:      # every chamber at rest: the supply pressure, no flow
+        hp[:, 0] = train.series.adjuster.supply_pressure
         if start is not None:
             adjusters_start(asm, train, start, path.theta_grid, phases, (q, v, acc, hp), minv)
     return State(q, v, acc, act_c, act_s, np.zeros(n_lobes), np.zeros(n_lobes),

@@ -110,20 +110,6 @@ class TrainModel:
     #: the march by the roller effect
     roller: object = None
 
-    # Read by the coupled march's adjuster adapter (camtrain.coupled.adjusters, march): the
-    # series element's parts under their former field names.
-    @property
-    def hla(self):
-        return None if self.series is None else self.series.adjuster
-
-    @property
-    def plunger(self) -> int:
-        return -1 if self.series is None else self.series.node
-
-    @property
-    def hla_ratio(self) -> float:
-        return 1.0 if self.series is None else self.series.ratio
-
     @property
     def size(self) -> int:
         return int(self.mass.size)

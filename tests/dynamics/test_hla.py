@@ -152,7 +152,7 @@ def test_closed_chamber_is_a_spring_of_K_A2_over_V_in_series(zeta):
     linear = _as_linear_spring(model, k_h)
     hla = _march(zeta, model, cycles_min=3, cycles_max=3)
     spring = _march(zeta, linear, cycles_min=3, cycles_max=3)
-    v, f, q = model.valve, model.follower, model.plunger
+    v, f, q = model.valve, model.follower, model.series.node
     scale = float(np.max(spring.u[v]))
     assert np.max(np.abs(hla.u[v] - spring.u[v])) < 2e-4 * scale
     deflection_hla = hla.u[f] - hla.u[q]
@@ -166,8 +166,8 @@ def _as_linear_spring(model, k_h):
     from camtrain.dynamics.hla import _spring_at_rest
 
     k = model.stiffness.copy()
-    f, q = model.follower, model.plunger
-    r = model.hla_ratio ** 2 * k_h
+    f, q = model.follower, model.series.node
+    r = model.series.ratio ** 2 * k_h
     k[f, f] += r
     k[q, q] += r
     k[f, q] -= r

@@ -118,7 +118,7 @@ def test_massless_ball_tends_to_the_quasi_static_orifice(zeta_hla):
     linearly in the mass (a decade of mass, about a decade of difference), and at 1e-11 kg
     agree to 1e-5 of the peak pressure and 1e-4 of the collapse."""
     s = zeta_hla
-    ball = replace(s.model.hla, check_valve="ball")
+    ball = replace(s.model.series.adjuster, check_valve="ball")
     ref = _march(s, quasi_static_equivalent(ball))
     v = s.model.valve
     diffs = []
@@ -136,7 +136,7 @@ def test_massless_ball_tends_to_the_quasi_static_orifice(zeta_hla):
 
 @pytest.fixture(scope="module")
 def zeta_ball(zeta_hla):
-    return _march(zeta_hla, replace(zeta_hla.model.hla, check_valve="ball"), cycles=6)
+    return _march(zeta_hla, replace(zeta_hla.model.series.adjuster, check_valve="ball"), cycles=6)
 
 
 def test_ball_stays_shut_over_the_lift_and_closes_on_the_base_circle(zeta_hla, zeta_ball):
@@ -148,7 +148,7 @@ def test_ball_stays_shut_over_the_lift_and_closes_on_the_base_circle(zeta_hla, z
     the quasi-static orifice cannot show."""
     s, r = zeta_hla, zeta_ball
     h = r.hydraulic
-    supply = s.model.hla.supply_pressure
+    supply = s.model.series.adjuster.supply_pressure
     seated = r.contact_force[1] > 0.0
     lifted = np.asarray(r.cam[0]) > 0.05 * np.max(r.cam[0])   # the event, landing aside
     assert np.all(h[6][lifted] == 0.0)
@@ -177,7 +177,7 @@ def test_march_with_the_ball_converges_and_is_accurate_at_the_default_step(zeta_
     the lift of the finest march (observed 9e-6) and the ball's lift within 5 % of its stop
     (observed 2.7 %)."""
     s = zeta_hla
-    ball = replace(s.model.hla, check_valve="ball")
+    ball = replace(s.model.series.adjuster, check_valve="ball")
     runs = [_march(s, ball, f) for f in (1, 2, 4, 16)]
     ref = runs[-1]
     for row in (6, 0, 3):
@@ -203,11 +203,11 @@ def test_refill_balances_the_leakdown_over_the_periodic_revolution(zeta_hla, val
     the volumes that flowed either way (the ball lets oil back out while it closes). The refill
     is visibly above nothing: of the order of the leak-down during the event."""
     s = zeta_hla
-    r = _march(s, replace(s.model.hla, check_valve=valve), cycles=12)
+    r = _march(s, replace(s.model.series.adjuster, check_valve=valve), cycles=12)
     assert r.change < 1e-9
-    area = s.model.hla.area
+    area = s.model.series.adjuster.area
     refill, leak = r.hydraulic[4].sum() / area, r.hydraulic[5].sum() / area
-    volume = s.model.hla.dead_volume + area * r.hydraulic[3]
+    volume = s.model.series.adjuster.dead_volume + area * r.hydraulic[3]
     swing = (volume.max() - volume.min()) / volume.min()
     gross = (np.abs(r.hydraulic[4]).sum() + np.abs(r.hydraulic[5]).sum()) / area
     assert refill > 1e-6
@@ -226,7 +226,7 @@ def test_refill_equals_the_collapse_of_an_incompressible_chamber(zeta_hla):
     from camtrain.dynamics.hla.findings import adjuster_findings
 
     s = zeta_hla
-    stiff = replace(s.model.hla, air_fraction=0.0, bulk_modulus=1e11)
+    stiff = replace(s.model.series.adjuster, air_fraction=0.0, bulk_modulus=1e11)
     model = with_element(s.model, stiff)
     run = replace(s.settings, cycles_min=20, cycles_max=20)
     r = march(model, s.cam, s.base, run)

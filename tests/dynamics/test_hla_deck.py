@@ -37,8 +37,8 @@ def test_adjuster_at_the_pivot_of_a_finger_follower_is_referred_by_the_lever_rat
     kin = kinematics_of(deck)
     model = setup(deck, kin).model
     ratio = float(np.asarray(kin.rocker_ratio)[int(np.argmin(kin.valve_lift))])
-    assert model.hla_ratio == pytest.approx(1.0 / (ratio - 1.0), rel=1e-12)
-    assert model.mass[model.plunger] == pytest.approx(0.008 * model.hla_ratio ** 2, rel=1e-12)
+    assert model.series.ratio == pytest.approx(1.0 / (ratio - 1.0), rel=1e-12)
+    assert model.mass[model.series.node] == pytest.approx(0.008 * model.series.ratio ** 2, rel=1e-12)
     result = api.run(deck)
     assert "hla_pressure" in result.columns and "valve_lift_loss" in result.columns
     assert result.metrics["hla_pressure_max"].value > 2.5e5
@@ -90,8 +90,8 @@ def test_adjuster_in_a_push_rod_lifter_moves_with_the_push_rod():
     raw["dynamics"]["lash_adjuster"] = dict(ADJUSTER, location="auto")
     deck = validate(raw, "pushrod_hla", DECKS)
     model = setup(deck, kinematics_of(deck)).model
-    assert model.hla_ratio == pytest.approx(1.0 / pushrod_ratio(deck), rel=1e-12)
-    assert model.hla_ratio < 1.0
+    assert model.series.ratio == pytest.approx(1.0 / pushrod_ratio(deck), rel=1e-12)
+    assert model.series.ratio < 1.0
 
 
 def test_roller_finger_deck_with_its_adjuster_at_the_pivot_collapses_and_loses_lift():
@@ -112,7 +112,7 @@ def test_roller_finger_deck_with_its_adjuster_at_the_pivot_collapses_and_loses_l
     model = setup(deck, kin).model
     ratio = float(np.asarray(kin.rocker_ratio)[int(np.argmin(kin.valve_lift))])
     assert ratio > 1.0
-    assert model.hla_ratio == pytest.approx(1.0 / (ratio - 1.0), rel=1e-12)
+    assert model.series.ratio == pytest.approx(1.0 / (ratio - 1.0), rel=1e-12)
     result = api.run(loaded)
     metrics = result.metrics
     assert {"hla_pressure", "hla_extension", "valve_lift_loss"} <= set(result.columns)

@@ -30,7 +30,7 @@ def _run(deck, kin, rpm=None, adjuster=None, refine=1, **settings):
     from camtrain.dynamics.hla.findings import adjuster_findings
 
     s = setup(deck, kin, omega=None if rpm is None else rpm * math.pi / 30)
-    model = s.model if adjuster is None else with_element(s.model, adjuster(s.model.hla))
+    model = s.model if adjuster is None else with_element(s.model, adjuster(s.model.series.adjuster))
     run = replace(s.settings, substeps=s.settings.substeps * refine, **settings)
     resp = march(model, s.cam, s.base, run)
     rigid = march(rigid_adjuster(model), s.cam, s.base, run)
@@ -43,7 +43,7 @@ def test_more_air_is_softer_and_loses_more_lift(hla_deck):
     for air in (0.001, 0.03):
         resp, _, found, s = _run(deck, kin, adjuster=lambda a, air=air: replace(
             a, air_fraction=air))
-        out[air] = (s.model.series.stiffness(), replace(s.model.hla, air_fraction=air).stiffness(),
+        out[air] = (s.model.series.stiffness(), replace(s.model.series.adjuster, air_fraction=air).stiffness(),
                     float(found.lift_loss[np.argmax(resp.u[s.model.valve])]))
     assert out[0.03][1] < 0.5 * out[0.001][1]
     assert out[0.03][2] > out[0.001][2] > 0.0
@@ -78,7 +78,7 @@ def _march_only(deck, kin, scheme, refine, cycles=4):
     from camtrain.dynamics.hla import with_element
 
     s = setup(deck, kin)
-    model = with_element(s.model, replace(s.model.hla, scheme=scheme))
+    model = with_element(s.model, replace(s.model.series.adjuster, scheme=scheme))
     return march(model, s.cam, s.base, replace(s.settings, substeps=s.settings.substeps * refine,
                                                cycles_min=cycles, cycles_max=cycles)), s
 
@@ -140,8 +140,8 @@ def test_one_step_per_grid_interval_gives_a_finite_march(hla_deck, rpm):
     deck, kin = hla_deck
     s = setup(deck, kin, omega=rpm * math.pi / 30)
     for scheme in ("backward_euler", "trapezoidal"):
-        model = with_element(s.model, replace(s.model.hla, scheme=scheme))
+        model = with_element(s.model, replace(s.model.series.adjuster, scheme=scheme))
         resp = march(model, s.cam, s.base, replace(s.settings, substeps=1))
         assert resp.steps == kin.theta.size
         assert np.all(np.isfinite(resp.u)) and np.all(np.isfinite(resp.hydraulic))
-        assert np.all(resp.hydraulic[3] <= model.hla.stroke + 1e-4)
+        assert np.all(resp.hydraulic[3] <= model.series.adjuster.stroke + 1e-4)

@@ -40,7 +40,7 @@ def test_sealed_chamber_stays_the_rigid_adjuster_over_many_revolutions(zeta_hla)
     from camtrain.dynamics.hla import rigid_adjuster, with_element
 
     s = zeta_hla
-    adj = replace(s.model.hla, bulk_modulus=math.inf, air_fraction=0.0, radial_clearance=0.0,
+    adj = replace(s.model.series.adjuster, bulk_modulus=math.inf, air_fraction=0.0, radial_clearance=0.0,
                   cracking_pressure=1e9)
     settings = replace(s.settings, cycles_min=8, cycles_max=8)
     sealed = march(with_element(s.model, adj), s.cam, s.base, settings)

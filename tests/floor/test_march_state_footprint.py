@@ -26,8 +26,6 @@ FOOTPRINTS: dict[str, tuple[str, frozenset[str], dict[str, str]]] = {
         frozenset({"hla", "hp", "hp_end", "hp_s", "ipl", "plunger", "hla_ratio", "hydraulic"}),
         {
             "camtrain.dynamics.records": "record fields: Train.hla, TrainState.hp, Marched.h",
-            "camtrain.dynamics.train": "TrainModel.series (the generic series element) and "
-                                       "its three read-only accessors for the coupled adapter",
             "camtrain.dynamics._kernel": "one call per hook point (hla/in_train.py)",
             "camtrain.dynamics.integrators": "the record's construction (march_record), its "
                                              "warm start (chamber_from), the sampled rows",

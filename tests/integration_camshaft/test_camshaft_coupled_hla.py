@@ -113,7 +113,7 @@ def sealed_pair(problem, **chamber):
     and with the constant-load adjuster it reduces to (:func:`rigid_adjuster`)."""
     from camtrain.dynamics.hla import rigid_adjuster, with_element
 
-    adj = replace(problem.train.hla, bulk_modulus=math.inf, air_fraction=0.0,
+    adj = replace(problem.train.series.adjuster, bulk_modulus=math.inf, air_fraction=0.0,
                   radial_clearance=0.0, cracking_pressure=1e9, **chamber)
     return (replace(problem, train=with_element(problem.train, adj)),
             replace(problem, train=rigid_adjuster(problem.train)))
@@ -161,7 +161,7 @@ def test_sealed_incompressible_chamber_on_a_stiff_shaft_is_the_rigid_adjuster(mo
     top = float(np.max(np.abs(b.valve_acceleration)))
     assert np.max(np.abs(a.valve_acceleration - b.valve_acceleration)) < 1e-8 * top
     assert np.ptp(a.adjuster[:, 1]) < 1e-12
-    floor = sealed.train.hla.vapour_pressure - 101_325.0
+    floor = sealed.train.series.adjuster.vapour_pressure - 101_325.0
     assert np.min(a.adjuster[:, 0]) > floor
 
 
@@ -183,7 +183,7 @@ def test_sealed_chamber_that_holds_tension_is_the_rigid_adjuster_on_the_elastic_
     peak = float(np.max(b.loads))
     assert np.max(np.abs(a.loads - b.loads)) < 1e-4 * peak
     assert np.ptp(a.adjuster[:, 1]) < 1e-12
-    assert np.min(a.adjuster[:, 0]) < problem.train.hla.vapour_pressure - 101_325.0
+    assert np.min(a.adjuster[:, 0]) < problem.train.series.adjuster.vapour_pressure - 101_325.0
 
 
 def _plain(monkeypatch):

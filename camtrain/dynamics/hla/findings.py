@@ -88,12 +88,12 @@ def adjuster_findings(resp, rigid, model, height: float) -> AdjusterFindings:
     # the refill is a volume, summed over the march's steps (resp.hydraulic rows 4, 5): it comes
     # through the check valve in the pressure dips of the valve's landing, often while the
     # valve bounces, not only while it rests closed
-    area = model.hla.area
+    area = model.series.adjuster.area
     refill = float(np.sum(resp.hydraulic[4])) / area
     leakdown = float(np.sum(resp.hydraulic[5])) / area
     base = np.asarray(resp.cam[0]) <= 1e-9 * max(float(np.max(resp.cam[0])), 1e-300)
     held = float(np.min(lift[base])) if base.any() else 0.0
-    gain = float(np.min(x[base]) - model.hla.rest_extension) if base.any() else 0.0
+    gain = float(np.min(x[base]) - model.series.adjuster.rest_extension) if base.any() else 0.0
     opening, closing = crossings(resp.theta, lift, height)
     opening_r, closing_r = crossings(rigid.theta, rigid.u[v], height)
     return AdjusterFindings(collapse, refill, leakdown, rigid.u[v] - lift, opening, closing,
@@ -108,7 +108,7 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("hla_pressure", h[0], "Pa", "adjuster chamber pressure (gauge)"),
         ("hla_check_flow", h[1], "m^3/s", "flow through the adjuster's check valve into the "
          "chamber (negative: back out past a check ball not yet seated)"),
-        ("hla_check_open", (h[1] > 0.0).astype(float) if model.hla.check_valve ==
+        ("hla_check_open", (h[1] > 0.0).astype(float) if model.series.adjuster.check_valve ==
          "quasi_static" else (h[6] > 0.0).astype(float), "-", "1 while the check valve is open"),
         ("hla_leak_flow", h[2], "m^3/s", "leak-down flow out of the chamber through the "
          "plunger annulus (negative: drawn in)"),
@@ -116,7 +116,7 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("valve_lift_loss", found.lift_loss, "m", "valve lift of the train with the "
          "constant-load adjuster minus this one's (lost to the adjuster)"),
     )
-    if model.hla.check_valve == "ball":
+    if model.series.adjuster.check_valve == "ball":
         cols += (("hla_check_lift", h[6], "m", "check ball's lift off its seat"),)
     i = int(np.argmax(resp.u[model.valve]))
     mets = [
@@ -134,12 +134,12 @@ def adjuster_rows(resp, found: AdjusterFindings, model, height: float):
         ("hla_held_open", found.held_open, "m", "lowest valve lift on the base circle (pump-up "
          "when the valve stays open)"),
     ]
-    if model.hla.check_valve == "ball":
+    if model.series.adjuster.check_valve == "ball":
         from camtrain.dynamics.hla.element import ball_cracking_pressure
 
-        mets.append(("hla_check_cracking_pressure", ball_cracking_pressure(model.hla), "Pa",
+        mets.append(("hla_check_cracking_pressure", ball_cracking_pressure(model.series.adjuster), "Pa",
                      "check ball's cracking pressure (spring preload over seat area)"))
-        mets.append(("hla_check_frequency", model.hla.ball_frequency() / (2.0 * math.pi), "Hz",
+        mets.append(("hla_check_frequency", model.series.adjuster.ball_frequency() / (2.0 * math.pi), "Hz",
                      "check ball's natural frequency on its spring, sqrt(k/m)/(2 pi)"))
         mets.append(("hla_check_lift_max", float(np.max(h[6])), "m", "check ball's largest "
                      "lift (at its stop: the valve fully open)"))
