@@ -21,8 +21,9 @@ def adjuster_record(asm, train):
     if train.follower != train.uni_node[CAM]:
         raise ValueError("the coupled march takes a lash adjuster on the cam's follower node")
     u0 = static_state(train)[0]
-    w0 = float(u0[train.follower] - u0[train.series.node])
-    record = hydraulic_record(train.series.adjuster, train.follower, train.series.node, train.series.ratio, w0)
+    element = train.series
+    w0 = float(u0[train.follower] - u0[element.node])
+    record = hydraulic_record(element.adjuster, train.follower, element.node, element.ratio, w0)
     starts = asm.tr0 + np.arange(asm.ix.size) * train.size
     return record, (starts + train.series.node).astype(np.int64)
 

@@ -43,7 +43,8 @@ def test_more_air_is_softer_and_loses_more_lift(hla_deck):
     for air in (0.001, 0.03):
         resp, _, found, s = _run(deck, kin, adjuster=lambda a, air=air: replace(
             a, air_fraction=air))
-        out[air] = (s.model.series.stiffness(), replace(s.model.series.adjuster, air_fraction=air).stiffness(),
+        own = replace(s.model.series.adjuster, air_fraction=air)
+        out[air] = (s.model.series.stiffness(), own.stiffness(),
                     float(found.lift_loss[np.argmax(resp.u[s.model.valve])]))
     assert out[0.03][1] < 0.5 * out[0.001][1]
     assert out[0.03][2] > out[0.001][2] > 0.0
