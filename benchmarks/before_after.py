@@ -1,5 +1,5 @@
 """The same work timed in two source trees, as alternating processes (docs/performance.md,
-"Before and after a change").
+"Before and after the one-chain redesign").
 
 ``make bench`` times each workload against a floor; this script answers a different question:
 is a change no slower than the code it replaced? Each item below runs as a process of its own
