@@ -11,7 +11,9 @@ states and the rest of the step taken with them. The sub-steps have other length
 step, so they are solved block by block (both bending planes, the twist and every train are
 uncoupled but for the contacts), again with the contacts as a low-rank update. Staggered: the
 shaft under the predicted contact loads first, the trains on its motion after
-(:mod:`._partition`). The data come as the records of :mod:`.records`."""
+(:mod:`._partition`). The data come as the records of :mod:`.records`.
+The step's functions that take the whole ``System`` are inlined where they are called
+(``inline="always"``; why: :mod:`._revolution`)."""
 from __future__ import annotations
 
 import numpy as np
@@ -88,7 +90,7 @@ def _friction_force(fric, work, lay, lob):
         fric[lay.iphi[j]] += -work.fr[j] * work.arm[j]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _substep(tau, sys, st, fric, at, x, stagger):
     """A Newmark step of length ``tau`` from the state with the contact states fixed, the
     linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
@@ -145,7 +147,7 @@ def _substep(tau, sys, st, fric, at, x, stagger):
     woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x, sys.hla)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _equilibrium(sys, st, fric, at, stagger):
     """acc = M^-1 (f0 + friction + contact forces - K q - C v), block by block (``Minv`` the
     block-diagonal inverse of M); a sealed incompressible adjuster's chamber restarted
@@ -218,7 +220,7 @@ def _crossing(k, c, d0, dd0, d1, dd1, h):
     return x
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _first_crossing(sys, st, work, at, lob, s, tau, h):
     """The contact that changes state first inside the (sub)step from tau, length h: (lobe,
     whether the seat, fraction of the sub-step), or (-1, False, 2)."""
@@ -244,7 +246,7 @@ def _first_crossing(sys, st, work, at, lob, s, tau, h):
     return first, seat, alpha
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _split(sys, st, work, at, lob, s, stagger):
     """The step split at every contact change inside it (at most MAX_SWITCHES): returns the
     changes located and whether there were more. The sub-steps carry friction, the belt's
@@ -302,7 +304,7 @@ def _split(sys, st, work, at, lob, s, stagger):
     return switches, 0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
     """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
     ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the

@@ -365,7 +365,7 @@ class _FixedStep:
                       np.empty((2, grid)), np.empty(cap), np.empty(cap, dtype=np.int64),
                       np.empty(cap), np.zeros((len(H_ROWS), grid)), np.zeros((3, grid)))
         train = Train(m.mass, m.stiffness, m.damping, m.preload, m.uni_node, self.thr,
-                      self.hla, self.spin)
+                      self.hla)
         inputs = Inputs(self.inputs, self.rates, self.dt, self.stride, 0.0)
         if self.explicit:   # v and a: the explicit scheme's work arrays
             state = TrainState(self.u, np.empty(n), np.empty(n), self.act, self.u_prev,
@@ -375,7 +375,9 @@ class _FixedStep:
             state = TrainState(self.u, self.v, self.a, self.act, self.u, self.psi_prev, self.hp,
                                self.wr)
             march = self.kernel.newmark_march
-        nev, work, cut = march(train, unilateral(m), CamLaw(*self.geometry), inputs, state, out)
+        spin = () if self.explicit else (self.spin,)    # the roller marched by newmark only
+        nev, work, cut = march(train, unilateral(m), CamLaw(*self.geometry), inputs, state, out,
+                               *spin)
         nev = min(nev, cap)
         events = list(zip(out.ev_t[:nev].tolist(), out.ev_kind[:nev].tolist(),
                           out.ev_rate[:nev].tolist(), strict=True))
@@ -416,7 +418,7 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
                   np.empty((2, steps)), np.empty(1), np.empty(1, dtype=np.int64), np.empty(1),
                   np.zeros((4, steps)), np.zeros((3, steps)))
     train = Train(model.mass, model.stiffness, model.damping, np.zeros(n), model.uni_node,
-                  np.zeros(2), no_adjuster(), no_roller())
+                  np.zeros(2), no_adjuster())
     drive = Inputs(inputs, inputs, dt, 1, 0.0)
     if integrator == "central_difference":
         u_prev = u - dt * v + 0.5 * dt * dt * a
@@ -427,5 +429,6 @@ def free_vibration(model: TrainModel, u0: np.ndarray, dt: float, steps: int,
         central_difference_march(train, unilateral(model), linear_law(), drive, state, out)
     else:
         state = TrainState(u, v, a, act, u, np.zeros(2), np.zeros(4), np.zeros(3))
-        _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out)
+        _kernel.newmark_march(train, unilateral(model), linear_law(), drive, state, out,
+                              no_roller())
     return out.u

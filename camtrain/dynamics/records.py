@@ -33,9 +33,11 @@ Unilateral = namedtuple("Unilateral", "k c off")
 
 #: the single train's linear part M u'' + C u' + K u = f0 (``m`` the lumped masses [kg]), the
 #: node each unilateral contact acts on, each contact's closing threshold ``thr`` [N] and its
-#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one) and its roller's
-#: spin ``roller`` (a :data:`Spin`, ``on`` 0 without one)
-Train = namedtuple("Train", "m K C f0 node thr hla roller")
+#: hydraulic lash adjuster ``hla`` (a :data:`Hydraulic`, ``on`` 0 without one). A roller's spin
+#: (a :data:`Spin`) is the Newmark march's own argument, not a field: the train goes by value
+#: into the step's helpers at every (sub)step, and with the spin's tables in it the single
+#: train's march ran 1.6x slower (Zeta intake deck, no roller)
+Train = namedtuple("Train", "m K C f0 node thr hla")
 
 #: a hydraulic lash adjuster between the ``f`` (body) and ``q`` (plunger) nodes
 #: (:mod:`camtrain.dynamics.hla`, SI, pressures gauge): plunger motion per valve-referred motion

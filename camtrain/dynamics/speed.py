@@ -14,7 +14,19 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-__all__ = ["SpeedSearch", "first_separation_speed"]
+__all__ = ["NoThreshold", "SpeedSearch", "first_separation_speed"]
+
+
+class NoThreshold(ValueError):
+    """No bracket found: ``crossed_everywhere`` when every speed tried crossed the threshold
+    (separated), otherwise none did. The message words it for separation; a caller searching
+    another threshold words it from the flag."""
+
+    def __init__(self, crossed_everywhere: bool):
+        self.crossed_everywhere = crossed_everywhere
+        super().__init__("no separation threshold found: "
+                         + ("the train separates at every speed tried" if crossed_everywhere
+                            else "the train never separates at the speeds tried"))
 
 
 @dataclass(frozen=True)
@@ -33,7 +45,8 @@ def first_separation_speed(separates: Callable[[float], tuple[bool, float | None
                            start: float, *, rtol: float = 2e-3, factor: float = 1.25,
                            max_evaluations: int = 60) -> SpeedSearch:
     """Bracket and bisect the speed where ``separates(omega) -> (separated, angle)`` turns
-    True. Raises ValueError when no bracket is found within ``max_evaluations``."""
+    True. Raises :class:`NoThreshold` (a ValueError) when no bracket is found within
+    ``max_evaluations``."""
     evals: list[tuple[float, bool]] = []
 
     def check(w):
@@ -54,9 +67,7 @@ def first_separation_speed(separates: Callable[[float], tuple[bool, float | None
         if w < 1e-6 * start or w > 1e6 * start:
             break
     if lo is None or hi is None:
-        raise ValueError("no separation threshold found: "
-                         + ("the train separates at every speed tried" if lo is None else
-                            "the train never separates at the speeds tried"))
+        raise NoThreshold(crossed_everywhere=lo is None)
     while (hi - lo) > rtol * hi and len(evals) < max_evaluations:
         mid = math.sqrt(lo * hi)
         sep, angle = check(mid)

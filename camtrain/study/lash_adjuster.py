@@ -3,6 +3,8 @@
 (`camtrain dynamics-speed DECK --pump-up`). Plain data out (dicts), as `dynamics_speed`."""
 from __future__ import annotations
 
+from camtrain.study.speed_search import SpeedFinding, render_search
+
 
 def _deck_with_adjuster(deck_path: str, what: str):
     from camtrain import api
@@ -54,22 +56,29 @@ def render_leakdown(r: dict) -> str:
         f"{r['pressure_bar']:.4g} bar)"])
 
 
+#: The adjuster's pump-up: the valve held off its seat on the base circle; where: how far
+#: open [mm] at the bracket's upper end.
+PUMP_UP = SpeedFinding(
+    threshold="pump-up", subject="the adjuster", crosses="pumps up", who="lash adjuster",
+    units="speeds are camshaft rpm (a four-stroke engine turns at twice that)",
+    below="pump_up_free_speed", above="pump_up_speed", where="held_open_mm",
+    where_of=lambda metres: metres * 1e3,
+    found="lash adjuster holds the valve shut on the base circle up to {below:.1f} rpm "
+          "camshaft; pumps up at {above:.1f} rpm",
+    found_where=" (valve held {where:.3g} mm open)", tried="pumped up")
+
+
 def pump_up_speed(deck_path: str, *, rtol: float = 2e-3, start_rpm: float | None = None) -> dict:
     """The lowest camshaft speed at which DECK's adjuster pumps up (the valve held off its seat
     on the base circle), bracketed and bisected as the separation speed. Speeds in rpm."""
     from camtrain.assemble.dynamics import setup
-    from camtrain.assemble.lift_law import build_lift_law
-    from camtrain.assemble.mechanism import kinematics
     from camtrain.dynamics import march
     from camtrain.dynamics.hla import rigid_adjuster
     from camtrain.dynamics.hla.findings import adjuster_findings
-    from camtrain.dynamics.speed import first_separation_speed
-    from camtrain.lift import angle_grid
-    from camtrain.units import rad_s_to_rpm, rpm_to_rad_s
+    from camtrain.study.speed_search import search_speed, train_kinematics
 
     deck = _deck_with_adjuster(deck_path, "to search the pump-up speed")
-    curve = build_lift_law(deck.lift).evaluate(angle_grid(deck.solver.angle_points))
-    kin = kinematics(deck, curve)[0]
+    kin = train_kinematics(deck)
     height = deck.dynamics.lash_adjuster.checking_height
 
     def pumps(omega):
@@ -79,33 +88,11 @@ def pump_up_speed(deck_path: str, *, rtol: float = 2e-3, start_rpm: float | None
         found = adjuster_findings(resp, rigid, s.model, height)
         return found.pumped_up, found.held_open
 
-    start = rpm_to_rad_s(start_rpm) if start_rpm else deck.speed.omega
-    try:
-        search = first_separation_speed(pumps, start, rtol=rtol)
-    except ValueError as exc:
-        return {"deck": deck_path, "found": False, "message": str(exc).replace(
-            "separation threshold", "pump-up threshold").replace("separates", "pumps up")
-            .replace("never separates", "never pumps up")}
-    return {"deck": deck_path, "found": True, "speed_of": "camshaft",
-            "pump_up_free_speed": rad_s_to_rpm(search.omega),
-            "pump_up_speed": rad_s_to_rpm(search.upper),
-            "held_open_mm": None if search.angle is None else search.angle * 1e3,
-            "evaluations": [(rad_s_to_rpm(w), p) for w, p in search.evaluations], "rtol": rtol}
+    return search_speed(deck_path, deck, PUMP_UP, pumps, rtol=rtol, start_rpm=start_rpm)
 
 
 def render_pump_up(r: dict) -> str:
-    lines = [f"deck: {r['deck']}", "speeds are camshaft rpm (a four-stroke engine turns at "
-             "twice that)"]
-    if not r["found"]:
-        lines.append(f"lash adjuster: {r['message']}")
-        return "\n".join(lines)
-    lines.append(f"lash adjuster holds the valve shut on the base circle up to "
-                 f"{r['pump_up_free_speed']:.1f} rpm camshaft; pumps up at "
-                 f"{r['pump_up_speed']:.1f} rpm (valve held {r['held_open_mm']:.3g} mm open); "
-                 f"bracket {100 * r['rtol']:g} %")
-    lines.append("camshaft speeds tried (rpm, pumped up): " + ", ".join(
-        f"{w:.0f} {'yes' if p else 'no'}" for w, p in r["evaluations"]))
-    return "\n".join(lines)
+    return render_search(r, PUMP_UP)
 
 
-__all__ = ["leakdown", "render_leakdown", "pump_up_speed", "render_pump_up"]
+__all__ = ["PUMP_UP", "leakdown", "render_leakdown", "pump_up_speed", "render_pump_up"]

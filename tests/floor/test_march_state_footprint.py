@@ -51,7 +51,7 @@ FOOTPRINTS: dict[str, tuple[str, frozenset[str], dict[str, str]]] = {
         "camtrain.dynamics.spin",
         frozenset({"wr", "spin"}),
         {
-            "camtrain.dynamics.records": "record fields: Train.roller (Spin), TrainState.wr",
+            "camtrain.dynamics.records": "the Spin record (beside Train), TrainState.wr",
             "camtrain.dynamics._kernel": "one guarded call per hook point (spin/in_train.py)",
             "camtrain.dynamics.integrators": "the record's construction (spin_record, "
                                              "spin_start)",

@@ -1,7 +1,8 @@
 """The roller's spin in the single train's Newmark march (:mod:`camtrain.dynamics._kernel`):
-the hook points the march calls, each once and guarded by ``Train.roller.on``: the spin's step
-over every accepted (sub)step (:func:`.step.spin_step`, at the end state's cam force) and
-:func:`sample_spin`, the spin's rows of the march's samples."""
+the hook points the march calls, each once and guarded by the ``Spin`` record's ``on`` (the
+record handed to the march beside ``Train``): the spin's step over every accepted (sub)step
+(:func:`.step.spin_step`, at the end state's cam force) and :func:`sample_spin`, the spin's
+rows of the march's samples."""
 from __future__ import annotations
 
 from numba import njit
