@@ -49,6 +49,19 @@ def band_values(kernel_row, t_H: dict, local: dict, scale, active, width: int,
     return value
 
 
+def coarse_solve(rhs: np.ndarray, below, below_matvec, lu, sweeps: int) -> np.ndarray:
+    """The coarse grid's correction for ``rhs``: on the coarsest grid its dense LU (``lu``,
+    LAPACK's factors), otherwise the next level's preconditioner ``below`` applied ``sweeps``
+    times, each on the residual the earlier ones leave (``below_matvec`` the coarse operator;
+    2 sweeps: a W-cycle, Venner & Lubrecht 2000 ch. 3)."""
+    if below is None:
+        return lapack.dgetrs(*lu, rhs)[0]     # sla.lu_solve without its wrappers' checks
+    d = below.apply(rhs)
+    for _ in range(sweeps - 1):
+        d += below.apply(rhs - below_matvec(d))
+    return d
+
+
 @lru_cache(maxsize=6)     # ~1.6 kB per point each: a few sizes only
 def _band_storage(m: int, n: int):
     """Where the band's values value[k, i] (row i, column i + d[k], d = -m..m) go in LAPACK

@@ -25,10 +25,9 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg as sla
-from scipy.linalg import lapack
 from scipy.sparse.linalg import LinearOperator, gmres
 
-from .ehl_band import BAND, BandSolve, band_values
+from .ehl_band import BAND, BandSolve, band_values, coarse_solve
 from .ehl_elastic import ElasticKernel
 from .ehl_newton import DiscreteEHL
 
@@ -116,12 +115,9 @@ class Multilevel:
         Xf, Xc = f.problem.X[1:-1], c.X[1:-1]
         g = np.where(f.active, 0.0, r[:-1] / f.s[1:-1])      # back to Reynolds units
         rhs = np.concatenate((np.interp(Xc, Xf, g) * self.scale_c, [r[-1]]))
-        if self.below is not None:
-            d = self.below.apply(rhs)
-            for _ in range(COARSE_SWEEPS - 1):
-                d += self.below.apply(rhs - self.below.fine.matvec(d))
-        else:
-            d = lapack.dgetrs(*self.lu, rhs)[0]     # sla.lu_solve without its wrappers' checks
+        below = self.below
+        d = coarse_solve(rhs, below, below and below.fine.matvec, self.lu,
+                         COARSE_SWEEPS)
         z = np.interp(Xf, c.X, np.concatenate(([0.0], d[:-1], [0.0])))
         z = np.where(f.active, r[:-1], z)
         return np.concatenate((z, [d[-1]]))

@@ -36,7 +36,7 @@ import numpy as np
 import scipy.linalg as sla
 from scipy.linalg import lapack, toeplitz
 
-from .ehl_band import BAND, BandSolve, band_values
+from .ehl_band import BAND, BandSolve, band_values, coarse_solve
 from .ehl_elastic import ElasticKernel, influence_row
 
 #: the coarse grid of the preconditioner has (n + COARSENING - 1) // COARSENING nodes
@@ -172,12 +172,9 @@ class TwoLevel:
         if op.active is not None:
             g = np.where(op.active, 0.0, g)
         rhs = np.concatenate((np.interp(c.X[1:-1], X[1:-1], g) * self.scale_c, [r[-1]]))
-        if self.below is not None:
-            d = self.below.apply(rhs)
-            for _ in range(COARSE_SWEEPS - 1):
-                d += self.below.apply(rhs - self.below.op.matvec(d))
-        else:
-            d = lapack.dgetrs(*self.lu, rhs)[0]     # sla.lu_solve without its wrappers' checks
+        below = self.below
+        d = coarse_solve(rhs, below, below and below.op.matvec, self.lu,
+                         COARSE_SWEEPS)
         z = np.interp(X[1:-1], c.X, np.concatenate(([0.0], d[:-1], [0.0])))
         return np.concatenate((z, [d[-1]]))
 
