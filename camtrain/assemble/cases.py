@@ -16,7 +16,6 @@ import dataclasses
 import operator
 from dataclasses import dataclass, field
 
-
 #: scalars read from every case's model: name -> (section, field) of the validated model (SI
 #: units; None where the deck lacks the section, and then no planned effect reads it)
 SCALARS = {
