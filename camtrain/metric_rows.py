@@ -8,6 +8,7 @@ import (numpy only inside the functions that need it), so effect modules import 
 """
 from __future__ import annotations
 
+from functools import cache
 from typing import NamedTuple
 
 
@@ -30,9 +31,18 @@ def at(values, index):
         return values[index]
     if not getattr(index, "ndim", 0):
         return values[..., index]
+    return values[_rows(values.shape[0]), index]
+
+
+@cache
+def _rows(n: int):
+    """0 .. n-1, the row index of a batch of ``n`` cases (formed once per batch size: a batch's
+    metrics index their rows a few dozen times)."""
     import numpy as np
 
-    return values[np.arange(values.shape[0]), index]
+    rows = np.arange(n)
+    rows.flags.writeable = False
+    return rows
 
 
 def count(mask):

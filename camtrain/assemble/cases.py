@@ -13,32 +13,27 @@ single run would report differently (:meth:`Cases.set_aside`).
 from __future__ import annotations
 
 import dataclasses
+import operator
 from dataclasses import dataclass, field
 
-
-def _field(section: str, name: str):
-    """Getter of ``model.<section>.<name>``; None when the deck has no such section."""
-    def get(model):
-        part = getattr(model, section)
-        return None if part is None else getattr(part, name)
-    return get
-
-
-#: scalars read from every case's model: name -> getter of the validated model (SI units; None
-#: where the deck lacks the section, and then no planned effect reads it)
+#: scalars read from every case's model: name -> (section, field) of the validated model (SI
+#: units; None where the deck lacks the section, and then no planned effect reads it)
 SCALARS = {
-    "omega": _field("speed", "omega"),
-    "base_radius": _field("cam", "base_radius"),
-    "width": _field("cam", "width"),
-    "rate": _field("spring", "rate"),
-    "preload_compression": _field("spring", "preload_compression"),
-    "valve_mass": _field("masses", "valve_side"),
-    "viscosity": _field("lubricant", "viscosity"),
-    "pressure_viscosity": _field("lubricant", "pressure_viscosity"),
-    "roughness": _field("lubricant", "roughness"),
-    "boundary_friction": _field("tribology", "boundary_friction"),
-    "follower_radius": _field("mechanism", "follower_radius"),
+    "omega": ("speed", "omega"),
+    "base_radius": ("cam", "base_radius"),
+    "width": ("cam", "width"),
+    "rate": ("spring", "rate"),
+    "preload_compression": ("spring", "preload_compression"),
+    "valve_mass": ("masses", "valve_side"),
+    "viscosity": ("lubricant", "viscosity"),
+    "pressure_viscosity": ("lubricant", "pressure_viscosity"),
+    "roughness": ("lubricant", "roughness"),
+    "boundary_friction": ("tribology", "boundary_friction"),
+    "follower_radius": ("mechanism", "follower_radius"),
 }
+
+#: the materials' fields the reduced modulus is formed of
+_MATERIALS = ("cam_modulus", "cam_poisson", "follower_modulus", "follower_poisson")
 
 #: swept deck fields that only move the scalars above (deck paths); a sweep of anything else
 #: assembles each case on its own
@@ -84,20 +79,44 @@ class Cases:
 def columns(models: list) -> dict[str, object]:
     """Each scalar of the chain over the cases: a plain float when all cases share it, else a
     (cases, 1) column."""
-    import numpy as np
+    out = {name: _column(_values(models, section, attr))
+           for name, (section, attr) in SCALARS.items()}
+    out["reduced_modulus"] = _column(_moduli(models))
+    return out
 
+
+def _values(models: list, section: str, attr: str) -> list:
+    """``model.<section>.<attr>`` of every case (None where the deck has no such section). A
+    case differs from the datum only in swept scalars, so all cases have the same sections."""
+    if any(getattr(m, section) is None for m in models):
+        return [None if getattr(m, section) is None else getattr(getattr(m, section), attr)
+                for m in models]
+    return list(map(operator.attrgetter(f"{section}.{attr}"), models))
+
+
+def _moduli(models: list) -> list:
+    """The reduced modulus of every case, formed once per distinct set of materials."""
     from camtrain.contact.model import modulus
 
-    getters = dict(SCALARS, reduced_modulus=modulus)
-    out: dict[str, object] = {}
-    for name, get in getters.items():
-        values = [get(m) for m in models]
-        first = values[0]
-        if all(v == first for v in values):
-            out[name] = first
-        else:
-            out[name] = np.array(values, dtype=float)[:, None]
+    formed: dict[tuple, float] = {}
+    out = []
+    for m in models:
+        key = tuple(getattr(m.materials, a) for a in _MATERIALS)
+        value = formed.get(key)
+        if value is None:
+            value = formed[key] = modulus(m)
+        out.append(value)
     return out
+
+
+def _column(values: list):
+    """The first value when every case has it, else the values as a (cases, 1) column."""
+    first = values[0]
+    if values.count(first) == len(values):   # (== of each value, in C)
+        return first
+    import numpy as np
+
+    return np.array(values, dtype=float)[:, None]
 
 
 def contact_of(datum, scal: dict):

@@ -273,15 +273,13 @@ def cases_refused(deck, swept: tuple[str, ...]) -> str:
 def run_cases(deck, inputs, cases):
     """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
     pair's steady film of every case by its contact model, and the metrics."""
-    import numpy as np
-
     from camtrain.components import MAIN
     from camtrain.contact.products import ContactFilm
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
 
     kin = inputs[TrainKinematics].main
-    film = cases.contact.film(kin, np.maximum(inputs.get(ContactLoad).load, 0.0))
+    film = cases.contact.film(kin, inputs.get(ContactLoad).carried)
     cases.add_metrics(film_metrics(kin.theta, film.min, kin.nose))
     return ContactFilm(((MAIN, film),), with_load=True)
 

@@ -87,14 +87,12 @@ def cases_refused(deck, swept: tuple[str, ...]) -> str:
 def run_cases(deck, inputs, cases):
     """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
     pair's friction of every case by its contact model, and the metrics."""
-    import numpy as np
-
     from camtrain.components import MAIN
     from camtrain.contact.products import ContactFilm, ContactFriction, ContactHertz
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
 
-    load = np.maximum(inputs[ContactLoad].load, 0.0)
+    load = inputs[ContactLoad].carried
     contact = cases.contact
     field = contact.friction(inputs[TrainKinematics].main, load, inputs[ContactHertz].main,
                              inputs[ContactFilm].main)

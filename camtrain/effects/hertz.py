@@ -72,14 +72,12 @@ def hertz_metrics(theta, pmax, nose: int, tag: str = "") -> list:
 def run_cases(deck, inputs, cases):
     """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
     pair's Hertz field of every case by its contact model, and the metrics."""
-    import numpy as np
-
     from camtrain.components import MAIN
     from camtrain.contact.products import ContactHertz
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
 
     kin = inputs[TrainKinematics].main
-    hz = cases.contact.hertz(kin, np.maximum(inputs[ContactLoad].load, 0.0))
+    hz = cases.contact.hertz(kin, inputs[ContactLoad].carried)
     cases.add_metrics(hertz_metrics(kin.theta, hz.pmax, kin.nose))
     return ContactHertz(((MAIN, hz),))

@@ -253,6 +253,18 @@ def _face_shape(mech) -> str:
     return "cylindrical" if mech.follower == "roller" else mech.follower_shape
 
 
+@by_identity
+def _lift_metrics(deck) -> tuple:
+    """The lift law's metrics of a run (:func:`lift_columns`), as the CaseMetric every case of
+    a batch shares: formed once per deck model, not once per batch."""
+    from camtrain.result import Result
+
+    lift = Result()
+    lift_columns(deck, lift)
+    return tuple(CaseMetric(name, m.value, m.unit, m.description, m.angle)
+                 for name, m in lift.metrics.items())
+
+
 def run_cases(deck, inputs, cases):
     """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the
     lift law's metrics, and the kinematics of every case by the builder a single run's
@@ -263,13 +275,7 @@ def run_cases(deck, inputs, cases):
     from camtrain.mechanisms.base import TrainKinematics
     from camtrain.mechanisms.checks import cases_pass
     from camtrain.mechanisms.translating import translating_kinematics
-    from camtrain.metric_rows import CaseMetric
-    from camtrain.result import Result
-
-    lift = Result()
-    lift_columns(deck, lift)
-    cases.add_metrics(CaseMetric(name, m.value, m.unit, m.description, m.angle)
-                      for name, m in lift.metrics.items())
+    cases.add_metrics(_lift_metrics(deck))
     valve = lift_curve(deck.lift, deck.solver.angle_points)
     mech, scal = deck.mechanism, cases.scalars
     flat = mech.type == "flat"

@@ -230,7 +230,7 @@ def run_cases(deck, inputs, cases):
 
     kin = inputs[TrainKinematics].main
     scal = cases.scalars
-    kw = dict(load_inputs(deck), rate=scal["rate"], valve_mass=scal["valve_mass"],
+    kw = dict(_load_arguments(deck)[0], rate=scal["rate"], valve_mass=scal["valve_mass"],
               preload_compression=scal["preload_compression"])
     spring = {k: v for k, v in kw.items() if k not in ("clearance", "base_load")}
     mu_b = scal["boundary_friction"]

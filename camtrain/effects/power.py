@@ -95,15 +95,13 @@ def run_pair(kin, load, force, res, component: str | None = None):
 def run_cases(deck, inputs, cases):
     """:func:`run` over a leading case axis (:class:`camtrain.assemble.cases.Cases`): the main
     pair's torques and friction power of every case, and the metrics."""
-    import numpy as np
-
     from camtrain.contact.products import CamTorque, ContactFriction
     from camtrain.loads.product import ContactLoad
     from camtrain.mechanisms.base import TrainKinematics
 
     kin = inputs[TrainKinematics].main
     tf, total, power, dissipation = pair_torques(
-        kin, np.maximum(inputs[ContactLoad].load, 0.0), inputs[ContactFriction].main.force)
+        kin, inputs[ContactLoad].carried, inputs[ContactFriction].main.force)
     metrics = power_metrics(kin.theta, tf, power, dissipation, total)
     cases.add_metrics(metrics)
     return CamTorque(total, tf, power, total_power=metrics[1].value)

@@ -48,6 +48,12 @@ def iterate_load(load_of_mu: Callable[[np.ndarray], np.ndarray],
 
     Where W <= 0 (no contact or loss of contact) the previous mu is kept.
     """
+    if friction_of_load is None:
+        # one pass at mu0, as iterate_cases makes it, without forming its per-case arrays
+        load = np.asarray(load_of_mu(np.asarray(mu0, dtype=float)), dtype=float)
+        mu = np.empty_like(load)
+        mu[...] = mu0
+        return LoadSolution(load, None, mu, 1, 0.0, tolerance)
     cases = iterate_cases(load_of_mu, friction_of_load, mu0=mu0, tolerance=tolerance,
                           max_iterations=max_iterations, depends_on_mu=depends_on_mu)
     if not cases.converged:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -27,6 +28,14 @@ class ContactLoad:
     friction: np.ndarray | None = None
     mu: np.ndarray | None = None
     iterations: int = 1
+
+    @cached_property
+    def carried(self) -> np.ndarray:
+        """The main pair's load the contact carries, max(W, 0) [N] (0 where a rigid train
+        loses contact): formed once for every effect of a sweep batch that reads it."""
+        carried = np.maximum(self.load, 0.0)
+        carried.flags.writeable = False
+        return carried
 
     def pairs(self) -> tuple[tuple[str, np.ndarray], ...]:
         """(component, load) of each loaded pair, main first."""
