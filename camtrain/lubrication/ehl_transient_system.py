@@ -68,7 +68,9 @@ class StepSystem:
 
     X: np.ndarray
     kernel: ElasticKernel
-    influence: np.ndarray     #: dense dV/dP of this grid
+    #: dense dV/dP of this grid, or a callable building it on the first dense Jacobian (the
+    #: matrix-free directions never form it: O(n^2) numbers)
+    influence: object
     oil: ScaledOil
     lam: float
     speed: float              #: |u_m| [m/s]
@@ -161,6 +163,8 @@ class StepSystem:
         sc = self._scale(f)
         local, t_H = self._bands(s, f)
         pressed = f.dP
+        if callable(self.influence):                     # built once, on first use
+            self.influence = self.influence()
         Kd = self.influence * pressed[None, :]          # dH_k/ds_j
         J = np.zeros((n - 1, n - 1))
         D = J[:-1, :-1]
