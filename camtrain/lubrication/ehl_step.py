@@ -31,6 +31,9 @@ GRID_SLACK = 1.25
 #: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
 #: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
 SMOOTHING = 2.0
+#: a film-fraction node whose row the smoothed pressure leads is updated in its pressure
+#: (:meth:`.StepSystem.updated`; False: every node in s)
+PRESSURE_LED = True
 #: a steady restart uses at least this share of the cycle's largest entrainment
 REVERSAL_FLOOR = 0.05
 #: a Newton iteration whose last STALL_WINDOW fresh directions gave no descent (the full step
@@ -210,6 +213,7 @@ class _Marcher:
         A_lag, relax = (f.A if A0 is None else A0), _LagRelaxation()
         self.reuse = True
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
+        self.ratio = sysm.poiseuille_over_transport(f)[1:-1] if PRESSURE_LED else None
         F, f = sysm.residual(s, H0, A_lag)
         norm = np.abs(F).max()
         if norm < tol and float(np.abs(f.A - A_lag).max()) < tol:
@@ -285,7 +289,8 @@ class _Marcher:
         t, full = 1.0, None
         while True:
             s_new = s.copy()
-            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(s[1:-1] + t * step[:-1], low))
+            moved = sysm.updated(s[1:-1], t * step[:-1], self.ratio)
+            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(moved, low))
             H0_new = H0 + t * step[-1]
             F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
             norm_new = np.abs(F_new).max()
