@@ -5,18 +5,16 @@ from __future__ import annotations
 
 import math
 import warnings
-from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
-from scipy.linalg import toeplitz
 
 from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
 
 from .asperity import asperity_pressure_coefficient, gt_functions
 from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _State
-from .ehl_elastic import ElasticKernel, influence_row
+from .ehl_elastic import UnitKernel
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
 from .ehl_oil import ScaledOil
 from .ehl_step_krylov import REUSE_ITERATIONS, krylov_direction
@@ -95,30 +93,10 @@ class _LagRelaxation:
         return self.w
 
 
-class _UnitKernel:
-    """The influence row, spectrum and dense matrix of unit spacing; a spacing dx scales them.
-    The dense matrix (n^2 numbers: 128 MB at 4,096 points) is built, and scaled for a step,
-    only when a dense Jacobian asks for it: the matrix-free march never does, and scaling it at
-    every step cost O(n^2) per step (measured: a third of the march's CPU at 4,096 points)."""
-
-    def __init__(self, n: int):
-        self.unit = ElasticKernel.of_grid(n, 1.0)
-
-    @cached_property
-    def dense1(self) -> np.ndarray:
-        return -toeplitz(influence_row(self.unit.n, 1.0)) / np.pi
-
-    def at(self, dx: float):
-        """(the kernel at spacing dx, a callable giving its dense influence on first use)."""
-        k = self.unit
-        return (ElasticKernel(k.n, dx, dx * k.row, dx * k.spectrum, k.length),
-                lambda: dx * self.dense1)
-
-
 class _Marcher:
     def __init__(self, contact: CycleContact, res: CycleResolution):
         self.c, self.res = contact, res
-        self.kernel = _UnitKernel(res.nodes)
+        self.kernel = UnitKernel(res.nodes)
         self.lu = None
         self.pre, self.pre_grid = None, None     # the kept matrix-free preconditioner
         self.reuse = True
