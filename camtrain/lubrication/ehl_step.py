@@ -99,6 +99,7 @@ class _Marcher:
         self.kernel = UnitKernel(res.nodes)
         self.lu = None
         self.pre, self.pre_grid = None, None     # the kept matrix-free preconditioner
+        self.ratio = None        # Poiseuille over transport per row, frozen for each step
         self.reuse = True
         self.factorisations = 0
         self.krylov_iterations = 0

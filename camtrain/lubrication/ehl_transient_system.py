@@ -104,8 +104,8 @@ class StepSystem:
         Goecmen outlet, 4e5 at 2,048)."""
         e_half = 0.5 * (f.eps[1:] + f.eps[:-1])
         K = np.zeros_like(f.eps)
-        transport = (self.speed / self.dx + self.c_t * self.a0) * f.rho[1:-1] * \
-            np.maximum(f.H[1:-1], 1e-300)
+        transport = (self.speed / self.dx + self.c_t * self.a0) * f.rho[1:-1] * f.H[1:-1]
+        transport = np.maximum(transport, 1e-300)
         K[1:-1] = (e_half[1:] + e_half[:-1]) / self.dx**2 / transport
         return K
 
