@@ -8,14 +8,13 @@ import warnings
 
 import numpy as np
 import scipy.linalg as sla
-from scipy.linalg import toeplitz
 
 from camtrain.formulas.film_line import moes_1992
 from camtrain.formulas.hertz import hertz_line_half_width, hertz_line_max_pressure
 
 from .asperity import asperity_pressure_coefficient, gt_functions
 from .ehl_cycle_records import CycleContact, CycleResolution, _content_on, _State
-from .ehl_elastic import ElasticKernel, influence_row
+from .ehl_elastic import UnitKernel
 from .ehl_line import EHLResolution, LineContact, NotConverged, solve_ehl_line
 from .ehl_oil import ScaledOil
 from .ehl_step_krylov import REUSE_ITERATIONS, krylov_direction
@@ -30,6 +29,9 @@ GRID_SLACK = 1.25
 #: the cavitation kink's smoothing delta over sqrt(tolerance) (:mod:`.ehl_transient_system`;
 #: measured on the Göçmen cam: 0.2 needs three times the steady restarts of 2)
 SMOOTHING = 2.0
+#: a film-fraction node whose row the smoothed pressure leads is updated in its pressure
+#: (:meth:`.StepSystem.updated`; False: every node in s)
+PRESSURE_LED = True
 #: a steady restart uses at least this share of the cycle's largest entrainment
 REVERSAL_FLOOR = 0.05
 #: a Newton iteration whose last STALL_WINDOW fresh directions gave no descent (the full step
@@ -91,25 +93,13 @@ class _LagRelaxation:
         return self.w
 
 
-class _UnitKernel:
-    """The influence row, spectrum and dense matrix of unit spacing; a spacing dx scales them."""
-
-    def __init__(self, n: int):
-        self.unit = ElasticKernel.of_grid(n, 1.0)
-        self.dense1 = -toeplitz(influence_row(n, 1.0)) / np.pi
-
-    def at(self, dx: float):
-        k = self.unit
-        return (ElasticKernel(k.n, dx, dx * k.row, dx * k.spectrum, k.length),
-                dx * self.dense1)
-
-
 class _Marcher:
     def __init__(self, contact: CycleContact, res: CycleResolution):
         self.c, self.res = contact, res
-        self.kernel = _UnitKernel(res.nodes)
+        self.kernel = UnitKernel(res.nodes)
         self.lu = None
         self.pre, self.pre_grid = None, None     # the kept matrix-free preconditioner
+        self.ratio = None        # Poiseuille over transport per row, frozen for each step
         self.reuse = True
         self.factorisations = 0
         self.krylov_iterations = 0
@@ -202,6 +192,7 @@ class _Marcher:
         A_lag, relax = (f.A if A0 is None else A0), _LagRelaxation()
         self.reuse = True
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
+        self.ratio = sysm.poiseuille_over_transport(f)[1:-1] if PRESSURE_LED else None
         F, f = sysm.residual(s, H0, A_lag)
         norm = np.abs(F).max()
         if norm < tol and float(np.abs(f.A - A_lag).max()) < tol:
@@ -277,7 +268,8 @@ class _Marcher:
         t, full = 1.0, None
         while True:
             s_new = s.copy()
-            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(s[1:-1] + t * step[:-1], low))
+            moved = sysm.updated(s[1:-1], t * step[:-1], self.ratio)
+            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(moved, low))
             H0_new = H0 + t * step[-1]
             F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
             norm_new = np.abs(F_new).max()

@@ -255,3 +255,44 @@ def test_kink_stop_changes_the_iterations_not_the_films(monkeypatch):
         a, b = getattr(stopped, name), getattr(crossing, name)
         assert np.abs(a / b - 1.0).max() < 1e-5, name
     assert stopped.iterations.sum() < crossing.iterations.sum()
+
+
+def test_pressure_led_update_moves_film_fraction_nodes_along_the_linear_pressure():
+    """Where the smoothed pressure leads a film-fraction node's row (K dP/ds > dtheta/ds), the
+    update lands on the s whose smoothed pressure is the linear model's P + dP/ds ds; elsewhere,
+    and where that pressure is below the law's floor -delta/2, s + ds."""
+    from camtrain.lubrication.ehl_transient_system import StepSystem
+
+    X = np.linspace(-1.0, 1.0, 6)
+    sysm = StepSystem(X, None, None, None, 1.0, 1.0, 0.0, 1.0, np.zeros(6), smoothing=2e-3)
+    s = np.array([-0.004, -0.004, -0.004, 0.3, -0.004, -0.5])
+    ds = np.array([-0.001, -0.001, -0.5, -0.1, -0.001, 0.1])
+    K = np.array([1e5, 0.1, 1e5, 1e5, 1e5, 1e7])
+    new = sysm.updated(s, ds, K)
+    P, _, dP, _ = sysm.split(s)
+    P_new = sysm.split(new)[0]
+    led = [0, 4, 5]
+    assert np.allclose(P_new[led], (P + dP * ds)[led], rtol=1e-12, atol=0.0)
+    assert new[0] < s[0] + ds[0]          # farther than the step in s: P ~ 1/|s| there
+    plain = [1, 2, 3]                     # transport leads; below the floor; pressure branch
+    assert new[plain].tolist() == (s + ds)[plain].tolist()
+
+
+def test_pressure_led_update_changes_the_iterations_not_the_films(monkeypatch):
+    """The eight steps of the kink stop's test: updated in s everywhere, the same films to the
+    Newton tolerance (1e-5 relative) and more Newton iterations."""
+    from dataclasses import replace
+
+    from camtrain.lubrication import ehl_step
+
+    full = goecmen_cycle(720)
+    part = replace(full, **{k: getattr(full, k)[282:290] for k in ("t", "w", "R", "u", "u_s")})
+    res = CycleResolution(nodes=512, linear_solver="krylov")
+    led = march_ehl_cycle(part, res)
+    monkeypatch.setattr(ehl_step, "PRESSURE_LED", False)
+    plain = march_ehl_cycle(part, res)
+    assert led.split_steps == plain.split_steps
+    for name in ("h_central", "h_min", "p_max"):
+        a, b = getattr(led, name), getattr(plain, name)
+        assert np.abs(a / b - 1.0).max() < 1e-5, name
+    assert led.iterations.sum() < plain.iterations.sum()
