@@ -16,10 +16,16 @@ from camtrain.errors import CamtrainError
 @click.argument("deck", type=str)
 @click.option("--knob", "knobs", multiple=True, metavar="NAME",
               help="Resolution knob to study (repeatable): angle_points, friction_tolerance, "
-                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model; dynamics: "
-                   "steps_per_degree, spring_elements, dynamics_rtol; engine decks: "
-                   "crank_step, period_tolerance, step_tolerance, pressure_interpolation, "
-                   "mobility. Default: every knob that applies to the deck.")
+                   "table_smoothing, shaft_stations, bearing_mesh, bearing_model, "
+                   "orbit_points; transient film: film_angle_step, film_nodes, "
+                   "film_zone_width, film_tolerance; elastic film: ehl_nodes, ehl_inlet, "
+                   "ehl_angle_step, ehl_tolerance; dynamics: steps_per_degree, "
+                   "coupling_iterations, spring_elements, dynamics_rtol, adjuster_cycles; "
+                   "roller: roller_substeps, roller_table_points, roller_tolerance; engine "
+                   "decks: crank_step, period_tolerance, step_tolerance, "
+                   "pressure_interpolation, mobility, piston_crank_step, ring_tolerance, "
+                   "pass_tolerance, gas_tolerance. Default: every knob that applies to the "
+                   "deck.")
 @click.option("--tolerance", default="0.1%", show_default=True,
               help="Relative tolerance for the cheapest setting, e.g. 0.1% or 1e-3.")
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,

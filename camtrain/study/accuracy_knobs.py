@@ -232,8 +232,8 @@ KNOBS: dict[str, Knob] = {k.name: k for k in (
          lambda v: v, _averaged_reynolds, "load-balance tolerance of the averaged Reynolds film"),
     # elastic film (docs/ehl.md)
     Knob("ehl_nodes", "solver.ehl_nodes", (128, 256, 512, 1024), lambda v: 1.0 / (v - 1),
-         _elastic_film, "grid points of the elastic film's domain (each step: a dense LU of "
-         "this size, ~n^2.5 in all)", integer=True),
+         _elastic_film, "grid points of the elastic film's domain (matrix-free Newton from 384 "
+         "points: cost ~ n log n, docs/ehl.md)", integer=True),
     Knob("ehl_inlet", "solver.ehl_inlet", (3.0, 4.5, 9.0, 18.0), lambda v: 1.0 / v,
          _elastic_film, "half length of the elastic film's domain in Hertz half widths (at "
          "fixed points a longer domain is a coarser grid)"),

@@ -130,8 +130,11 @@ def reversal(cavitation: str, steps: int = 60, solver: str = "auto"):
                                                        linear_solver=solver))
 
 
-@pytest.mark.slow   # make test-all (about a minute on two cores)
 def test_entrainment_reversal_keeps_a_film_and_closes_the_mass_balance():
+    """At 256 points (about a second of CPU): the film stays positive, the central film at
+    zero entrainment keeps more than 20 % of the start's (87 % measured), and every step's
+    mass balance closes within nodes x the row tolerance (largest 1.7e-6, median 2.5e-8
+    measured; the Reynolds condition's reads 6.7e-3, the test below)."""
     u, out = reversal("elrod_adams")
     assert np.all(out.h_min > 0.0)
     i = int(np.argmin(np.abs(u)))

@@ -170,6 +170,18 @@ def test_cli_bad_options_exit_2_naming_the_option(args, option):
     assert option in res.output and "Traceback" not in res.output
 
 
+def test_help_names_every_knob():
+    """`camtrain accuracy --help` lists every knob a deck can climb (the elastic film's
+    ehl_nodes, ehl_inlet, ehl_angle_step and ehl_tolerance among them)."""
+    from camtrain.study.accuracy_knobs import KNOBS
+
+    res = CliRunner().invoke(accuracy, ["--help"], terminal_width=10_000)
+    assert res.exit_code == 0
+    help_text = " ".join(res.output.split())
+    missing = [name for name in KNOBS if name not in help_text]
+    assert not missing, missing
+
+
 def test_table_says_met_or_not_met_never_ok_beside_a_large_error():
     """A rung that ran but misses the tolerance reads 'not met', one within it 'met'."""
     rung = {"status": "ok", "message": "", "wall_time": 0.01, "wall_spread": 0.05,
