@@ -95,6 +95,19 @@ def test_minimum_film_matches_pan_hamrock(M, L):
     assert s.h_min == pytest.approx(formula(pan_hamrock_1989_min, s.contact), rel=0.05)
 
 
+@pytest.mark.parametrize("M,L,nodes", [(*g, 1024) for g in GRID] + [(200, 5, 4096),
+                                                                    (200, 10, 4096)])
+def test_minimum_film_matches_dowson_higginson_under_its_barus_law(M, L, nodes):
+    """Dowson & Higginson's formula fits solutions with the exponential (Barus) viscosity, the
+    law Ball (1988, §4.1) states beside it; compared under that law (Dowson-Higginson density)
+    the whole acceptance grid, M = 200 included, lies within the 5 % (measured -2.1 % ... +2.7 %,
+    +3.2 % at (200, 10) on 16,384 nodes). Under Roelands (the test above, the default oil) the
+    corner (200, 5) reads -5.6 %, converged: docs/ehl.md."""
+    c = ml_contact(M, L, "dowson_higginson", viscosity="barus")
+    s = solve_ehl_line(c, EHLResolution(nodes=nodes))
+    assert s.h_min == pytest.approx(formula(dowson_higginson_1977, c), rel=0.05)
+
+
 @pytest.mark.parametrize("M,L", GRID)
 def test_compressibility_lowers_the_central_film(M, L):
     """Against Moes, 6-23 % lower with Dowson-Higginson density (the acceptance range of this
