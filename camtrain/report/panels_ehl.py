@@ -87,8 +87,8 @@ def elastic_films(ax, r, ctx):
         films = np.array([shown(r, n)[0] for n in made])
         films = np.where(np.isfinite(films) & (films > 0.0), films, np.nan)
         drawn = np.isfinite(films).all(axis=0)
-        ax.fill_between(ctx.theta, films.min(axis=0), films.max(axis=0), where=drawn, color=COLORS[color], alpha=0.2,
-                        lw=0.0, label=label)
+        ax.fill_between(ctx.theta, films.min(axis=0), films.max(axis=0), where=drawn,
+                        color=COLORS[color], alpha=0.3, lw=0.0, label=label)
     _mark_zero_entrainment(ax, ctx)
     ax.set_yscale("log")
     ax.set_ylabel(f"film thickness [{unit}]")
