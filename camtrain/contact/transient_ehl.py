@@ -24,14 +24,45 @@ from camtrain.errors import field_error
 HYDRODYNAMIC_SHARE, BOUNDARY_SHARE = 0.01, 0.90
 
 
+#: the closed-form films written beside the elastic film (docs/ehl.md "Outputs"), by the name
+#: of their function in :mod:`camtrain.formulas.film_line`: Dowson & Higginson (1977) and Pan &
+#: Hamrock (1989) minimum films, Pan & Hamrock (1989), Moes (1992, mean-speed groups) and
+#: Dowson & Toyoda (1979) central films
+FORMULA_FILMS = ("dowson_higginson_1977", "pan_hamrock_1989_min", "pan_hamrock_1989_cen",
+                 "moes_1992", "dowson_toyoda_1979")
+
+
 class EHLFilmSolution:
     """The record an ``ehl`` film field carries: the march grid [rad], the
-    :class:`camtrain.lubrication.ehl_transient.EHLCycle` on it, and the knobs it ran with."""
+    :class:`camtrain.lubrication.ehl_transient.EHLCycle` on it, the knobs it ran with, and the
+    closed-form films of :data:`FORMULA_FILMS` on the run's angles (:func:`formula_films`)."""
 
-    __slots__ = ("grid", "cycle", "resolution")
+    __slots__ = ("grid", "cycle", "resolution", "formulas")
 
-    def __init__(self, grid, cycle, resolution):
+    def __init__(self, grid, cycle, resolution, formulas=None):
         self.grid, self.cycle, self.resolution = grid, cycle, resolution
+        self.formulas = formulas if formulas is not None else {}
+
+
+def formula_films(contact, kin, load, R) -> dict[str, np.ndarray]:
+    """The films of :data:`FORMULA_FILMS` [m] per run angle, from the inputs the march takes:
+    load per unit width, the contact radius ``R``, the mean entrainment |u| = |u1 + u2|/2 (the
+    march's own, whatever ``tribology.entrainment`` says for the deck's formula film), the oil's
+    eta0 and alpha and the reduced modulus. NaN where the pair carries no load; 0 where the
+    entrainment is zero (each formula's h ~ |u|^0.7 or Moes' sqrt(2U) factor: no film without
+    entrainment, the steady value the squeeze film is compared with)."""
+    from camtrain.formulas import film_line
+
+    loaded = load > 0.0
+    lub = contact.lubricant
+    args = (load[loaded] / contact.width, R[loaded], np.abs(kin.entrainment)[loaded],
+            lub.viscosity, lub.pressure_viscosity, contact.reduced_modulus)
+    films = {}
+    for name in FORMULA_FILMS:
+        h = np.full(load.shape, np.nan)
+        h[loaded] = getattr(film_line, name)(*args)
+        films[name] = h
+    return films
 
 
 def _knob(contact, name):
@@ -117,7 +148,8 @@ def ehl_film(contact, kin, load=None) -> FilmField:
               f"{res.nodes} points, {res.march})")
     return FilmField(min=h_min, central=h_c, method=method, central_method=method,
                      steady=steady.min, regime=regime, friction=friction,
-                     solution=EHLFilmSolution(grid, cycle, res))
+                     solution=EHLFilmSolution(grid, cycle, res,
+                                              formula_films(contact, kin, load, R_run)))
 
 
 def regime_labels(share, loaded) -> np.ndarray:

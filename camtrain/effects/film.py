@@ -45,11 +45,25 @@ def model(deck, planned) -> str:
     return "steady"
 
 
+#: the closed-form films the elastic film writes beside its own (docs/ehl.md "Outputs"):
+#: column, function of camtrain.formulas.film_line (contact.transient_ehl.FORMULA_FILMS), what
+FORMULA_COLUMNS = (
+    ("film_dowson_higginson_min", "dowson_higginson_1977",
+     "Dowson-Higginson (1977) minimum film"),
+    ("film_pan_hamrock_min", "pan_hamrock_1989_min", "Pan-Hamrock (1989) minimum film"),
+    ("film_pan_hamrock_central", "pan_hamrock_1989_cen", "Pan-Hamrock (1989) central film"),
+    ("film_moes_central", "moes_1992", "Moes (1992) central film (mean-speed groups)"),
+    ("film_dowson_toyoda_central", "dowson_toyoda_1979", "Dowson-Toyoda (1979) central film"),
+)
+
+
 def makes(deck, planned) -> tuple[str, ...]:
     """The optional columns it writes (EffectSpec.optional_columns), from the model it runs: a
     transient film writes the steady film of the same angles beside its own, the averaged
-    Reynolds film also its own film before the steady-film floor."""
-    return {"squeeze": ("film_steady",), "ehl": ("film_steady",),
+    Reynolds film also its own film before the steady-film floor, the elastic film the
+    closed-form films of :data:`FORMULA_COLUMNS`."""
+    return {"squeeze": ("film_steady",),
+            "ehl": ("film_steady", *(c for c, _, _ in FORMULA_COLUMNS)),
             "averaged_reynolds": ("film_steady", "film_transient")}.get(model(deck, planned), ())
 
 
@@ -323,6 +337,10 @@ def elastic_outputs(film, kin, res, component: str | None = None) -> None:
             ("film_pressure_max_cycle", float(np.nanmax(cyc.p_max)), "Pa",
              "largest fluid pressure of the elastic film over the cycle" + tag)]
     res.add_metrics(rows, component)
+    res.add_columns([(column, sol.formulas[formula], "m",
+                      f"{what} of the march's load per width, radius, |mean entrainment|, oil "
+                      f"and modulus, steady (0: no entrainment; NaN: out of contact){tag}")
+                     for column, formula, what in FORMULA_COLUMNS], component)
     _film_map(res, cyc, grid, component, tag)
     if cyc.restarts:
         angles = ", ".join(f"{np.degrees(grid[k]):.1f}" for k in cyc.restarts[:5])

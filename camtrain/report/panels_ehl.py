@@ -1,12 +1,13 @@
 """Panels of the elastic film sheet (tribology.film_model = ehl; docs/ehl.md): the film map
-over cam angle and position, the elastic films beside the formula film, and the peak pressure
+over cam angle and position, the elastic films beside the formula films (the deck's own, and
+the closed-form minimum and central films as bands), and the peak pressure
 against the dry Hertz pressure. The plan declares them when its film effect ran the elastic
 film (EffectSpec.model_panels, from the model its step records)."""
 from __future__ import annotations
 
 import numpy as np
 
-from camtrain.report.panels import _finite, _fit_y, _mark_zero_entrainment, shown
+from camtrain.report.panels import _finite, _fit_y, _mark_zero_entrainment, optional, shown
 from camtrain.report.style import COLORS, angle_axis, finish_axes
 
 
@@ -58,9 +59,20 @@ def _row_on(across, x, values):
     return np.interp(across, xs[rank], vs[rank], left=np.nan, right=np.nan)
 
 
+#: the closed-form films the elastic film declares beside its own (EffectSpec.optional_columns
+#: of the film effect; docs/ehl.md "Outputs"), drawn as two bands: minimum and central films
+FORMULA_BANDS = (
+    (("film_dowson_higginson_min", "film_pan_hamrock_min"), "second",
+     "formula minimum films (Dowson-Higginson 1977, Pan-Hamrock 1989)"),
+    (("film_pan_hamrock_central", "film_moes_central", "film_dowson_toyoda_central"), "main",
+     "formula central films (Pan-Hamrock 1989, Moes 1992, Dowson-Toyoda 1979)"),
+)
+
+
 def elastic_films(ax, r, ctx):
-    """Central and minimum elastic film with the steady formula film."""
-    data = []
+    """Central and minimum elastic film with the steady formula film, and the spread of the
+    closed-form minimum and central films of the same inputs as bands (where the plan made
+    them). A formula's zero film at zero entrainment is left out of the log axis."""
     unit = ""
     for name, color, style, label in (
             ("film_central", COLORS["main"], "-", "elastic central film"),
@@ -68,7 +80,15 @@ def elastic_films(ax, r, ctx):
             ("film_steady", COLORS["third"], "--", "steady formula film")):
         y, unit = shown(r, name)
         ax.plot(ctx.theta, _finite(y), color=color, ls=style, label=label)
-        data.append(_finite(y))
+    for names, color, label in FORMULA_BANDS:
+        made = optional(r, *names)
+        if not made:
+            continue
+        films = np.array([shown(r, n)[0] for n in made])
+        films = np.where(np.isfinite(films) & (films > 0.0), films, np.nan)
+        drawn = np.isfinite(films).all(axis=0)
+        ax.fill_between(ctx.theta, films.min(axis=0), films.max(axis=0), where=drawn,
+                        color=COLORS[color], alpha=0.3, lw=0.0, label=label)
     _mark_zero_entrainment(ax, ctx)
     ax.set_yscale("log")
     ax.set_ylabel(f"film thickness [{unit}]")
@@ -91,6 +111,6 @@ def pressure_over_hertz(ax, r, ctx):
 
 EHL_PANELS = {
     "film_map": ("Elastic film along the contact over the cycle", film_map),
-    "elastic_films": ("Elastic films and the formula film", elastic_films),
+    "elastic_films": ("Elastic films and the formula films", elastic_films),
     "pressure_over_hertz": ("Peak film pressure against Hertz", pressure_over_hertz),
 }

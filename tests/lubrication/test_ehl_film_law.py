@@ -39,6 +39,32 @@ def test_films_friction_and_pressures_come_from_the_solution(elastic_run):
     assert r.metrics["film_period_error"].value < 0.05
 
 
+def test_the_formula_films_beside_the_elastic_film(elastic_run):
+    """The closed-form films the elastic film declares (film.FORMULA_COLUMNS) are written and
+    equal the formulas of the run's load per width, contact radius, |mean entrainment|, oil and
+    reduced modulus at a few angles; the step records them as columns it makes."""
+    from camtrain.contact.model import CamContact
+    from camtrain.effects.film import FORMULA_COLUMNS
+    from camtrain.formulas import film_line
+
+    r = elastic_run
+    step = next(s for s in r.plan.steps if s.effect == "film")
+    pair = CamContact.from_deck(api.load_deck_text(
+        GOCMEN.replace('film_model = "averaged_reynolds"', 'film_model = "ehl"'),
+        "gocmen_ehl.toml").model)
+    load = r["load"]
+    pick = np.flatnonzero(load > 0.0)[::97][:5]
+    assert pick.size == 5
+    args = (load[pick] / pair.width, r["radius_x"][pick], np.abs(r["entrainment"][pick]),
+            pair.lubricant.viscosity, pair.lubricant.pressure_viscosity, pair.reduced_modulus)
+    for column, formula, _ in FORMULA_COLUMNS:
+        assert column in step.makes and r.columns[column].unit == "m"
+        expected = getattr(film_line, formula)(*args)
+        assert np.all(expected > 0.0)
+        np.testing.assert_allclose(r[column][pick], expected, rtol=1e-12, atol=0.0)
+        assert np.all(np.isnan(r[column][load <= 0.0]))
+
+
 def test_the_film_map_is_a_table_of_its_own(elastic_run):
     r = elastic_run
     assert "film_map_point" in r.axes
