@@ -264,12 +264,13 @@ class _Marcher:
             return self._damped_trials(sysm, s, H0, step, norm, backtrack, A_lag)
 
     def _damped_trials(self, sysm, s, H0, step, norm, backtrack, A_lag):
-        low = 0.0 if sysm.cavitation == "reynolds" else -1.0
+        low = {"reynolds": 0.0, "half_sommerfeld": -np.inf}.get(sysm.cavitation, -1.0)
+        kink = sysm.cavitation == "elrod_adams"
         t, full = 1.0, None
         while True:
             s_new = s.copy()
-            moved = sysm.updated(s[1:-1], t * step[:-1], self.ratio)
-            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(moved, low))
+            moved = np.maximum(sysm.updated(s[1:-1], t * step[:-1], self.ratio), low)
+            s_new[1:-1] = _stopped_at_kink(s[1:-1], moved) if kink else moved
             H0_new = H0 + t * step[-1]
             F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
             norm_new = np.abs(F_new).max()

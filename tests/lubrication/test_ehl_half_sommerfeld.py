@@ -93,3 +93,30 @@ def test_cli_ehl_half_sommerfeld_and_a_bad_value():
     assert bad.exit_code == 2 and "--cavitation" in bad.output and "sommerfeld" in bad.output
     with pytest.raises(ValueError, match="cavitation 'sommerfeld'"):
         EHLResolution(cavitation="sommerfeld")
+
+
+def test_cycle_march_half_sommerfeld_keeps_negative_pressures_out_of_the_load():
+    """The entrainment reversal of the march's tests with ``half_sommerfeld``: the film stays
+    positive, the recorded pressures are the kept ones (>= 0), and the balance of the kept
+    film does not close (measured 6.7e-3, as the Reynolds condition's; Elrod-Adams 1.7e-6)."""
+    from .test_ehl_transient import reversal
+
+    u, out = reversal("half_sommerfeld")
+    assert np.all(out.h_min > 0.0) and np.all(out.p_max > 0.0)
+    assert np.nanmin(out.map_p) >= 0.0
+    assert np.nanmax(out.mass_error) > 1e-3
+
+
+def test_deck_rejects_a_bad_cavitation_with_exit_2(tmp_path):
+    from camtrain.cli import main
+    from tests.conftest import DECKS
+
+    text = (DECKS / "gocmen_table31.toml").read_text()
+    text = text.replace('film_model = "averaged_reynolds"',
+                        'film_model = "ehl"\nehl_cavitation = "sommerfeld"')
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text)
+    res = CliRunner().invoke(main, ["check", str(bad)])
+    assert res.exit_code == 2, res.output
+    assert "tribology.ehl_cavitation" in res.output and "sommerfeld" in res.output
+    assert "half_sommerfeld" in res.output and "Traceback" not in res.output

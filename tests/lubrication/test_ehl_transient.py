@@ -142,7 +142,7 @@ def test_entrainment_reversal_keeps_a_film_and_closes_the_mass_balance():
     assert np.nanmax(out.mass_error) < 256 * 1e-6       # nodes x the row tolerance
 
 
-@pytest.mark.parametrize("cavitation", ["elrod_adams", "reynolds"])
+@pytest.mark.parametrize("cavitation", ["elrod_adams", "reynolds", "half_sommerfeld"])
 def test_matrix_free_march_gives_the_dense_march(cavitation):
     """The reversal marched with matrix-free Newton directions (GMRES) and with the dense LU:
     both meet the same tolerance (1e-6 on the scaled rows) on the same equations; the films
