@@ -299,3 +299,31 @@ def test_pressure_led_update_changes_the_iterations_not_the_films(monkeypatch):
         a, b = getattr(led, name), getattr(plain, name)
         assert np.abs(a / b - 1.0).max() < 1e-5, name
     assert led.iterations.sum() < plain.iterations.sum()
+
+
+def test_a_guess_without_a_film_is_lifted_and_the_step_converges():
+    """A step's guess whose film dips below zero (the previous deflection on a new grid) froze
+    a row scale of ~1e298 there: the residual overflowed ('overflow encountered in dot') and
+    Newton could not move. The guess's H0 is raised until its minimum film is half its
+    central one; the step then converges without a floating-point warning."""
+    import warnings
+
+    from camtrain.lubrication.ehl_step import _lifted_approach, _Marcher
+
+    c = steady_contact(2)
+    m = _Marcher(c, CycleResolution(nodes=128, linear_solver="krylov"))
+    sysm, *_ = m.system(float(c.w[0]), float(c.R[0]), float(c.u[0]), 1.0, 1.0, None,
+                        steady=True)
+    s = np.sqrt(np.maximum(1.0 - sysm.X**2, 0.0))
+    zero = np.zeros_like(s)
+    H0 = -1.0                                     # the gap closes over the Hertz zone
+    f = sysm.fields(s, H0, zero)
+    assert f.H.min() < 0.0
+    lifted = sysm.fields(s, _lifted_approach(sysm, f, H0), zero)
+    central = np.interp(0.0, sysm.X, lifted.H)
+    assert lifted.H.min() == pytest.approx(max(0.5 * central, -f.H.min() * 0.5), rel=1e-9)
+    assert np.all(np.isfinite(sysm.row_scale(lifted))) and sysm.row_scale(lifted).max() < 1e6
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        *_, ok = m.newton(sysm, s, H0, stall=False)
+    assert ok
