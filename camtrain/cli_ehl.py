@@ -30,6 +30,11 @@ POSITIVE = click.FloatRange(min=0.0, min_open=True)
               show_default=True)
 @click.option("--density", type=click.Choice(["dowson_higginson", "incompressible"]),
               default="dowson_higginson", show_default=True)
+@click.option("--cavitation", type=click.Choice(["reynolds", "half_sommerfeld"]),
+              default="reynolds", show_default=True,
+              help="Exit condition: reynolds (P = dP/dx = 0 at the film's rupture) or "
+                   "half_sommerfeld (full-film pressure, its negative part dropped: a bound "
+                   "for comparison with the older literature, docs/ehl.md).")
 @click.option("--eyring", type=POSITIVE, default=None,
               help="Eyring stress [MPa]: friction by the Eyring law (default Newtonian).")
 @click.option("--nodes", type=click.IntRange(64, 20000), default=1024, show_default=True,
@@ -39,7 +44,7 @@ POSITIVE = click.FloatRange(min=0.0, min_open=True)
 @click.option("--out", "out", type=click.Path(file_okay=False), default=None,
               help="Directory for ehl.csv and ehl.png.")
 def ehl(load, radius, speed, slide_roll, modulus, poisson, eta0, alpha, viscosity, density,
-        eyring, nodes, inlet, out) -> None:
+        cavitation, eyring, nodes, inlet, out) -> None:
     """Solve a steady elastohydrodynamic line contact and print its key numbers."""
     from pathlib import Path
 
@@ -59,7 +64,8 @@ def ehl(load, radius, speed, slide_roll, modulus, poisson, eta0, alpha, viscosit
     oil = Oil(eta0, alpha * 1e-9, viscosity, density)
     contact = LineContact(load * 1e3, radius * 1e-3, E_r, u1, u2, oil)
     try:
-        solution = solve_ehl_line(contact, EHLResolution(nodes=nodes, inlet=inlet))
+        solution = solve_ehl_line(contact, EHLResolution(nodes=nodes, inlet=inlet,
+                                                             cavitation=cavitation))
     except NotConverged as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(4)

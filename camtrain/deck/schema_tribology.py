@@ -266,9 +266,12 @@ class Tribology:
         "cam angle; friction from the same solution), ehl (transient elastohydrodynamic line "
         "contact with mass-conserving cavitation, marched in time; friction from the same "
         "solution; docs/ehl.md); see docs/transient_film.md", default="steady")
-    ehl_cavitation: Literal["elrod_adams", "reynolds"] = option(
-        "Cavitation of the elastic film: elrod_adams (mass-conserving, Elrod & Adams 1974) or "
-        "reynolds (Reynolds exit condition, not mass-conserving)", default="elrod_adams",
+    ehl_cavitation: Literal["elrod_adams", "reynolds", "half_sommerfeld"] = option(
+        "Cavitation of the elastic film: elrod_adams (mass-conserving, Elrod & Adams 1974), "
+        "reynolds (Reynolds exit condition, not mass-conserving) or half_sommerfeld (full-film "
+        "pressure with its negative part dropped from the load, deflection and friction; a "
+        "bound for comparison with the older literature, neither mass-conserving nor faithful "
+        "at the outlet)", default="elrod_adams",
         applies="film_model = ehl")
     ehl_viscosity: Literal["roelands", "barus"] = option(
         "Pressure-viscosity law inside the elastic film: roelands (Roelands 1966, z matched to "

@@ -11,6 +11,8 @@ tau_0 asinh(eta gamma_dot / tau_0) (``eyring``; Johnson & Tevaarwerk 1977, Proc.
 with the Eyring stress tau_0 [Pa]. The integral runs over the full film, from the inlet to the
 cavitation point (the first node after the pressure maximum where p returns to 0): in the
 cavitated outlet the film is ruptured into streamers and carries no shear in this model.
+With the ``half_sommerfeld`` exit condition the pressure here is the solution's ``p``, the
+solved one's positive part, so the film ends where the full-Sommerfeld pressure turns negative.
 """
 from __future__ import annotations
 

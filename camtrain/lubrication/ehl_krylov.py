@@ -56,21 +56,23 @@ class FineOperator:
 
     def __init__(self, problem: DiscreteEHL, pieces):
         self.problem = problem
-        _, _, self.s, self.active, self.local, self.t_H = pieces
+        _, _, self.s, self.active, self.local, self.t_H, self.carried = pieces
         self.n = problem.X.size
 
     def matvec(self, v: np.ndarray) -> np.ndarray:
         full = np.zeros(self.n)
         full[1:-1] = v[:-1]
-        dH = self.problem.kernel.deflection(full) + v[-1]
+        load = full * self.carried        # the change of the pressure that carries load
+        dH = self.problem.kernel.deflection(load) + v[-1]
         rows = self.s[1:-1] * (_band_product(self.local, full) + _band_product(self.t_H, dH))
         rows = np.where(self.active, v[:-1], rows)
-        return np.concatenate((rows, [self.problem.dx * v[:-1].sum()]))
+        return np.concatenate((rows, [self.problem.dx * load.sum()]))
 
     def band(self, width: int) -> BandSolve:
         """The banded LU of the interior block's band of half width ``width``."""
+        column = self.carried if self.problem.sommerfeld else None
         value = band_values(self.problem.kernel.row, self.t_H, self.local, self.s[1:-1],
-                            self.active, width)
+                            self.active, width, column=column)
         return BandSolve(value, width)
 
 
@@ -84,7 +86,8 @@ def coarse_grids(problem: DiscreteEHL, coarsest: int | None = None) -> list[Disc
         n = (n + COARSENING - 1) // COARSENING
         X = np.linspace(problem.X[0], problem.X[-1], n)
         kernel = ElasticKernel.of_grid(n, X[1] - X[0])
-        grids.append(DiscreteEHL(X, kernel, problem.oil, problem.lam, problem.scheme))
+        grids.append(DiscreteEHL(X, kernel, problem.oil, problem.lam, problem.scheme,
+                                 problem.cavitation))
         if n <= coarsest:
             return grids
 

@@ -10,9 +10,17 @@ of the dry Hertz contact at the same load):
 
 * film: H = H0 + X^2/2 + V(X), V the elastic deflection of :mod:`.ehl_elastic`;
 * load balance: integral P dX = pi/2 (the Hertz load), with the rigid approach H0 as unknown;
-* cavitation ``reynolds`` (the Reynolds exit condition as a complementarity problem, Kinderlehrer
-  & Stampacchia's obstacle form): P >= 0, G = d(rho H)/dX - d/dX(eps dP/dX) >= 0, P G = 0; the
-  iterate is projected on P >= 0 after each step. (Mass-conserving cavitation is stage 2.)
+* cavitation ``reynolds`` (default; the Reynolds exit condition as a complementarity problem,
+  Kinderlehrer & Stampacchia's obstacle form): P >= 0, G = d(rho H)/dX - d/dX(eps dP/dX) >= 0,
+  P G = 0; the iterate is projected on P >= 0 after each step. (The mass-conserving Elrod-Adams
+  condition is the cycle march's, :mod:`.ehl_transient_system`.)
+  ``half_sommerfeld`` (Hamrock, Schmid & Jacobson 2004, *Fundamentals of Fluid Film
+  Lubrication*, 2nd ed., the half-Sommerfeld condition; Dowson & Higginson 1977): G = 0
+  everywhere with P unconstrained (the full Sommerfeld solution, theta = 1), and max(P, 0) in
+  the load balance, the deflection and the friction. A bound and a link to the older
+  literature: it neither conserves mass nor places the outlet constriction faithfully
+  (docs/ehl.md). Its default outlet mirrors the inlet: the full Sommerfeld pressure of a rigid
+  cylinder is antisymmetric, and a short outlet would cut its negative half and shift the rest.
 
 Discretisation: uniform grid of n nodes on [inlet, outlet] b (P = 0 at both ends); conservative
 second-order differences for the Poiseuille term with eps at the half nodes (arithmetic mean);
@@ -50,7 +58,7 @@ __all__ = ["LineContact", "EHLResolution", "EHLSolution", "SCHEMES", "CAVITATION
            "solve_ehl_line", "NotConverged"]
 
 SCHEMES = ("upwind1", "upwind2")
-CAVITATION = ("reynolds",)
+CAVITATION = ("reynolds", "half_sommerfeld")
 #: a reused (chord) Jacobian is kept while each step divides the residual by at least 1/0.5
 CHORD_CONTRACTION = 0.5
 
@@ -118,10 +126,12 @@ class EHLResolution:
     def domain(self, H_guess: float) -> tuple[float, float]:
         """Domain ends in b: the rigid (Martin) pressure decays slowly upstream over lengths of
         sqrt(2 R h), so a light contact gets an inlet of 20 and an outlet of 2 such lengths
-        (measured: the rigid-isoviscous h_min is 5-6 % low with 6 lengths, 0.5 % with 20)."""
+        (measured: the rigid-isoviscous h_min is 5-6 % low with 6 lengths, 0.5 % with 20);
+        ``half_sommerfeld``: the outlet mirrors the inlet (module docstring)."""
         rigid = np.sqrt(2.0 * H_guess)
         inlet = -max(4.5, 20.0 * rigid) if self.inlet is None else self.inlet
-        outlet = max(1.5, 2.0 * rigid) if self.outlet is None else self.outlet
+        short = -inlet if self.cavitation == "half_sommerfeld" else max(1.5, 2.0 * rigid)
+        outlet = short if self.outlet is None else self.outlet
         return float(inlet), float(outlet)
 
 
@@ -129,8 +139,10 @@ class EHLResolution:
 class EHLSolution:
     """A converged steady line contact, SI unless named dimensionless.
 
-    x [m], p [Pa], h [m] on the grid; h_central (at x = 0) and h_min [m]; spike: outlet
-    pressure maximum (x_spike [m], p_spike [Pa]; None when the pressure has a single maximum,
+    x [m], p [Pa] (the pressure that carries load: max of the solved one and 0), h [m] on the
+    grid; p_sommerfeld [Pa]: with ``half_sommerfeld`` the solved full-Sommerfeld pressure,
+    negative where the film would be in tension (None otherwise); h_central (at x = 0) and
+    h_min [m]; spike: outlet pressure maximum (x_spike [m], p_spike [Pa]; None when the pressure has a single maximum,
     i.e. no spike); p_max [Pa]; h0 rigid approach in Hertzian units; iterations; residual;
     b, p_h the Hertz half-width and pressure; eta [Pa s] on the grid (for the friction)."""
 
@@ -152,6 +164,7 @@ class EHLSolution:
     b: float
     p_h: float
     notes: tuple[str, ...] = field(default_factory=tuple)
+    p_sommerfeld: np.ndarray | None = None
 
 
 def _discrete(contact: LineContact, resolution: EHLResolution) -> tuple[DiscreteEHL, float]:
@@ -161,7 +174,8 @@ def _discrete(contact: LineContact, resolution: EHLResolution) -> tuple[Discrete
     X = np.linspace(inlet, outlet, resolution.nodes)
     lam = 12.0 * contact.oil.eta0 * contact.u_mean * contact.R**2 / (b**3 * p_h)
     kernel = ElasticKernel.of_grid(X.size, X[1] - X[0])
-    return DiscreteEHL(X, kernel, ScaledOil(contact.oil, p_h), lam, resolution.scheme), H_guess
+    return DiscreteEHL(X, kernel, ScaledOil(contact.oil, p_h), lam, resolution.scheme,
+                       resolution.cavitation), H_guess
 
 
 def _hertz_guess(problem: DiscreteEHL, H_central: float) -> tuple[np.ndarray, float]:
@@ -219,11 +233,13 @@ def _newton_krylov(problem: DiscreteEHL, coarser: list[DiscreteEHL], P: np.ndarr
 
 def _damped(problem, P, H0, step, norm, backtrack):
     """The step scaled by t = 1, 1/2, ... (only t = 1 without ``backtrack``) until the film
-    stays positive and the residual falls; P is projected on P >= 0."""
+    stays positive and the residual falls; P is projected on P >= 0 (not with
+    ``half_sommerfeld``: there P is unconstrained)."""
     t = 1.0
+    floor = -np.inf if problem.sommerfeld else 0.0
     while True:
         P_new = P.copy()
-        P_new[1:-1] = np.maximum(P[1:-1] + t * step[:-1], 0.0)
+        P_new[1:-1] = np.maximum(P[1:-1] + t * step[:-1], floor)
         H0_new = H0 + t * step[-1]
         F_new, f_new = problem.system(P_new, H0_new, jacobian=False)
         norm_new = np.abs(F_new).max()
@@ -296,6 +312,7 @@ def _solution(contact, resolution, problem, P, H0, its, res) -> EHLSolution:
     X = problem.X
     h = f.H * b**2 / R
     log_eta, _ = problem.oil.log_viscosity(P)
+    solved, P = P, problem.carried(P)
     i_spike, i_max = _spike(X, P)
     i_min = int(np.argmin(f.H))
     return EHLSolution(
@@ -305,4 +322,5 @@ def _solution(contact, resolution, problem, P, H0, its, res) -> EHLSolution:
         p_max=float(P[i_max] * p_h),
         x_spike=None if i_spike is None else float(X[i_spike] * b),
         p_spike=None if i_spike is None else float(P[i_spike] * p_h),
-        H0=float(H0), iterations=its, residual=float(res), b=b, p_h=p_h)
+        H0=float(H0), iterations=its, residual=float(res), b=b, p_h=p_h,
+        p_sommerfeld=solved * p_h if problem.sommerfeld else None)

@@ -3,6 +3,13 @@
 Unknowns: the interior pressures P_1..P_{n-2} (P_0 = P_{n-1} = 0) and the rigid approach H0.
 Rows: min(P_i, s_i G_i) = 0 (Reynolds with the Reynolds exit condition, s_i > 0 a row scale
 that leaves the solution unchanged) and the load balance dX sum P - pi/2 = 0.
+
+``half_sommerfeld`` (Hamrock, Schmid & Jacobson 2004, *Fundamentals of Fluid Film
+Lubrication*, 2nd ed., ch. 8, the half-Sommerfeld condition; Dowson & Higginson 1977, ch. 5):
+the rows are the full-film s_i G_i = 0 with P unconstrained (the full Sommerfeld solution,
+negative where the gap diverges), and the load balance and the elastic deflection take
+max(P, 0): the negative pressures are dropped, not solved away. The oil's laws see max(P, 0)
+(:mod:`.ehl_oil`: eta0 and rho0 at P <= 0), so their slopes vanish there.
 """
 from __future__ import annotations
 
@@ -50,6 +57,20 @@ class DiscreteEHL:
     oil: ScaledOil
     lam: float
     scheme: str
+    cavitation: str = "reynolds"
+
+    @property
+    def sommerfeld(self) -> bool:
+        """True for ``half_sommerfeld``: P unconstrained, its positive part carries the load."""
+        return self.cavitation == "half_sommerfeld"
+
+    def carried(self, P: np.ndarray) -> np.ndarray:
+        """The pressure that carries load and deflects the surfaces: max(P, 0)."""
+        return np.maximum(P, 0.0)
+
+    def carried_slope(self, P: np.ndarray) -> np.ndarray:
+        """d carried / dP: 1 where P > 0, 0 where the negative pressure is dropped."""
+        return (P > 0.0).astype(float) if self.sommerfeld else np.ones_like(P)
 
     @cached_property
     def influence(self) -> np.ndarray:
@@ -61,9 +82,11 @@ class DiscreteEHL:
         return self.kernel.dx
 
     def fields(self, P: np.ndarray, H0: float) -> Fields:
-        H = H0 + 0.5 * self.X**2 + self.kernel.deflection(P)
+        H = H0 + 0.5 * self.X**2 + self.kernel.deflection(self.carried(P))
         log_eta, dlog_eta = self.oil.log_viscosity(P)
         rho, drho = self.oil.density(P)
+        if self.sommerfeld:             # the laws are held at their P = 0 values below it
+            dlog_eta, drho = dlog_eta * (P >= 0.0), drho * (P >= 0.0)
         eps = rho * np.maximum(H, 0.0) ** 3 * np.exp(-log_eta) / self.lam
         return Fields(H, rho, drho, dlog_eta, eps)
 
@@ -99,36 +122,43 @@ class DiscreteEHL:
         f = self.fields(P, H0)
         G = self.reynolds(P, f)
         s = self.row_scale(f)
-        sG = s * G
-        active = P[1:-1] <= sG[1:-1]          # cavitated / on the P = 0 branch of the min
-        F = np.concatenate((np.where(active, P[1:-1], sG[1:-1]),
-                            [self.dx * P.sum() - 0.5 * np.pi]))
+        F, active = self._rows(P, s * G)
         if not jacobian:
             return F, f
         local, t_H = self._reynolds_bands(P, f)
-        return F, f, self._assemble(s, active, local, t_H)
+        return F, f, self._assemble(s, active, local, t_H, self.carried_slope(P))
+
+    def _rows(self, P: np.ndarray, sG: np.ndarray):
+        """(F, active): the interior rows min(P, sG) (``reynolds``; active where the min is on
+        P, the cavitated nodes) or sG (``half_sommerfeld``; none active), then the load row."""
+        if self.sommerfeld:
+            active = np.zeros(P.size - 2, dtype=bool)
+        else:
+            active = P[1:-1] <= sG[1:-1]
+        load = self.dx * self.carried(P).sum() - 0.5 * np.pi
+        return np.concatenate((np.where(active, P[1:-1], sG[1:-1]), [load])), active
 
     def linearisation(self, P: np.ndarray, H0: float):
         """F, the fields and the Jacobian's pieces without the dense matrix: (F, f, s, active,
-        local, t_H) for matrix-free products (:mod:`.ehl_krylov`)."""
+        local, t_H, carried) for matrix-free products (:mod:`.ehl_krylov`; ``carried`` = d
+        max(P, 0)/dP, the columns of the deflection and of the load row)."""
         f = self.fields(P, H0)
         s = self.row_scale(f)
-        sG = s * self.reynolds(P, f)
-        active = P[1:-1] <= sG[1:-1]
-        F = np.concatenate((np.where(active, P[1:-1], sG[1:-1]),
-                            [self.dx * P.sum() - 0.5 * np.pi]))
+        F, active = self._rows(P, s * self.reynolds(P, f))
         local, t_H = self._reynolds_bands(P, f)
-        return F, f, s, active, local, t_H
+        return F, f, s, active, local, t_H, self.carried_slope(P)
 
-    def _assemble(self, s, active, local, t_H) -> np.ndarray:
+    def _assemble(self, s, active, local, t_H, carried) -> np.ndarray:
         """J in (P_1..P_{n-2}, H0): the scaled Reynolds rows s_i dG_i (band of local terms plus
-        the dense elastic part sum_o t_o[i] dH_{i+o}/dP), unit rows where the min is on P, and
-        the load row."""
+        the dense elastic part sum_o t_o[i] dH_{i+o}/dP, ``carried`` = d max(P, 0)/dP on its
+        columns), unit rows where the min is on P, and the load row."""
         n = s.size
         J = np.zeros((n - 1, n - 1))
         D = J[:-1, :-1]                          # rows and columns 1..n-2
         buf = np.empty_like(D)
         Kd = self.influence
+        if self.sommerfeld:
+            Kd = Kd * carried[None, :]
         for o, t in t_H.items():
             lo = max(1, -o)
             rows = slice(lo - 1, n - 2)
@@ -141,7 +171,7 @@ class DiscreteEHL:
         idx = np.flatnonzero(active)
         J[idx, :] = 0.0
         J[idx, idx] = 1.0
-        J[-1, :-1] = self.dx
+        J[-1, :-1] = self.dx * carried[1:-1]
         return J
 
     def _reynolds_bands(self, P: np.ndarray, f: Fields):

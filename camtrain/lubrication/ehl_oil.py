@@ -10,6 +10,11 @@ Options (named, documented in docs/ehl.md):
 * viscosity ``roelands`` (default; Roelands 1966 with z matched to alpha at p = 0, eta_inf =
   6.31e-5 Pa s, p_r = 1.96e8 Pa) or ``barus`` (eta0 exp(alpha p));
 * density ``dowson_higginson`` (default) or ``incompressible``.
+
+Both laws take max(P, 0): at P <= 0 the viscosity is eta0 and the density rho0. Roelands'
+(1 + p/p_r)^z has no real value below p = -p_r and Barus' exponential would thin the oil
+without a physical basis; negative P occurs in the half-Sommerfeld solution (the full-film
+pressure, its negative part dropped) and within the smoothing of the Elrod-Adams kink.
 """
 from __future__ import annotations
 

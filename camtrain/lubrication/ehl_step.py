@@ -73,6 +73,18 @@ def _stopped_at_kink(s: np.ndarray, s_new: np.ndarray) -> np.ndarray:
     return np.where(s < 0.0, np.minimum(s_new, 0.0), s_new)
 
 
+def _lifted_approach(sysm, f, H0: float) -> float:
+    """H0 raised until the guess's film ``f.H`` has half its central film (or its deepest
+    negative one) as minimum. The previous step's deflection on a new grid can dip below zero
+    (Göçmen deck, 1,024 points: -0.04 b^2/R at 4 nodes), where the row scale frozen at the guess
+    is 1/(zero film), ~1e298: every residual overflowed (numpy's 'overflow encountered in dot'
+    in the GMRES norm), the direction was zero and the step ran 40 iterations before it was
+    split. The guess changes, not the step's solution."""
+    lowest = float(f.H.min())
+    central = float(np.interp(0.0, sysm.X, f.H))
+    return H0 - lowest + 0.5 * max(central, -lowest)
+
+
 class _LagRelaxation:
     """The share of the asperity pressure's change taken into its deflection per Newton
     iterate: ``ASPERITY_RELAXATION`` at first, then Aitken's dynamic relaxation (Irons & Tuck
@@ -188,7 +200,11 @@ class _Marcher:
         the first lagged asperity pressure (None: that of the film without it). A guess that
         already meets the tolerance (a steady stretch of the cycle) takes no iteration."""
         tol = self.res.tolerance * sysm.pressure_scale
-        f = sysm.fields(s, H0, np.zeros_like(s) if A0 is None else A0)
+        A_first = np.zeros_like(s) if A0 is None else A0
+        f = sysm.fields(s, H0, A_first)
+        if f.H.min() <= 0.0:            # a guess without a film at some node
+            H0 = _lifted_approach(sysm, f, H0)
+            f = sysm.fields(s, H0, A_first)
         A_lag, relax = (f.A if A0 is None else A0), _LagRelaxation()
         self.reuse = True
         sysm.scale = sysm.row_scale(f)      # frozen for the step: a smooth residual
@@ -264,12 +280,12 @@ class _Marcher:
             return self._damped_trials(sysm, s, H0, step, norm, backtrack, A_lag)
 
     def _damped_trials(self, sysm, s, H0, step, norm, backtrack, A_lag):
-        low = 0.0 if sysm.cavitation == "reynolds" else -1.0
-        t, full = 1.0, None
+        low = {"reynolds": 0.0, "half_sommerfeld": -np.inf}.get(sysm.cavitation, -1.0)
+        t, full, kink = 1.0, None, sysm.cavitation == "elrod_adams"
         while True:
             s_new = s.copy()
-            moved = sysm.updated(s[1:-1], t * step[:-1], self.ratio)
-            s_new[1:-1] = _stopped_at_kink(s[1:-1], np.maximum(moved, low))
+            moved = np.maximum(sysm.updated(s[1:-1], t * step[:-1], self.ratio), low)
+            s_new[1:-1] = _stopped_at_kink(s[1:-1], moved) if kink else moved
             H0_new = H0 + t * step[-1]
             F_new, f_new = sysm.residual(s_new, H0_new, A_lag)
             norm_new = np.abs(F_new).max()

@@ -113,7 +113,7 @@ class StepOperator:
         f, sysm, n = self.f, self.sysm, self.n
         ds = np.zeros(n + 1)                 # [0, s_0 .. s_{n-1}] with s_0 = s_{n-1} = 0
         ds[2:-1] = v[:-1]
-        dP = f.dP * ds[1:]
+        dP = f.dload * ds[1:]               # the change of the pressure that carries load
         dH = np.empty(n + 1)
         dH[0] = 0.0
         dH[1:] = sysm.kernel.deflection(dP) + v[-1]
@@ -133,7 +133,7 @@ class StepOperator:
         """The banded LU of the interior block's band of half width ``width`` (the local
         terms, and the elastic influence within the band; :mod:`.ehl_band`)."""
         value = band_values(self.sysm.kernel.row, self.t_H, self.local, self.scale[1:-1],
-                            self.active, width, column=self.f.dP)
+                            self.active, width, column=self.f.dload)
         return BandSolve(value, width)
 
 

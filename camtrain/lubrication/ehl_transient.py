@@ -62,7 +62,8 @@ def _friction(c: CycleContact, k, f, sysm, b, p_h, R, coef):
         pa = asperity_pressure(h, c.sigma, coef)
     else:
         aa = pa = np.zeros_like(h)
-    fluid = np.trapezoid(tau * f.theta * (1.0 - aa), x)
+    film = f.theta * (f.P >= 0.0) if sysm.cavitation == "half_sommerfeld" else f.theta
+    fluid = np.trapezoid(tau * film * (1.0 - aa), x)
     boundary = np.trapezoid(c.eyring_stress * aa + c.boundary_shear * pa, x)
     return c.width * float(fluid), c.width * float(boundary)
 
@@ -148,12 +149,12 @@ def _record(out: EHLCycle, k, c, state: _State, f, sysm, mirror, b, p_h, its, co
     flip = (lambda a: a[::-1]) if mirror else (lambda a: a)
     R = float(c.R[k])
     h = flip(f.H) * b**2 / R
-    p = flip(f.P) * p_h
+    p = flip(f.load) * p_h
     out.h_central[k] = state.h_c
     out.h_min[k] = float(h.min())
     out.p_max[k] = float(p.max())
     out.p_hertz[k] = p_h
-    total = float(f.P.sum() + f.A.sum())
+    total = float(f.load.sum() + f.A.sum())
     out.asperity_share[k] = float(f.A.sum()) / total if total > 0 else 0.0
     out.asperity_pressure_max[k] = float(f.A.max()) * p_h
     out.fluid_friction[k], out.asperity_friction[k] = _friction(c, k, f, sysm, b, p_h, R, coef)

@@ -26,6 +26,11 @@ delta)/2, r = sqrt(s^2 + delta^2), exact at s = 0 and within delta/2 of the shar
 elsewhere; delta = 2 sqrt(tolerance) times the pressure scale (2e-3 at the default).
 ``reynolds``: theta = 1, and the rows are min(P, s G) = 0 (the steady solver's
 Reynolds exit condition), which does not conserve mass in the cavitated zone.
+``half_sommerfeld`` (Hamrock, Schmid & Jacobson 2004, *Fundamentals of Fluid Film
+Lubrication*, 2nd ed., the half-Sommerfeld condition): theta = 1 and the rows are the full-film
+G = 0 with s = P unconstrained; the load row and the deflection take max(P, 0) (``load`` of
+:class:`StepFields`), the oil's laws see max(P, 0) (eta0, rho0 below it) and the friction counts
+no shear where P < 0. Neither mass-conserving nor faithful at the outlet: a bound (docs/ehl.md).
 
 Asperities (Greenwood & Tripp 1970-71, :mod:`.asperity`): their nominal pressure A(H) carries
 load (load row, with its derivative in the Jacobian) and deforms the surfaces (in the
@@ -33,7 +38,7 @@ deflection, lagged by one Newton iterate: the step converges when A stops changi
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -41,7 +46,7 @@ from .ehl_elastic import ElasticKernel
 from .ehl_newton import WEDGE, flow_bands
 from .ehl_oil import ScaledOil
 
-CAVITATION = ("elrod_adams", "reynolds")
+CAVITATION = ("elrod_adams", "reynolds", "half_sommerfeld")
 
 
 @dataclass
@@ -60,6 +65,8 @@ class StepFields:
     Q: np.ndarray
     A: np.ndarray         #: asperity pressure from this H [-]
     dA: np.ndarray        #: dA/dH [-]
+    load: np.ndarray      #: the pressure that carries load (P; half_sommerfeld: max(P, 0))
+    dload: np.ndarray     #: dload/ds
 
 
 @dataclass
@@ -92,6 +99,8 @@ class StepSystem:
         """(P, theta, dP/ds, dtheta/ds) of s (module docstring)."""
         if self.cavitation == "reynolds":       # s is the pressure, projected on s >= 0
             return np.maximum(s, 0.0), np.ones_like(s), np.ones_like(s), np.zeros_like(s)
+        if self.cavitation == "half_sommerfeld":        # s is the pressure, unconstrained
+            return s.copy(), np.ones_like(s), np.ones_like(s), np.zeros_like(s)
         d = self.smoothing
         r = np.sqrt(s * s + d * d)
         return (0.5 * (s + r - d), 1.0 - 0.5 * (r - s - d), 0.5 * (1.0 + s / r),
@@ -134,16 +143,22 @@ class StepSystem:
 
     def fields(self, s: np.ndarray, H0: float, A_lag: np.ndarray) -> StepFields:
         P, theta, dP, dtheta = self.split(s)
-        H = H0 + 0.5 * self.X**2 + self.kernel.deflection(P + A_lag)
+        load, dload = P, dP
         log_eta, dlog_eta = self.oil.log_viscosity(P)
         rho, drho = self.oil.density(P)
+        if self.cavitation == "half_sommerfeld":      # negative pressures dropped
+            kept = P > 0.0
+            load, dload = np.maximum(P, 0.0), kept.astype(float)
+            dlog_eta, drho = dlog_eta * (P >= 0.0), drho * (P >= 0.0)
+        H = H0 + 0.5 * self.X**2 + self.kernel.deflection(load + A_lag)
         Hp = np.maximum(H, 0.0)
         eps = rho * Hp**3 * np.exp(-log_eta) / self.lam
         if self.asperity is None:
             A, dA = np.zeros_like(P), np.zeros_like(P)
         else:
             A, dA = self.asperity(H)
-        return StepFields(P, theta, dP, dtheta, H, rho, drho, dlog_eta, eps, rho * theta * H, A, dA)
+        return StepFields(P, theta, dP, dtheta, H, rho, drho, dlog_eta, eps, rho * theta * H,
+                          A, dA, load, dload)
 
     def _wedge(self, n: int) -> list[np.ndarray]:
         """The wedge and time weights of Q_i, Q_{i-1}, Q_{i-2} per node: fixed for the step,
@@ -188,7 +203,7 @@ class StepSystem:
         rows = sG[1:-1]
         if self.cavitation == "reynolds":
             rows = np.minimum(f.P[1:-1], rows)
-        load = self.dx * (f.P.sum() + f.A.sum()) - 0.5 * np.pi
+        load = self.dx * (f.load.sum() + f.A.sum()) - 0.5 * np.pi
         return np.concatenate((rows, [load])), f
 
     def jacobian(self, s, f: StepFields) -> np.ndarray:
@@ -197,7 +212,7 @@ class StepSystem:
         n = s.size
         sc = self._scale(f)
         local, t_H = self._bands(s, f)
-        pressed = f.dP
+        pressed = f.dload
         if callable(self.influence):                     # built once, on first use
             self.influence = self.influence()
         Kd = self.influence * pressed[None, :]          # dH_k/ds_j
@@ -253,7 +268,12 @@ class StepSystem:
     def mass_error(self, f: StepFields) -> float:
         """The step's discrete mass balance, |sum of the unscaled rows| dX over the inflow
         scale |u| max Q + c_t max Q: the rows telescope (flux form), so this is the change of
-        the film content against what crossed the domain's ends, to the solver's tolerance."""
+        the film content against what crossed the domain's ends, to the solver's tolerance.
+        ``half_sommerfeld``: the rows of the pressure it keeps, max(P, 0) (the full-film rows
+        it solves telescope to zero whatever becomes of the dropped negative pressures: they
+        would read a balance the kept film does not have)."""
+        if self.cavitation == "half_sommerfeld":
+            f = replace(f, P=f.load)
         G = self.reynolds(f)
         scale = (self.speed + self.c_t * self.a0 * (self.X[-1] - self.X[0])) * np.abs(f.Q).max()
         return float(abs(G[1:-1].sum() * self.dx) / max(scale, 1e-300))
