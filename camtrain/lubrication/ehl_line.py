@@ -142,8 +142,9 @@ class EHLSolution:
     x [m], p [Pa] (the pressure that carries load: max of the solved one and 0), h [m] on the
     grid; p_sommerfeld [Pa]: with ``half_sommerfeld`` the solved full-Sommerfeld pressure,
     negative where the film would be in tension (None otherwise); h_central (at x = 0) and
-    h_min [m]; spike: outlet pressure maximum (x_spike [m], p_spike [Pa]; None when the pressure has a single maximum,
-    i.e. no spike); p_max [Pa]; h0 rigid approach in Hertzian units; iterations; residual;
+    h_min [m]; spike: outlet pressure maximum (x_spike [m], p_spike [Pa]; None when the
+    pressure has a single maximum, i.e. no spike); p_max [Pa]; h0 rigid approach in Hertzian
+    units; iterations; residual;
     b, p_h the Hertz half-width and pressure; eta [Pa s] on the grid (for the friction)."""
 
     contact: LineContact
