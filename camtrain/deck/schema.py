@@ -8,27 +8,10 @@ Values in the model are SI; units below are the units written in the deck.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from camtrain.catalogue import effect_names
 from camtrain.deck.fields import ExactlyOne, When, option, quantity, section
-from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one schema namespace
-    CamBearing,
-    CamDamper,
-    CamDrive,
-    CamLobe,
-    Camshaft,
-)
-from camtrain.deck.schema_design import Design
-from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
-from camtrain.deck.schema_follower import (
-    ArmContacts,
-    Dyson,
-    Layout,
-    RollerFace,
-    dyson_from_layout,
-    layout_problems,
-)
 from camtrain.deck.schema_lift import (  # noqa: F401
     LIFT_FORMS,
     ElementaryHalf,
@@ -44,7 +27,6 @@ from camtrain.deck.schema_lift import (  # noqa: F401
     WilliamsElementary,
     WilliamsLowJerk,
 )
-from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
     Guides,
@@ -58,6 +40,30 @@ from camtrain.deck.schema_tribology import (  # noqa: F401
 )
 from camtrain.errors import Problem
 from camtrain.units import from_si, mm_text
+
+if TYPE_CHECKING:   # deferred sections (fields.section(schema=...)): imported when a deck has them
+    from camtrain.deck.schema_camshaft import Camshaft
+    from camtrain.deck.schema_design import Design
+    from camtrain.deck.schema_dynamics import Dynamics
+    from camtrain.deck.schema_follower import ArmContacts, Dyson, Layout, RollerFace
+    from camtrain.deck.schema_roller import Roller
+
+#: the classes of the deferred sections, still one schema namespace: ``schema.Camshaft`` imports
+#: its module on first use (PEP 562)
+DEFERRED = {name: f"camtrain.deck.{module}:{name}" for module, names in (
+    ("schema_camshaft", ("CamBearing", "CamDamper", "CamDrive", "CamLobe", "Camshaft")),
+    ("schema_design", ("Design",)), ("schema_dynamics", ("Dynamics",)),
+    ("schema_follower", ("ArmContacts", "Dyson", "Layout", "RollerFace")),
+    ("schema_roller", ("Roller",))) for name in names}
+
+
+def __getattr__(name: str):
+    if name in DEFERRED:
+        import importlib
+
+        module, attribute = DEFERRED[name].split(":")
+        return getattr(importlib.import_module(module), attribute)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
 PIVOTED = ("finger", "rocker")
@@ -223,13 +229,15 @@ class Mechanism:
         "(centrally pivoted)", applies="desmodromic")
     roller: RollerFace | None = section(
         "The roller of a roller follower (follower = \"roller\"): crown, mass",
-        applies="follower = roller")
+        applies="follower = roller", schema=DEFERRED["RollerFace"])
     layout: Layout | None = section(
         "A finger follower or rocker drawn by positions (pivot, roller centre, pad centre, "
-        "valve direction) instead of A, B, D, kappa, lambda", applies="finger, rocker")
+        "valve direction) instead of A, B, D, kappa, lambda", applies="finger, rocker",
+        schema=DEFERRED["Layout"])
     arm: ArmContacts | None = section(
         "Valve pad and pivot of a finger follower or rocker: pad sliding, load, Hertz stress "
-        "and friction, pivot friction torque", applies="finger, rocker")
+        "and friction, pivot friction torque", applies="finger, rocker",
+        schema=DEFERRED["ArmContacts"])
 
     schema_rules = (
         When("type", ("domed", "finger", "rocker", "desmodromic"), require=("follower_radius",)),
@@ -248,10 +256,12 @@ class Mechanism:
     def dyson(self) -> Dyson | None:
         """Dyson's A, B, D, kappa, lambda of a pivoted follower [m, rad]: from the fields, or
         from [mechanism.layout]; None when neither is complete."""
-        if self.layout is not None:
-            return dyson_from_layout(self.layout)
         values = [getattr(self, k) for k in DYSON_KEYS]
-        return None if any(v is None for v in values) else Dyson(*values)
+        if self.layout is None and any(v is None for v in values):
+            return None
+        from camtrain.deck.schema_follower import Dyson, dyson_from_layout
+
+        return dyson_from_layout(self.layout) if self.layout is not None else Dyson(*values)
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -367,16 +377,18 @@ class Deck:
     limits: Limits | None = section("Design limits checked by run --check")
     camshaft: Camshaft | None = section(
         "The camshaft carrying copies of this valve train: lobes, bearings, drive (camshaft torque "
-        "and bearing effects)")
+        "and bearing effects)", schema=DEFERRED["Camshaft"])
     dynamics: Dynamics | None = section(
         "Elastic valve train in time: contact loss, spring surge, valve seating (the dynamic "
-        "contact load replaces the rigid train's)")
+        "contact load replaces the rigid train's)", schema=DEFERRED["Dynamics"])
     design: Design | None = section(
-        "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
+        "Valve events and limits from which camtrain design builds a lift law (a run ignores it)",
+        schema=DEFERRED["Design"])
     roller: Roller | None = section(
         "The follower's roller turning on its pin: inertia, pin bearing, traction, solver "
         "(radius: mechanism.follower_radius)",
-        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod")
+        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod",
+        schema=DEFERRED["Roller"])
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -402,8 +414,16 @@ class Deck:
                                "on a roller", f"{from_si(self.cam.taper_angle, 'deg'):g} deg",
                                "0 with mechanism.follower = \"roller\""))
         if mech.layout is not None and mech.type in PIVOTED:
+            from camtrain.deck.schema_follower import layout_problems
+
             out.extend(layout_problems(mech.layout, "mechanism.layout", self.cam.base_radius,
                                        mech.follower_radius))
-        out.extend(dynamics_problems(self))
-        out.extend(roller_problems(self))
+        if self.dynamics is not None:   # its checks against the rest of the deck
+            from camtrain.deck.schema_dynamics import dynamics_problems
+
+            out.extend(dynamics_problems(self))
+        if self.roller is not None:
+            from camtrain.deck.schema_roller import roller_problems
+
+            out.extend(roller_problems(self))
         return out
