@@ -13,23 +13,14 @@ from typing import TYPE_CHECKING, Literal
 from camtrain.catalogue import effect_names
 from camtrain.deck.fields import ExactlyOne, When, option, quantity, section
 from camtrain.deck.schema_lift import (  # noqa: F401
+    DEFERRED_FORMS,
     LIFT_FORMS,
-    ElementaryHalf,
-    ExpPoly,
     FourPower,
     Lift,
-    LowJerkHalf,
-    Multipol,
-    Polynomial,
     Ramps,
-    Segment,
-    Table,
-    WilliamsElementary,
-    WilliamsLowJerk,
 )
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
-    Guides,
     Limits,
     Lubricant,
     Masses,
@@ -44,17 +35,22 @@ from camtrain.units import from_si, mm_text
 if TYPE_CHECKING:   # deferred sections (fields.section(schema=...)): imported when a deck has them
     from camtrain.deck.schema_camshaft import Camshaft
     from camtrain.deck.schema_design import Design
+    from camtrain.deck.schema_desmodromic import ClosingPair
     from camtrain.deck.schema_dynamics import Dynamics
     from camtrain.deck.schema_follower import ArmContacts, Dyson, Layout, RollerFace
+    from camtrain.deck.schema_guides import Guides
+    from camtrain.deck.schema_pushrod import Pushrod
     from camtrain.deck.schema_roller import Roller
 
 #: the classes of the deferred sections, still one schema namespace: ``schema.Camshaft`` imports
 #: its module on first use (PEP 562)
 DEFERRED = {name: f"camtrain.deck.{module}:{name}" for module, names in (
     ("schema_camshaft", ("CamBearing", "CamDamper", "CamDrive", "CamLobe", "Camshaft")),
-    ("schema_design", ("Design",)), ("schema_dynamics", ("Dynamics",)),
+    ("schema_design", ("Design",)), ("schema_desmodromic", ("ClosingPair",)),
+    ("schema_dynamics", ("Dynamics",)), ("schema_guides", ("Guides",)),
+    ("schema_pushrod", ("Pushrod",)),
     ("schema_follower", ("ArmContacts", "Dyson", "Layout", "RollerFace")),
-    ("schema_roller", ("Roller",))) for name in names}
+    ("schema_roller", ("Roller",))) for name in names} | DEFERRED_FORMS
 
 
 def __getattr__(name: str):
@@ -104,79 +100,6 @@ class Speed:
 # --------------------------------------------------------------------------- mechanism
 
 @dataclass(frozen=True, kw_only=True)
-class Pushrod:
-    """Rocker and push rod between the valve and the follower on the cam (Williams 2013 ch 11)."""
-
-    layout: Literal["simple", "four_bar"] = option(
-        "simple: push rod on a translating tappet; four_bar: push rod on a pivoted finger "
-        "follower (mechanism.A, D, follower_radius describe that follower)", default="simple")
-    rocker_pushrod_arm: float = quantity("Rocker arm on the push-rod side, D1", "mm", gt=0,
-                                         example=35.0)
-    rocker_valve_arm: float = quantity("Rocker arm on the valve side, D2", "mm", gt=0,
-                                       example=50.0)
-    rocker_arm_angle: float = quantity("Angle between the two rocker arms, alpha_0", "deg",
-                                       default=0.0, gt=-90, lt=90, example=10.0)
-    valve_axis_angle: float = quantity("Angle between the vertical and the valve axis, gamma",
-                                       "deg", default=0.0, gt=-60, lt=60, example=15.0)
-    perpendicular_lift_fraction: float = quantity(
-        "Fraction of the maximum valve lift at which the valve arm is perpendicular to the "
-        "valve axis", "-", default=0.5, ge=0, le=1)
-    pushrod_length: float = quantity("Push-rod length D_PR", "mm", gt=0, example=200.0)
-    pushrod_cg_fraction: float = quantity(
-        "Distance of the push rod's centre of mass from its lower end, as a fraction of its "
-        "length", "-", default=0.5, ge=0, le=1)
-    tappet_axis_distance: float | None = quantity(
-        "Horizontal distance from the rocker pivot to the tappet axis, x_bar", "mm",
-        default=None, gt=0, example=43.3, applies="layout = simple")
-    rocker_pivot_x: float | None = quantity(
-        "Rocker pivot position relative to the follower pivot, horizontal (a)", "mm",
-        default=None, applies="layout = four_bar")
-    rocker_pivot_y: float | None = quantity(
-        "Rocker pivot position relative to the follower pivot, vertical (b)", "mm",
-        default=None, applies="layout = four_bar")
-    follower_pushrod_arm: float | None = quantity(
-        "Follower pivot to push-rod joint, e", "mm", default=None, gt=0,
-        applies="layout = four_bar")
-    closure: Literal[-1, 1] = option("Side of the line follower pivot - rocker tip on which "
-                                     "the push-rod joint lies", default=-1)
-    branch: Literal[-1, 1] = option("Assembly branch of the follower on the cam side",
-                                    default=1)
-
-    schema_rules = (
-        When("layout", ("simple",), require=("tappet_axis_distance",)),
-        When("layout", ("four_bar",),
-             require=("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")))
-
-    def problems(self, path: str) -> list[Problem]:
-        if self.layout == "simple" and self.tappet_axis_distance is None:
-            return [Problem(f"{path}.tappet_axis_distance", "is required for layout = simple",
-                            None, "a distance in mm")]
-        if self.layout == "four_bar":
-            return [Problem(f"{path}.{n}", "is required for layout = four_bar", None, "mm")
-                    for n in ("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")
-                    if getattr(self, n) is None]
-        return []
-
-
-@dataclass(frozen=True, kw_only=True)
-class ClosingPair:
-    """The closing cam of a desmodromic train and its end-pivoted follower (Ball 1988 App F)."""
-
-    A: float = quantity("A: pivot to the centre of curvature of the follower face", "mm",
-                        gt=0, example=17.32)
-    B: float = quantity("B: pivot to the valve-contact pad", "mm", gt=0, example=32.39)
-    D: float = quantity("D: cam centre to pivot", "mm", gt=0, example=39.32)
-    kappa: float = quantity("kappa: angle between OU and the direction of valve motion", "deg",
-                            gt=-360, lt=360, example=-7.31)
-    lambda_: float = quantity("lambda: angle VUQ", "deg", gt=-360, lt=360, example=9.41,
-                              key="lambda")
-    follower_radius: float = quantity("Follower face radius r_f", "mm", gt=0, example=20.0)
-    base_radius: float = quantity("Base-circle radius of the closing cam", "mm", gt=0,
-                                  example=25.0)
-    width: float | None = quantity("Closing cam width", "mm", default=None, gt=0)
-
-
-@dataclass(frozen=True, kw_only=True)
 class Mechanism:
     """The follower and how it drives the valve. Pivot geometry follows Dyson's (1980) notation."""
 
@@ -223,10 +146,10 @@ class Mechanism:
         "Largest grinding-wheel radius (Ball's minimum cam concavity); concave flanks must be "
         "less curved than this", "mm", default=None, gt=0)
     pushrod: Pushrod | None = section("Push rod and rocker geometry (Williams 2013 ch 11)",
-                                      applies="pushrod")
+                                      applies="pushrod", schema=DEFERRED["Pushrod"])
     closing: ClosingPair | None = section(
         "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
-        "(centrally pivoted)", applies="desmodromic")
+        "(centrally pivoted)", applies="desmodromic", schema=DEFERRED["ClosingPair"])
     roller: RollerFace | None = section(
         "The roller of a roller follower (follower = \"roller\"): crown, mass",
         applies="follower = roller", schema=DEFERRED["RollerFace"])
@@ -371,7 +294,8 @@ class Deck:
     clearance: Clearance | None = section("Valve clearance or lash adjuster")
     materials: Materials = section("Materials (defaults: steel on steel)", default=Materials())
     lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
-    guides: Guides | None = section("Follower and valve guides (guide friction; needs lubricant)")
+    guides: Guides | None = section("Follower and valve guides (guide friction; needs lubricant)",
+                                    schema=DEFERRED["Guides"])
     solver: Solver = section("Solver resolution", default=Solver())
     tribology: Tribology = section("Tribology model options", default=Tribology())
     limits: Limits | None = section("Design limits checked by run --check")
