@@ -144,3 +144,23 @@ def test_a_misspelt_key_is_still_matched_against_the_deferred_sections():
     assert any("cam.integrator: is not a known key. did you mean `dynamics.integrator`?" in m
                for m in messages), messages
     assert any("dynamcs: is not a known key. did you mean `dynamics`?" in m for m in messages)
+
+
+def test_lazy_package_names_stay_what_they_name_whatever_was_imported_first():
+    """A package's lazy name must not be one of its modules' names: importing that module from
+    elsewhere would set the package's attribute to the module (the builder `pivoted` of
+    camtrain/mechanisms/pivoted.py is bound eagerly for that reason). Every submodule first,
+    then every public name: none is a module."""
+    code = ("import importlib, pkgutil, types\n"
+            "for name in ('camtrain.lift', 'camtrain.mechanisms'):\n"
+            "    package = importlib.import_module(name)\n"
+            "    for m in pkgutil.iter_modules(package.__path__):\n"
+            "        importlib.import_module(f'{name}.{m.name}')\n"
+            "    bad = [n for n in package.__all__\n"
+            "           if isinstance(getattr(package, n), types.ModuleType)]\n"
+            "    assert not bad, (name, bad)\n"
+            "    assert not set(package._LAZY) & {m.name for m in pkgutil.iter_modules(package.__path__)}\n"
+            "print('ok')")
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                         check=True).stdout
+    assert out.split() == ["ok"]

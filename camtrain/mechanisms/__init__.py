@@ -6,13 +6,18 @@ imported when one of its names is first asked for.
 """
 from camtrain.mechanisms.base import ANTICLOCKWISE, CLOCKWISE, Kinematics, TrainKinematics, analyse
 
-#: the families' builders and geometry by name -> the module under camtrain.mechanisms that
-#: holds them: imported on first use (PEP 562), so that a deck pays only for its own follower
+# `pivoted` and `desmodromic` name a module and the builder in it: importing the module (from
+# anywhere) sets the package's attribute to the module, which a lazy name cannot undo, so the
+# builders are bound here, after their modules
+from camtrain.mechanisms.desmodromic import DesmodromicKinematics, desmodromic
+from camtrain.mechanisms.pivot_geometry import PivotGeometry, rescale_pivot_geometry
+from camtrain.mechanisms.pivoted import centrally_pivoted, end_pivoted, pivoted
+
+#: the other families' builders and geometry by name -> the module under camtrain.mechanisms
+#: that holds them: imported on first use (PEP 562), so that a deck pays only for its own
+#: follower (a name here must not be a module's name, see above)
 _LAZY = {
     "valve_lift_from_cam_lift": "conversion",
-    "DesmodromicKinematics": "desmodromic", "desmodromic": "desmodromic",
-    "PivotGeometry": "pivot_geometry", "rescale_pivot_geometry": "pivot_geometry",
-    "centrally_pivoted": "pivoted", "end_pivoted": "pivoted", "pivoted": "pivoted",
     "FourBarGeometry": "pushrod", "RockerGeometry": "pushrod", "pushrod_four_bar": "pushrod",
     "pushrod_simple": "pushrod",
     "domed": "translating", "flat_faced": "translating", "tapered_domed": "translating",
