@@ -58,6 +58,47 @@ class _Group(click.Group):
                        "This is a bug; please report it with the deck that caused it.", err=True)
             sys.exit(EXIT_INTERNAL)
 
+    # The study commands live in modules of their own, imported when the command is invoked
+    # or listed (click's lazy-loading group, "Advanced patterns" of click's documentation): a
+    # process that runs one command loads only that command's module. `camtrain --help` lists
+    # them all, and so imports them all.
+
+    def list_commands(self, ctx) -> list[str]:
+        return sorted({*super().list_commands(ctx), *LAZY_COMMANDS})
+
+    def get_command(self, ctx, name: str):
+        if name in LAZY_COMMANDS and name not in self.commands:
+            import importlib
+
+            module, attribute = LAZY_COMMANDS[name].split(":")
+            command = getattr(importlib.import_module(module), attribute)
+            assert command.name == name, (name, command.name)   # the table names it right
+            self.add_command(command)
+        return super().get_command(ctx, name)
+
+    def resolve_command(self, ctx, args):
+        if args and self.get_command(ctx, str(args[0])) is None:
+            for name in LAZY_COMMANDS:  # a misspelt command's "did you mean" weighs them all
+                self.get_command(ctx, name)
+        return super().resolve_command(ctx, args)
+
+
+#: the study commands by name: "module:command object" (their modules import only click, and
+#: camtrain.errors, at module level; each is imported on first use, see _Group.get_command)
+LAZY_COMMANDS = {
+    "accuracy": "camtrain.cli_accuracy:accuracy",
+    "design": "camtrain.cli_design:design",
+    "dynamics-speed": "camtrain.cli_dynamics:dynamics_speed",
+    "ehl": "camtrain.cli_ehl:ehl",
+    "fit": "camtrain.cli_fit:fit",
+    "friction-map": "camtrain.cli_friction_map:friction_map",
+    "leakdown": "camtrain.cli_dynamics:leakdown",
+    "optimize": "camtrain.cli_design:optimize",
+    "sensitivity": "camtrain.cli_sensitivity:sensitivity",
+    "sweep": "camtrain.cli_sweep:sweep",
+    "warmup": "camtrain.cli_warmup:warmup",
+}
+
 
 @click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="camtrain")
@@ -411,34 +452,6 @@ def lift_command(deck: str, out: str | None, points: int | None, no_plots: bool,
         from camtrain.report.console import print_run
 
         print_run(_console(), result, written)
-
-
-def _register_study_commands() -> None:
-    # the study commands live in their own modules, which import only click at module level
-    from camtrain.cli_accuracy import accuracy
-    from camtrain.cli_design import design, optimize
-    from camtrain.cli_dynamics import dynamics_speed, leakdown
-    from camtrain.cli_ehl import ehl
-    from camtrain.cli_fit import fit
-    from camtrain.cli_friction_map import friction_map
-    from camtrain.cli_sensitivity import sensitivity
-    from camtrain.cli_sweep import sweep
-    from camtrain.cli_warmup import warmup
-
-    main.add_command(sweep)
-    main.add_command(warmup)
-    main.add_command(accuracy)
-    main.add_command(dynamics_speed)
-    main.add_command(leakdown)
-    main.add_command(friction_map)
-    main.add_command(sensitivity)
-    main.add_command(fit)
-    main.add_command(design)
-    main.add_command(optimize)
-    main.add_command(ehl)
-
-
-_register_study_commands()
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -9,9 +9,11 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import functools
+import importlib
 import math
 import types
 import typing
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal, get_args, get_origin
 
@@ -42,6 +44,9 @@ class FieldInfo:
     min_items: int = 0
     max_items: int | None = None
     key: str = ""  # deck key when it differs from the Python name (e.g. "lambda")
+    #: an optional section whose class lives in a module of its own, "module:Class": imported
+    #: when a deck has the section (or the whole schema is walked), not for every deck
+    schema: str = ""
 
     def bounds_text(self) -> str:
         parts = []
@@ -85,9 +90,17 @@ def option(doc: str, *, default: Any = REQUIRED, example=None, applies: str = ""
     return _field(default, FieldInfo(doc, example=example, applies=applies))
 
 
-def section(doc: str, *, required: bool = False, applies: str = "", default: Any = None) -> Any:
-    """A nested section ([table] in TOML). Optional sections default to ``default`` (None)."""
-    info = FieldInfo(doc, applies=applies)
+def section(doc: str, *, required: bool = False, applies: str = "", default: Any = None,
+            schema: str = "") -> Any:
+    """A nested section ([table] in TOML). Optional sections default to ``default`` (None).
+
+    ``schema`` ("module:Class") defers an optional section's class: the owner's module names
+    the class for type checkers only, and the class's module is imported when the section is
+    first read (a deck that has it, a schema walker), so a deck without it does not pay for it.
+    """
+    if schema and (required or default is not None):
+        raise ValueError("only an optional section without a default is deferred")
+    info = FieldInfo(doc, applies=applies, schema=schema)
     return _field(REQUIRED if required else default, info)
 
 
@@ -161,10 +174,25 @@ class Shape:
     #            choice_or_strings
     optional: bool
     choices: tuple = ()
-    section: type | None = None
+    #: a section's class, or where a deferred one lives ("module:Class", FieldInfo.schema)
+    schema: type | str | None = None
+
+    @property
+    def section(self) -> type | None:
+        """The section's class (a deferred one is imported now), None for a leaf field."""
+        if isinstance(self.schema, str):
+            module, name = self.schema.split(":")
+            return getattr(importlib.import_module(module), name)
+        return self.schema
 
 
-def shape_of(tp: Any) -> Shape:
+class _Deferred:
+    """Stands for a deferred section's class while its owner's type hints are read."""
+
+
+def shape_of(tp: Any, deferred: str = "") -> Shape:
+    """The shape of a field's type; ``deferred`` is where the class of a deferred section
+    (``_Deferred`` in the hint) lives."""
     optional = False
     origin = get_origin(tp)
     if origin in (typing.Union, types.UnionType):
@@ -196,9 +224,11 @@ def shape_of(tp: Any) -> Shape:
         if inner is str:
             return Shape("strings", optional)
         if dataclasses.is_dataclass(inner):
-            return Shape("sections", optional, section=inner)
+            return Shape("sections", optional, schema=inner)
+    if tp is _Deferred and deferred:
+        return Shape("section", optional, schema=deferred)
     if dataclasses.is_dataclass(tp):
-        return Shape("section", optional, section=tp)
+        return Shape("section", optional, schema=tp)
     raise TypeError(f"unsupported deck field type {tp}")
 
 
@@ -210,9 +240,13 @@ def deck_key(f: dataclasses.Field) -> str:
 @functools.cache
 def section_fields(cls: type) -> tuple[tuple[dataclasses.Field, Shape, FieldInfo], ...]:
     """The fields of a section with their shapes (cached: the schema never changes at run time,
-    and resolving type hints dominates validation otherwise)."""
-    hints = typing.get_type_hints(cls)
-    return tuple((f, shape_of(hints[f.name]), info_of(f)) for f in dataclasses.fields(cls))
+    and resolving type hints dominates validation otherwise). A deferred section's class is
+    not imported here: its hint reads as ``_Deferred`` (see :func:`section`)."""
+    fields = dataclasses.fields(cls)
+    deferred = {info_of(f).schema.split(":")[1]: _Deferred for f in fields if info_of(f).schema}
+    hints = typing.get_type_hints(cls, localns=deferred) if deferred else \
+        typing.get_type_hints(cls)
+    return tuple((f, shape_of(hints[f.name], info_of(f).schema), info_of(f)) for f in fields)
 
 
 # --------------------------------------------------------------------------- parsing
@@ -264,7 +298,7 @@ def _check_number(value: Any, info: FieldInfo, path: str, problems: list[Problem
     return x * UNITS[info.unit][0]
 
 
-def _suggest(key: str, known: list[str], path: str, all_paths: dict[str, list[str]]) -> str:
+def _suggest(key: str, known: list[str], path: str, all_paths: Mapping[str, list[str]]) -> str:
     close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
     if close:
         where = f"{path}.{close[0]}" if path else close[0]
@@ -276,6 +310,26 @@ def _suggest(key: str, known: list[str], path: str, all_paths: dict[str, list[st
     if fuzzy:
         return f"did you mean `{all_paths[fuzzy[0]][0]}`?"
     return "known keys here: " + ", ".join(sorted(known))
+
+
+class SchemaPaths(Mapping):
+    """:func:`schema_paths` of a schema, walked when a hint first reads it: a valid deck never
+    does, and the walk imports every deferred section's module."""
+
+    def __init__(self, cls: type) -> None:
+        self._cls = cls
+
+    def _paths(self) -> dict[str, list[str]]:
+        return schema_paths(self._cls)
+
+    def __getitem__(self, key: str) -> list[str]:
+        return self._paths()[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._paths())
+
+    def __len__(self) -> int:
+        return len(self._paths())
 
 
 @functools.cache
@@ -295,7 +349,7 @@ def schema_paths(cls: type, prefix: str = "") -> dict[str, list[str]]:
 
 
 def build_section(cls: type, raw: Any, path: str, problems: list[Problem],
-                  all_paths: dict[str, list[str]]) -> Any:
+                  all_paths: Mapping[str, list[str]]) -> Any:
     """Build ``cls`` from raw TOML data at ``path``; append every problem found; None on failure."""
     if not isinstance(raw, dict):
         problems.append(Problem(path, f"must be a table, not {_type_name(raw)}", raw))
@@ -315,7 +369,7 @@ def build_section(cls: type, raw: Any, path: str, problems: list[Problem],
         fpath = f"{path}.{key}" if path else key
         if key not in raw:
             if f.default is dataclasses.MISSING:
-                what = "section" if shape.section is not None else "field"
+                what = "section" if shape.kind in ("section", "sections") else "field"
                 problems.append(Problem(fpath, f"required {what} is missing", None,
                                         _describe_expected(shape, info)))
                 ok = False
@@ -355,7 +409,7 @@ def _describe_expected(shape: Shape, info: FieldInfo) -> str:
 
 
 def _convert(value: Any, shape: Shape, info: FieldInfo, path: str, problems: list[Problem],
-             all_paths: dict[str, list[str]]) -> Any:
+             all_paths: Mapping[str, list[str]]) -> Any:
     kind = shape.kind
     if kind == "number":
         x = _check_number(value, info, path, problems)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from camtrain.catalogue import DEFAULT_KIND, KINDS
-from camtrain.deck.fields import build_section, schema_paths
+from camtrain.deck.fields import SchemaPaths, build_section
 from camtrain.deck.schema import Deck
 from camtrain.errors import InputError, Problem
 
@@ -87,7 +87,7 @@ def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
     if "kind" in raw and not any(f.name == "kind" for f in dataclasses.fields(schema)):
         raw = {k: v for k, v in raw.items() if k != "kind"}  # a schema without its own kind key
     problems: list[Problem] = []
-    deck = build_section(schema, raw, "", problems, schema_paths(schema))
+    deck = build_section(schema, raw, "", problems, SchemaPaths(schema))
     if deck is None or problems:
         raise InputError(problems or [Problem("", "invalid deck")], source=name)
     if isinstance(deck, Deck):

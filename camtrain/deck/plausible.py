@@ -33,7 +33,7 @@ def _walk(obj, path: str, out: list[str]) -> None:
         key = deck_key(f)
         where = f"{path}.{key}" if path else key
         value = getattr(obj, f.name, None)
-        if shape.section is not None:
+        if shape.kind in ("section", "sections"):   # None (absent) walks nothing
             items = value if isinstance(value, tuple) else (value,)
             for i, item in enumerate(items):
                 _walk(item, f"{where}[{i}]" if isinstance(value, tuple) else where, out)

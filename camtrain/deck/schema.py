@@ -8,46 +8,19 @@ Values in the model are SI; units below are the units written in the deck.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from camtrain.catalogue import effect_names
 from camtrain.deck.fields import ExactlyOne, When, option, quantity, section
-from camtrain.deck.schema_camshaft import (  # noqa: F401 - re-exported: one schema namespace
-    CamBearing,
-    CamDamper,
-    CamDrive,
-    CamLobe,
-    Camshaft,
-)
-from camtrain.deck.schema_design import Design
-from camtrain.deck.schema_dynamics import Dynamics, dynamics_problems
-from camtrain.deck.schema_follower import (
-    ArmContacts,
-    Dyson,
-    Layout,
-    RollerFace,
-    dyson_from_layout,
-    layout_problems,
-)
 from camtrain.deck.schema_lift import (  # noqa: F401
+    DEFERRED_FORMS,
     LIFT_FORMS,
-    ElementaryHalf,
-    ExpPoly,
     FourPower,
     Lift,
-    LowJerkHalf,
-    Multipol,
-    Polynomial,
     Ramps,
-    Segment,
-    Table,
-    WilliamsElementary,
-    WilliamsLowJerk,
 )
-from camtrain.deck.schema_roller import Roller, roller_problems
 from camtrain.deck.schema_tribology import (  # noqa: F401
     Clearance,
-    Guides,
     Limits,
     Lubricant,
     Masses,
@@ -58,6 +31,35 @@ from camtrain.deck.schema_tribology import (  # noqa: F401
 )
 from camtrain.errors import Problem
 from camtrain.units import from_si, mm_text
+
+if TYPE_CHECKING:   # deferred sections (fields.section(schema=...)): imported when a deck has them
+    from camtrain.deck.schema_camshaft import Camshaft
+    from camtrain.deck.schema_design import Design
+    from camtrain.deck.schema_desmodromic import ClosingPair
+    from camtrain.deck.schema_dynamics import Dynamics
+    from camtrain.deck.schema_follower import ArmContacts, Dyson, Layout, RollerFace
+    from camtrain.deck.schema_guides import Guides
+    from camtrain.deck.schema_pushrod import Pushrod
+    from camtrain.deck.schema_roller import Roller
+
+#: the classes of the deferred sections, still one schema namespace: ``schema.Camshaft`` imports
+#: its module on first use (PEP 562)
+DEFERRED = {name: f"camtrain.deck.{module}:{name}" for module, names in (
+    ("schema_camshaft", ("CamBearing", "CamDamper", "CamDrive", "CamLobe", "Camshaft")),
+    ("schema_design", ("Design",)), ("schema_desmodromic", ("ClosingPair",)),
+    ("schema_dynamics", ("Dynamics",)), ("schema_guides", ("Guides",)),
+    ("schema_pushrod", ("Pushrod",)),
+    ("schema_follower", ("ArmContacts", "Dyson", "Layout", "RollerFace")),
+    ("schema_roller", ("Roller",))) for name in names} | DEFERRED_FORMS
+
+
+def __getattr__(name: str):
+    if name in DEFERRED:
+        import importlib
+
+        module, attribute = DEFERRED[name].split(":")
+        return getattr(importlib.import_module(module), attribute)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")
 PIVOTED = ("finger", "rocker")
@@ -96,79 +98,6 @@ class Speed:
 
 
 # --------------------------------------------------------------------------- mechanism
-
-@dataclass(frozen=True, kw_only=True)
-class Pushrod:
-    """Rocker and push rod between the valve and the follower on the cam (Williams 2013 ch 11)."""
-
-    layout: Literal["simple", "four_bar"] = option(
-        "simple: push rod on a translating tappet; four_bar: push rod on a pivoted finger "
-        "follower (mechanism.A, D, follower_radius describe that follower)", default="simple")
-    rocker_pushrod_arm: float = quantity("Rocker arm on the push-rod side, D1", "mm", gt=0,
-                                         example=35.0)
-    rocker_valve_arm: float = quantity("Rocker arm on the valve side, D2", "mm", gt=0,
-                                       example=50.0)
-    rocker_arm_angle: float = quantity("Angle between the two rocker arms, alpha_0", "deg",
-                                       default=0.0, gt=-90, lt=90, example=10.0)
-    valve_axis_angle: float = quantity("Angle between the vertical and the valve axis, gamma",
-                                       "deg", default=0.0, gt=-60, lt=60, example=15.0)
-    perpendicular_lift_fraction: float = quantity(
-        "Fraction of the maximum valve lift at which the valve arm is perpendicular to the "
-        "valve axis", "-", default=0.5, ge=0, le=1)
-    pushrod_length: float = quantity("Push-rod length D_PR", "mm", gt=0, example=200.0)
-    pushrod_cg_fraction: float = quantity(
-        "Distance of the push rod's centre of mass from its lower end, as a fraction of its "
-        "length", "-", default=0.5, ge=0, le=1)
-    tappet_axis_distance: float | None = quantity(
-        "Horizontal distance from the rocker pivot to the tappet axis, x_bar", "mm",
-        default=None, gt=0, example=43.3, applies="layout = simple")
-    rocker_pivot_x: float | None = quantity(
-        "Rocker pivot position relative to the follower pivot, horizontal (a)", "mm",
-        default=None, applies="layout = four_bar")
-    rocker_pivot_y: float | None = quantity(
-        "Rocker pivot position relative to the follower pivot, vertical (b)", "mm",
-        default=None, applies="layout = four_bar")
-    follower_pushrod_arm: float | None = quantity(
-        "Follower pivot to push-rod joint, e", "mm", default=None, gt=0,
-        applies="layout = four_bar")
-    closure: Literal[-1, 1] = option("Side of the line follower pivot - rocker tip on which "
-                                     "the push-rod joint lies", default=-1)
-    branch: Literal[-1, 1] = option("Assembly branch of the follower on the cam side",
-                                    default=1)
-
-    schema_rules = (
-        When("layout", ("simple",), require=("tappet_axis_distance",)),
-        When("layout", ("four_bar",),
-             require=("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")))
-
-    def problems(self, path: str) -> list[Problem]:
-        if self.layout == "simple" and self.tappet_axis_distance is None:
-            return [Problem(f"{path}.tappet_axis_distance", "is required for layout = simple",
-                            None, "a distance in mm")]
-        if self.layout == "four_bar":
-            return [Problem(f"{path}.{n}", "is required for layout = four_bar", None, "mm")
-                    for n in ("rocker_pivot_x", "rocker_pivot_y", "follower_pushrod_arm")
-                    if getattr(self, n) is None]
-        return []
-
-
-@dataclass(frozen=True, kw_only=True)
-class ClosingPair:
-    """The closing cam of a desmodromic train and its end-pivoted follower (Ball 1988 App F)."""
-
-    A: float = quantity("A: pivot to the centre of curvature of the follower face", "mm",
-                        gt=0, example=17.32)
-    B: float = quantity("B: pivot to the valve-contact pad", "mm", gt=0, example=32.39)
-    D: float = quantity("D: cam centre to pivot", "mm", gt=0, example=39.32)
-    kappa: float = quantity("kappa: angle between OU and the direction of valve motion", "deg",
-                            gt=-360, lt=360, example=-7.31)
-    lambda_: float = quantity("lambda: angle VUQ", "deg", gt=-360, lt=360, example=9.41,
-                              key="lambda")
-    follower_radius: float = quantity("Follower face radius r_f", "mm", gt=0, example=20.0)
-    base_radius: float = quantity("Base-circle radius of the closing cam", "mm", gt=0,
-                                  example=25.0)
-    width: float | None = quantity("Closing cam width", "mm", default=None, gt=0)
-
 
 @dataclass(frozen=True, kw_only=True)
 class Mechanism:
@@ -217,19 +146,21 @@ class Mechanism:
         "Largest grinding-wheel radius (Ball's minimum cam concavity); concave flanks must be "
         "less curved than this", "mm", default=None, gt=0)
     pushrod: Pushrod | None = section("Push rod and rocker geometry (Williams 2013 ch 11)",
-                                      applies="pushrod")
+                                      applies="pushrod", schema=DEFERRED["Pushrod"])
     closing: ClosingPair | None = section(
         "Closing cam and its end-pivoted follower; the fields above describe the opening pair "
-        "(centrally pivoted)", applies="desmodromic")
+        "(centrally pivoted)", applies="desmodromic", schema=DEFERRED["ClosingPair"])
     roller: RollerFace | None = section(
         "The roller of a roller follower (follower = \"roller\"): crown, mass",
-        applies="follower = roller")
+        applies="follower = roller", schema=DEFERRED["RollerFace"])
     layout: Layout | None = section(
         "A finger follower or rocker drawn by positions (pivot, roller centre, pad centre, "
-        "valve direction) instead of A, B, D, kappa, lambda", applies="finger, rocker")
+        "valve direction) instead of A, B, D, kappa, lambda", applies="finger, rocker",
+        schema=DEFERRED["Layout"])
     arm: ArmContacts | None = section(
         "Valve pad and pivot of a finger follower or rocker: pad sliding, load, Hertz stress "
-        "and friction, pivot friction torque", applies="finger, rocker")
+        "and friction, pivot friction torque", applies="finger, rocker",
+        schema=DEFERRED["ArmContacts"])
 
     schema_rules = (
         When("type", ("domed", "finger", "rocker", "desmodromic"), require=("follower_radius",)),
@@ -248,10 +179,12 @@ class Mechanism:
     def dyson(self) -> Dyson | None:
         """Dyson's A, B, D, kappa, lambda of a pivoted follower [m, rad]: from the fields, or
         from [mechanism.layout]; None when neither is complete."""
-        if self.layout is not None:
-            return dyson_from_layout(self.layout)
         values = [getattr(self, k) for k in DYSON_KEYS]
-        return None if any(v is None for v in values) else Dyson(*values)
+        if self.layout is None and any(v is None for v in values):
+            return None
+        from camtrain.deck.schema_follower import Dyson, dyson_from_layout
+
+        return dyson_from_layout(self.layout) if self.layout is not None else Dyson(*values)
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -361,22 +294,25 @@ class Deck:
     clearance: Clearance | None = section("Valve clearance or lash adjuster")
     materials: Materials = section("Materials (defaults: steel on steel)", default=Materials())
     lubricant: Lubricant | None = section("Lubricant (needed for film and friction)")
-    guides: Guides | None = section("Follower and valve guides (guide friction; needs lubricant)")
+    guides: Guides | None = section("Follower and valve guides (guide friction; needs lubricant)",
+                                    schema=DEFERRED["Guides"])
     solver: Solver = section("Solver resolution", default=Solver())
     tribology: Tribology = section("Tribology model options", default=Tribology())
     limits: Limits | None = section("Design limits checked by run --check")
     camshaft: Camshaft | None = section(
         "The camshaft carrying copies of this valve train: lobes, bearings, drive (camshaft torque "
-        "and bearing effects)")
+        "and bearing effects)", schema=DEFERRED["Camshaft"])
     dynamics: Dynamics | None = section(
         "Elastic valve train in time: contact loss, spring surge, valve seating (the dynamic "
-        "contact load replaces the rigid train's)")
+        "contact load replaces the rigid train's)", schema=DEFERRED["Dynamics"])
     design: Design | None = section(
-        "Valve events and limits from which camtrain design builds a lift law (a run ignores it)")
+        "Valve events and limits from which camtrain design builds a lift law (a run ignores it)",
+        schema=DEFERRED["Design"])
     roller: Roller | None = section(
         "The follower's roller turning on its pin: inertia, pin bearing, traction, solver "
         "(radius: mechanism.follower_radius)",
-        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod")
+        applies="domed (follower_shape = cylindrical), finger, rocker, pushrod",
+        schema=DEFERRED["Roller"])
 
     def problems(self, path: str) -> list[Problem]:
         out = []
@@ -402,8 +338,16 @@ class Deck:
                                "on a roller", f"{from_si(self.cam.taper_angle, 'deg'):g} deg",
                                "0 with mechanism.follower = \"roller\""))
         if mech.layout is not None and mech.type in PIVOTED:
+            from camtrain.deck.schema_follower import layout_problems
+
             out.extend(layout_problems(mech.layout, "mechanism.layout", self.cam.base_radius,
                                        mech.follower_radius))
-        out.extend(dynamics_problems(self))
-        out.extend(roller_problems(self))
+        if self.dynamics is not None:   # its checks against the rest of the deck
+            from camtrain.deck.schema_dynamics import dynamics_problems
+
+            out.extend(dynamics_problems(self))
+        if self.roller is not None:
+            from camtrain.deck.schema_roller import roller_problems
+
+            out.extend(roller_problems(self))
         return out

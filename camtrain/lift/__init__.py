@@ -3,7 +3,7 @@
 Every law is a ``LiftLaw``: build it from SI parameters (m, rad), then ``evaluate(theta)`` returns
 a ``LiftCurve`` (lift, d1, d2, d3 per radian) for any cam angles, periodic over one revolution, in
 the angle convention of ``camtrain.lift.base``. ``REGISTRY`` maps the deck's form names to the
-classes.
+classes. Each law's module is imported when its class is first asked for.
 """
 from camtrain.lift.base import (
     DEG,
@@ -14,30 +14,42 @@ from camtrain.lift.base import (
     angle_grid,
     evaluate_on_grid,
 )
-from camtrain.lift.exp_poly import ExpPolyLift
-from camtrain.lift.four_power import FourPowerLift
-from camtrain.lift.multipol import MultipolLift, Segment
-from camtrain.lift.polynomial import PolynomialLift, polydyne_coefficients
-from camtrain.lift.ramps import Ramps
-from camtrain.lift.spline import SplineLift
-from camtrain.lift.table import TableLift, TableNoise
-from camtrain.lift.williams import (
-    ElementaryHalf,
-    LowJerkHalf,
-    WilliamsElementaryLift,
-    WilliamsLowJerkLift,
-)
 
-REGISTRY: dict[str, type[LiftLaw]] = {
-    "four_power": FourPowerLift,
-    "multipol": MultipolLift,
-    "table": TableLift,
-    "exp_poly": ExpPolyLift,
-    "polynomial": PolynomialLift,
-    "williams_elementary": WilliamsElementaryLift,
-    "williams_low_jerk": WilliamsLowJerkLift,
-    "spline": SplineLift,
+#: every law's class and its parts by name -> the module under camtrain.lift that holds it:
+#: imported on first use (PEP 562), so that a deck pays only for the lift law it uses
+_LAZY = {
+    "ExpPolyLift": "exp_poly", "FourPowerLift": "four_power", "MultipolLift": "multipol",
+    "Segment": "multipol", "PolynomialLift": "polynomial", "polydyne_coefficients": "polynomial",
+    "Ramps": "ramps", "SplineLift": "spline", "TableLift": "table", "TableNoise": "table",
+    "ElementaryHalf": "williams", "LowJerkHalf": "williams",
+    "WilliamsElementaryLift": "williams", "WilliamsLowJerkLift": "williams",
 }
+
+#: the deck's form names -> the name of the law's class (``REGISTRY``: the classes themselves)
+FORMS = {
+    "four_power": "FourPowerLift",
+    "multipol": "MultipolLift",
+    "table": "TableLift",
+    "exp_poly": "ExpPolyLift",
+    "polynomial": "PolynomialLift",
+    "williams_elementary": "WilliamsElementaryLift",
+    "williams_low_jerk": "WilliamsLowJerkLift",
+    "spline": "SplineLift",
+}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(f"camtrain.lift.{_LAZY[name]}"), name)
+    elif name == "REGISTRY":    # every law's class: imports them all
+        value = {form: __getattr__(cls) for form, cls in FORMS.items()}
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "DEG", "MM", "REGISTRY", "ElementaryHalf", "ExpPolyLift", "FourPowerLift", "JointJump",

@@ -1,15 +1,38 @@
 """Follower kinematics: valve-lift law -> contact kinematics at every cam angle.
 
 One module per follower family; every builder returns a :class:`Kinematics` (SI units) and
-raises :class:`camtrain.errors.GeometryError` when the geometry cannot work.
+raises :class:`camtrain.errors.GeometryError` when the geometry cannot work. A family's module is
+imported when one of its names is first asked for.
 """
 from camtrain.mechanisms.base import ANTICLOCKWISE, CLOCKWISE, Kinematics, TrainKinematics, analyse
-from camtrain.mechanisms.conversion import valve_lift_from_cam_lift
+
+# `pivoted` and `desmodromic` name a module and the builder in it: importing the module (from
+# anywhere) sets the package's attribute to the module, which a lazy name cannot undo, so the
+# builders are bound here, after their modules
 from camtrain.mechanisms.desmodromic import DesmodromicKinematics, desmodromic
 from camtrain.mechanisms.pivot_geometry import PivotGeometry, rescale_pivot_geometry
 from camtrain.mechanisms.pivoted import centrally_pivoted, end_pivoted, pivoted
-from camtrain.mechanisms.pushrod import FourBarGeometry, RockerGeometry, pushrod_four_bar, pushrod_simple
-from camtrain.mechanisms.translating import domed, flat_faced, tapered_domed
+
+#: the other families' builders and geometry by name -> the module under camtrain.mechanisms
+#: that holds them: imported on first use (PEP 562), so that a deck pays only for its own
+#: follower (a name here must not be a module's name, see above)
+_LAZY = {
+    "valve_lift_from_cam_lift": "conversion",
+    "FourBarGeometry": "pushrod", "RockerGeometry": "pushrod", "pushrod_four_bar": "pushrod",
+    "pushrod_simple": "pushrod",
+    "domed": "translating", "flat_faced": "translating", "tapered_domed": "translating",
+}
+
+
+def __getattr__(name: str):
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"camtrain.mechanisms.{_LAZY[name]}"), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "ANTICLOCKWISE", "CLOCKWISE", "DesmodromicKinematics", "FourBarGeometry", "Kinematics",

@@ -242,7 +242,8 @@ def _derived(problem: Problem, x: tuple[float, ...], metrics: dict,
     from camtrain.tabulate.lift import lift_curve
 
     if designed is not None:      # the case's own lift, designed from its events
-        from camtrain.deck.schema_lift import Lift, Spline
+        from camtrain.deck.schema_lift import Lift
+        from camtrain.deck.schema_lift_spline import Spline
         from camtrain.units import to_si
 
         spline = Spline(degree=designed["degree"],
