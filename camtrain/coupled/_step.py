@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury
+from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury, woodbury_hla
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
 from camtrain.coupled.adjuster_step import add_chamber_forces, restart_sealed
 from camtrain.coupled.records import LobeAt
@@ -91,7 +91,18 @@ def _friction_force(fric, work, lay, lob):
 
 
 @njit(cache=True, inline="always")
-def _substep(tau, sys, st, fric, at, x, stagger):
+def _update(x0, basis, G, z, x, sys, st, ends, a1, upd):
+    """The low-rank contact update (:mod:`._lowrank`) with the arrays it reads, the lash
+    adjusters' form with them (``sys.hla.on``); ``ends`` the contacts' inputs at the end."""
+    if sys.hla.on:
+        woodbury_hla(x0, basis, G, z, x, st.q, st.v, st.act_c, st.act_s, ends, sys.uni, a1, upd,
+                     sys.hla, st.hp, st.hp_end)
+    else:
+        woodbury(x0, basis, G, z, x, st.q, st.v, st.act_c, st.act_s, ends, sys.uni, a1, upd)
+
+
+@njit(cache=True, inline="always")
+def _substep(tau, sys, st, fric, at, x, stagger, upd):
     """A Newmark step of length ``tau`` from the state with the contact states fixed, the
     linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
     shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
@@ -135,6 +146,7 @@ def _substep(tau, sys, st, fric, at, x, stagger):
             for i in range(size):
                 basis[lo + i, col] = S[i, 1 + c]
     z = np.zeros(w * lobes)     # friction is in the right-hand side already
+    ends = at       # the contacts' inputs at the sub-step's end
     if stagger:     # the shaft's part of x0 is final: no contact column reaches it
         v0 = np.empty(n)
         for i in range(n):
@@ -142,9 +154,8 @@ def _substep(tau, sys, st, fric, at, x, stagger):
         pre = LobeAt(np.empty(lobes), np.empty(lobes), np.zeros(lobes), np.zeros(lobes),
                      np.zeros(lobes))
         prescribed_inputs(x0, v0, at, lay, pre)
-        woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, pre, a1, x, sys.hla)
-        return
-    woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x, sys.hla)
+        ends = pre
+    _update(x0, basis, basis_rows(basis, lay), z, x, sys, st, ends, a1, upd)
 
 
 @njit(cache=True, inline="always")
@@ -272,7 +283,7 @@ def _split(sys, st, work, at, lob, s, stagger):
         if h <= 1e-12 * dt:
             break
         if switches > 0:   # the full step with the start's states is x, v1 already
-            _substep(h, sys, st, fric, at, x, stagger)
+            _substep(h, sys, st, fric, at, x, stagger, work.upd)
             for i in range(n):
                 work.v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
         first, seat, alpha = _first_crossing(sys, st, work, at, lob, s, tau, h)
@@ -288,7 +299,7 @@ def _split(sys, st, work, at, lob, s, stagger):
         hs = alpha * h
         set_inputs(at, lob, s, (tau + hs) / dt, dt)
         if hs > 1e-12 * dt:
-            _substep(hs, sys, st, fric, at, x, stagger)
+            _substep(hs, sys, st, fric, at, x, stagger, work.upd)
             for i in range(n):
                 v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
                 q[i] = x[i]
@@ -345,6 +356,7 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
         zf[w * j] = -work.tang[j] * lob.sina[j]
         zf[w * j + 1] = work.tang[j] * lob.cosa[j]
         zf[w * j + 2] = -work.fr[j] * work.arm[j]
+    ends = at       # the contacts' inputs at the step's end
     if stagger:     # the shaft first, under the predicted loads; the trains on its motion
         add_shaft_loads(zf, work.w_pred, at)
         for i in range(n):
@@ -354,9 +366,8 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
             x[i] = total_x
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         prescribed_inputs(x, v1, at, lay, pre)
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, pre, a1, x, sys.hla)
-    else:
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x, sys.hla)
+        ends = pre
+    _update(base, step.basis, step.G, zf, x, sys, st, ends, a1, work.upd)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
     if _changes(lay, sys.uni, st, x, v1, at):
