@@ -52,25 +52,25 @@ def dof_table(lay) -> np.ndarray:
 
 @njit(cache=True)
 def basis_rows(basis, lay):
-    """G = the rows of ``basis`` at every lobe's W contact coordinates (W L x W L)."""
+    """G = the entries of ``basis`` (W L x n, one row per contact coordinate) at every lobe's
+    W contact coordinates (W L x W L): G[r, c] = basis[c, dof of r]."""
     lobes, w = lay.ix.size, width(lay)
     G = np.empty((w * lobes, w * lobes))
     for j in range(lobes):
         dofs = lobe_dofs(lay, j)
         for e in range(w):
             for c in range(w * lobes):
-                G[w * j + e, c] = basis[dofs[e], c]
+                G[w * j + e, c] = basis[c, dofs[e]]
     return G
 
 
 @njit(cache=True, inline="always")
-def _contact_rows(z, q, v, act_c, act_s, at, uni, a1, upd, w):
+def _contact_rows(z, q, v, act_c, act_s, at, laws, a1, upd, w):
     """Every closed contact's gradient (``upd.coef``, on its lobe's coordinates), lobe
     (``upd.lobe_of``) and stiffness k + a1 c (``upd.kk``); their constant forces subtracted
     from ``z``. Returns their number m."""
     coef, lobe_of, kk, dof = upd.coef, upd.lobe_of, upd.kk, upd.dof
-    kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
-    ks, cs, offs = uni.k[1], uni.c[1], uni.off[1]
+    kc, cc, offc, ks, cs, offs = laws
     m = 0
     for j in range(act_c.size):
         ix, iy, iphi, ifol, ival = dof[j, 0], dof[j, 1], dof[j, 2], dof[j, 3], dof[j, 4]
@@ -159,7 +159,9 @@ def _rhs(G, z, m, upd, w):
 
 @njit(cache=True, inline="always")
 def _finish(x0, basis, z, small, m, upd, w, x):
-    """The contacts' forces y = S^-1 rhs taken off ``z``, then x = x0 + basis z."""
+    """The contacts' forces y = S^-1 rhs taken off ``z``, then x = x0 + basis^T z (row by row
+    of ``basis``: every x[i] sums its terms in the same order as a dot product per i would,
+    over contiguous memory)."""
     if m > 0:
         coef, lobe_of = upd.coef, upd.lobe_of
         y = np.linalg.solve(small, upd.rhs[:m])
@@ -167,39 +169,40 @@ def _finish(x0, basis, z, small, m, upd, w, x):
             jc = lobe_of[c]
             for f in range(w):
                 z[w * jc + f] -= coef[c, f] * y[c]
-    nc = z.size
-    for i in range(x0.size):
-        total = x0[i]
-        for b in range(nc):
-            total += basis[i, b] * z[b]
-        x[i] = total
+    n = x0.size
+    for i in range(n):
+        x[i] = x0[i]
+    for b in range(z.size):
+        zb = z[b]
+        for i in range(n):
+            x[i] += basis[b, i] * zb
 
 
 @njit(cache=True)
-def woodbury(x0, basis, G, z, x, q, v, act_c, act_s, at, uni, a1, upd):
+def woodbury(x0, basis, G, z, x, q, v, act_c, act_s, at, laws, a1, upd):
     """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
-    ``basis`` = A^-1 E the columns of A^-1 at every lobe's five contact coordinates (x, y,
-    phi, follower, valve; ``upd.dof``), ``G`` its rows there (:func:`basis_rows`), ``z``
+    ``basis`` = (A^-1 E)^T the columns of A^-1 at every lobe's five contact coordinates (x, y,
+    phi, follower, valve; ``upd.dof``) as rows, ``G`` their entries there (:func:`basis_rows`), ``z``
     forces on those coordinates (friction; overwritten), (q, v) and the contact states
     (act_c, act_s) of the step's start, every lobe's inputs at the step's end ``at``, the
-    contact laws ``uni``, a1 = 2 / step, the workspace ``upd``. Every contact gradient h lies
+    contact laws ``laws`` (k, c, off of the cam, then of the seat), a1 = 2 / step, the workspace ``upd``. Every contact gradient h lies
     in its lobe's coordinates, so the update works on 5 L numbers and touches the full state
     once. Without lash adjusters (:func:`woodbury_hla` with them)."""
     w = PLAIN_WIDTH
-    m = _contact_rows(z, q, v, act_c, act_s, at, uni, a1, upd, w)
+    m = _contact_rows(z, q, v, act_c, act_s, at, laws, a1, upd, w)
     _gather(x0, upd, w)
     small = _reduced(G, z, m, upd, w, True)
     _finish(x0, basis, z, small, m, upd, w, x)
 
 
 @njit(cache=True)
-def woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, at, uni, a1, upd, hla, hp, hp_end):
+def woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, at, laws, a1, upd, hla, hp, hp_end):
     """:func:`woodbury` with a lash adjuster on every train (six coordinates per lobe, the
     plunger the sixth): the chambers' forces (record ``hla``, states ``hp`` at the step's
     start) into ``z`` and their end states into ``hp_end``
     (:func:`camtrain.coupled.adjuster_step.solve_chambers`), then the contacts' solve."""
     w = HLA_WIDTH
-    m = _contact_rows(z, q, v, act_c, act_s, at, uni, a1, upd, w)
+    m = _contact_rows(z, q, v, act_c, act_s, at, laws, a1, upd, w)
     _gather(x0, upd, w)
     small = _reduced(G, z, m, upd, w, False)
     solve_chambers(upd.xc, G, z, upd.coef, upd.lobe_of, small, m, q, v, hp, upd.dof, hla, a1,

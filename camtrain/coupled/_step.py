@@ -65,11 +65,27 @@ def set_inputs(at, lob, s, frac, dt):
         at.b[j], at.bd[j], at.gx[j], at.gy[j], at.gphi[j] = _inputs(lob, j, s, frac, dt)
 
 
+@njit(cache=True, inline="always")
+def contact_laws(uni):
+    """The cam's and the seat's contact laws as six numbers (k, c, off of the cam, then of the
+    seat), handed down the step instead of the record of three arrays (every compiled call
+    counts an array argument's references in and out, the numbers cost nothing)."""
+    return uni.k[0], uni.c[0], uni.off[0], uni.k[1], uni.c[1], uni.off[1]
+
+
+@njit(cache=True)
+def gap_of(base, gx, gy, gphi, zx, zy, zphi, zfol):
+    """A cam contact's compression (``base`` = b + offset) or its rate (``base`` = b') from
+    its lobe's coordinates: base - z_fol + gx z_x + gy z_y + gphi z_phi (numbers only, so that
+    the per-lobe loops of every step pass no array)."""
+    return base - zfol + gx * zx + gy * zy + gphi * zphi
+
+
 @njit(cache=True)
 def cam_gap(z, zd, j, ix, iy, iphi, ifol, offc, bj, bdj, gxj, gyj, gphij):
     """Cam contact j's compression delta and its rate for displacements z, velocities zd."""
-    d = bj + offc - z[ifol[j]] + gxj * z[ix[j]] + gyj * z[iy[j]] + gphij * z[iphi[j]]
-    dd = bdj - zd[ifol[j]] + gxj * zd[ix[j]] + gyj * zd[iy[j]] + gphij * zd[iphi[j]]
+    d = gap_of(bj + offc, gxj, gyj, gphij, z[ix[j]], z[iy[j]], z[iphi[j]], z[ifol[j]])
+    dd = gap_of(bdj, gxj, gyj, gphij, zd[ix[j]], zd[iy[j]], zd[iphi[j]], zd[ifol[j]])
     return d, dd
 
 
@@ -91,14 +107,17 @@ def _friction_force(fric, work, lay, lob):
 
 
 @njit(cache=True, inline="always")
-def _update(x0, basis, G, z, x, sys, st, ends, a1, upd):
-    """The low-rank contact update (:mod:`._lowrank`) with the arrays it reads, the lash
-    adjusters' form with them (``sys.hla.on``); ``ends`` the contacts' inputs at the end."""
-    if sys.hla.on:
-        woodbury_hla(x0, basis, G, z, x, st.q, st.v, st.act_c, st.act_s, ends, sys.uni, a1, upd,
-                     sys.hla, st.hp, st.hp_end)
+def _update(x0, basis, G, z, x, q, v, act_c, act_s, hp, hp_end, ends, a1, upd, laws, hla):
+    """The low-rank contact update (:mod:`._lowrank`), the lash adjusters' form with them
+    (``hla.on``; the chambers' states ``hp`` into ``hp_end``): (q, v) and the contact states
+    of the step's start, ``ends`` the contacts' inputs at the end, ``laws`` the contact laws
+    (:func:`contact_laws`). Only arrays and numbers: a record in the scope of the update's
+    call has every array of it counted in before the call and out after it, at every step."""
+    if hla.on:
+        woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd, hla, hp,
+                     hp_end)
     else:
-        woodbury(x0, basis, G, z, x, st.q, st.v, st.act_c, st.act_s, ends, sys.uni, a1, upd)
+        woodbury(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd)
 
 
 @njit(cache=True, inline="always")
@@ -112,7 +131,7 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
     lobes, w = lay.ix.size, width(lay)
     a1 = 2.0 / tau
     x0 = np.empty(n)
-    basis = np.zeros((n, w * lobes))
+    basis = np.zeros((w * lobes, n))     # one row per contact coordinate (Stepper.basis)
     K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
     q, v, acc = st.q, st.v, st.acc
     a0 = 4.0 / (tau * tau)
@@ -144,7 +163,7 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
         for c in range(len(cols)):
             col = cols[c][0]
             for i in range(size):
-                basis[lo + i, col] = S[i, 1 + c]
+                basis[col, lo + i] = S[i, 1 + c]
     z = np.zeros(w * lobes)     # friction is in the right-hand side already
     ends = at       # the contacts' inputs at the sub-step's end
     if stagger:     # the shaft's part of x0 is final: no contact column reaches it
@@ -155,7 +174,8 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
                      np.zeros(lobes))
         prescribed_inputs(x0, v0, at, lay, pre)
         ends = pre
-    _update(x0, basis, basis_rows(basis, lay), z, x, sys, st, ends, a1, upd)
+    _update(x0, basis, basis_rows(basis, lay), z, x, q, v, st.act_c, st.act_s, st.hp,
+            st.hp_end, ends, a1, upd, contact_laws(sys.uni), sys.hla)
 
 
 @njit(cache=True, inline="always")
@@ -316,7 +336,7 @@ def _split(sys, st, work, at, lob, s, stagger):
 
 
 @njit(cache=True, inline="always")
-def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
+def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh, laws):
     """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
     ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the
     summed lobe torque of the last step (the belt's pull). ``stagger``: the shaft under the
@@ -325,7 +345,8 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
     contact and friction forces, P = A^-1 M, Q = A^-1 C) is still that of the same start, from
     the step's previous pass. The drive's angular acceleration at the step's end
     (``lob.drive_acc``) loads the twist, measured from the drive, with -J theta''. Returns the
-    contact changes located and whether the step had more than MAX_SWITCHES."""
+    contact changes located and whether the step had more than MAX_SWITCHES. ``laws``: the
+    contact laws as numbers (:func:`contact_laws`)."""
     step, drive, lay = sys.step, sys.drive, sys.lay
     q, v, acc = st.q, st.v, st.acc
     base, hub, zf, x, v1 = work.base, work.hub, work.zf, work.x, work.v1
@@ -360,17 +381,20 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
     if stagger:     # the shaft first, under the predicted loads; the trains on its motion
         add_shaft_loads(zf, work.w_pred, at)
         for i in range(n):
-            total_x = base[i]
-            for c in range(w * lobes):
-                total_x += step.basis[i, c] * zf[c]
-            x[i] = total_x
+            x[i] = base[i]
+        for c in range(w * lobes):
+            zc = zf[c]
+            for i in range(n):
+                x[i] += step.basis[c, i] * zc
+        for i in range(n):
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         prescribed_inputs(x, v1, at, lay, pre)
         ends = pre
-    _update(base, step.basis, step.G, zf, x, sys, st, ends, a1, work.upd)
+    _update(base, step.basis, step.G, zf, x, q, v, st.act_c, st.act_s, st.hp, st.hp_end, ends,
+            a1, work.upd, laws, sys.hla)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
-    if _changes(lay, sys.uni, st, x, v1, at):
+    if _changes(x, v1, st.act_c, st.act_s, work.upd.dof, at, laws):
         return _split(sys, st, work, at, lob, s, stagger)
     for i in range(n):
         acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
@@ -381,13 +405,18 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
 
 
 @njit(cache=True)
-def _changes(lay, uni, st, x, v1, at):
-    """Whether any contact's state differs at the trial step's end (x, v1) from its start."""
-    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
-    for j in range(ix.size):
-        pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
-                                                 at.b[j], at.bd[j], at.gx[j], at.gy[j],
-                                                 at.gphi[j])
-        if (pc > 0.0) != st.act_c[j] or (ps > 0.0) != st.act_s[j]:
+def _changes(x, v1, act_c, act_s, dof, at, laws):
+    """Whether any contact's state (``act_c``, ``act_s``) differs at the trial step's end
+    (x, v1) from its start: every lobe's indicators as :func:`_indicators` forms them, from
+    its state indices ``dof`` and the contact laws ``laws`` (:func:`contact_laws`)."""
+    kc, cc, offc, ks, cs, offs = laws
+    for j in range(act_c.size):
+        ix, iy, iphi, ifol, ival = dof[j, 0], dof[j, 1], dof[j, 2], dof[j, 3], dof[j, 4]
+        gx, gy, gphi = at.gx[j], at.gy[j], at.gphi[j]
+        d = gap_of(at.b[j] + offc, gx, gy, gphi, x[ix], x[iy], x[iphi], x[ifol])
+        dd = gap_of(at.bd[j], gx, gy, gphi, v1[ix], v1[iy], v1[iphi], v1[ifol])
+        if (_psi(kc, cc, d, dd) > 0.0) != act_c[j]:
+            return True
+        if (_psi(ks, cs, offs - x[ival], -v1[ival]) > 0.0) != act_s[j]:
             return True
     return False

@@ -269,12 +269,12 @@ def _system(asm, train, drive, dt):
     # the plunger, where an adjuster's chamber pushes)
     lay = Layout(asm.ix, asm.iy, asm.iphi, asm.ifol, asm.ival, asm.valve, asm.blocks, ipl)
     width = 6 if hla.on else 5
-    ainv_basis = np.empty((n, width * n_lobes))
+    ainv_basis = np.empty((width * n_lobes, n))      # one row per coordinate (see Stepper)
     for j in range(n_lobes):
         dofs = (asm.ix[j], asm.iy[j], asm.iphi[j], asm.ifol[j], asm.ival[j], ipl[j] if hla.on
                 else -1)
         for k in range(width):
-            ainv_basis[:, width * j + k] = Ainv[:, dofs[k]]
+            ainv_basis[width * j + k, :] = Ainv[:, dofs[k]]
     hub_basis = (np.ascontiguousarray(Ainv[:, [hub_x, hub_y]]) if hub_x >= 0
                  else np.zeros((n, 2)))
     drive_j = np.zeros(n)      # J 1 on the twist coordinates: the drive's inertia load

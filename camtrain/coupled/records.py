@@ -33,8 +33,10 @@ Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks ipl")
 #: the linear part: K, C, M, the block-diagonal inverse of M, the constant forces f0
 Matrices = namedtuple("Matrices", "K C M Minv f0")
 
-#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, A^-1 at
-#: every lobe's five contact coordinates (basis) and its rows there (G)
+#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, the
+#: columns of A^-1 at every lobe's contact coordinates stored as rows (basis, W L x n: the
+#: update's x0 + basis^T z runs along contiguous rows, which the compiler vectorises) and
+#: their entries at those coordinates (G)
 Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 P Q basis G")
 
 #: the drive: hub-load coordinates (x, y; -1 without), direction (cos, sin), pitch radius,
