@@ -182,12 +182,13 @@ def _finish(x0, basis, z, small, m, upd, w, x):
 def woodbury(x0, basis, G, z, x, q, v, act_c, act_s, at, laws, a1, upd):
     """x = (A + sum_active kappa h h^T)^-1 (r + E z - sum_active h f0): ``x0`` = A^-1 r,
     ``basis`` = (A^-1 E)^T the columns of A^-1 at every lobe's five contact coordinates (x, y,
-    phi, follower, valve; ``upd.dof``) as rows, ``G`` their entries there (:func:`basis_rows`), ``z``
-    forces on those coordinates (friction; overwritten), (q, v) and the contact states
-    (act_c, act_s) of the step's start, every lobe's inputs at the step's end ``at``, the
-    contact laws ``laws`` (k, c, off of the cam, then of the seat), a1 = 2 / step, the workspace ``upd``. Every contact gradient h lies
-    in its lobe's coordinates, so the update works on 5 L numbers and touches the full state
-    once. Without lash adjusters (:func:`woodbury_hla` with them)."""
+    phi, follower, valve; ``upd.dof``) as rows, ``G`` their entries there
+    (:func:`basis_rows`), ``z`` forces on those coordinates (friction; overwritten), (q, v)
+    and the contact states (act_c, act_s) of the step's start, every lobe's inputs at the
+    step's end ``at``, the contact laws ``laws`` (k, c, off of the cam, then of the seat),
+    a1 = 2 / step, the workspace ``upd``. Every contact gradient h lies in its lobe's
+    coordinates, so the update works on 5 L numbers and touches the full state once. Without
+    lash adjusters (:func:`woodbury_hla` with them)."""
     w = PLAIN_WIDTH
     m = _contact_rows(z, q, v, act_c, act_s, at, laws, a1, upd, w)
     _gather(x0, upd, w)
