@@ -50,6 +50,14 @@ def dof_table(lay) -> np.ndarray:
     return np.ascontiguousarray(np.stack(columns, axis=1).astype(np.int64))
 
 
+@njit(cache=True, inline="always")
+def contact_laws(uni):
+    """The cam's and the seat's contact laws as six numbers (k, c, off of the cam, then of the
+    seat), handed down the step instead of the record of three arrays (every compiled call
+    counts an array argument's references in and out, the numbers cost nothing)."""
+    return uni.k[0], uni.c[0], uni.off[0], uni.k[1], uni.c[1], uni.off[1]
+
+
 @njit(cache=True)
 def basis_rows(basis, lay):
     """G = the entries of ``basis`` (W L x n, one row per contact coordinate) at every lobe's
@@ -210,3 +218,17 @@ def woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, at, laws, a1, upd, hla,
                    hp_end)
     _rhs(G, z, m, upd, w)
     _finish(x0, basis, z, small, m, upd, w, x)
+
+
+@njit(cache=True, inline="always")
+def update(x0, basis, G, z, x, q, v, act_c, act_s, hp, hp_end, ends, a1, upd, laws, hla):
+    """The low-rank contact update of a step or sub-step, the lash adjusters' form with them
+    (``hla.on``; the chambers' states ``hp`` into ``hp_end``): (q, v) and the contact states
+    of the step's start, ``ends`` the contacts' inputs at the end, ``laws`` the contact laws
+    (:func:`contact_laws`). Only arrays and numbers: a record in the scope of the update's call
+    has every array of it counted in before the call and out after it, at every step."""
+    if hla.on:
+        woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd, hla, hp,
+                     hp_end)
+    else:
+        woodbury(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd)

@@ -20,8 +20,9 @@ import numpy as np
 from numba import njit
 
 from camtrain.coupled._film_kernel import film_step, table_coefficient
+from camtrain.coupled._lowrank import contact_laws
 from camtrain.coupled._partition import predict_loads
-from camtrain.coupled._step import advance, cam_gap, contact_laws, gap_of
+from camtrain.coupled._step import advance, cam_gap, gap_of
 from camtrain.coupled.adjuster_step import sample_chambers
 from camtrain.numerics.compile_notice import announce
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury, woodbury_hla
+from camtrain.coupled._lowrank import basis_rows, contact_laws, lobe_dofs, update, width
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
 from camtrain.coupled.adjuster_step import add_chamber_forces, restart_sealed
 from camtrain.coupled.records import LobeAt
@@ -65,14 +65,6 @@ def set_inputs(at, lob, s, frac, dt):
         at.b[j], at.bd[j], at.gx[j], at.gy[j], at.gphi[j] = _inputs(lob, j, s, frac, dt)
 
 
-@njit(cache=True, inline="always")
-def contact_laws(uni):
-    """The cam's and the seat's contact laws as six numbers (k, c, off of the cam, then of the
-    seat), handed down the step instead of the record of three arrays (every compiled call
-    counts an array argument's references in and out, the numbers cost nothing)."""
-    return uni.k[0], uni.c[0], uni.off[0], uni.k[1], uni.c[1], uni.off[1]
-
-
 @njit(cache=True)
 def gap_of(base, gx, gy, gphi, zx, zy, zphi, zfol):
     """A cam contact's compression (``base`` = b + offset) or its rate (``base`` = b') from
@@ -104,20 +96,6 @@ def _friction_force(fric, work, lay, lob):
         fric[lay.ix[j]] += -work.tang[j] * lob.sina[j]
         fric[lay.iy[j]] += work.tang[j] * lob.cosa[j]
         fric[lay.iphi[j]] += -work.fr[j] * work.arm[j]
-
-
-@njit(cache=True, inline="always")
-def _update(x0, basis, G, z, x, q, v, act_c, act_s, hp, hp_end, ends, a1, upd, laws, hla):
-    """The low-rank contact update (:mod:`._lowrank`), the lash adjusters' form with them
-    (``hla.on``; the chambers' states ``hp`` into ``hp_end``): (q, v) and the contact states
-    of the step's start, ``ends`` the contacts' inputs at the end, ``laws`` the contact laws
-    (:func:`contact_laws`). Only arrays and numbers: a record in the scope of the update's
-    call has every array of it counted in before the call and out after it, at every step."""
-    if hla.on:
-        woodbury_hla(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd, hla, hp,
-                     hp_end)
-    else:
-        woodbury(x0, basis, G, z, x, q, v, act_c, act_s, ends, laws, a1, upd)
 
 
 @njit(cache=True, inline="always")
@@ -174,8 +152,8 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
                      np.zeros(lobes))
         prescribed_inputs(x0, v0, at, lay, pre)
         ends = pre
-    _update(x0, basis, basis_rows(basis, lay), z, x, q, v, st.act_c, st.act_s, st.hp,
-            st.hp_end, ends, a1, upd, contact_laws(sys.uni), sys.hla)
+    update(x0, basis, basis_rows(basis, lay), z, x, q, v, st.act_c, st.act_s, st.hp,
+           st.hp_end, ends, a1, upd, contact_laws(sys.uni), sys.hla)
 
 
 @njit(cache=True, inline="always")
@@ -390,8 +368,8 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh, laws):
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         prescribed_inputs(x, v1, at, lay, pre)
         ends = pre
-    _update(base, step.basis, step.G, zf, x, q, v, st.act_c, st.act_s, st.hp, st.hp_end, ends,
-            a1, work.upd, laws, sys.hla)
+    update(base, step.basis, step.G, zf, x, q, v, st.act_c, st.act_s, st.hp, st.hp_end, ends,
+           a1, work.upd, laws, sys.hla)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
     if _changes(x, v1, st.act_c, st.act_s, work.upd.dof, at, laws):
