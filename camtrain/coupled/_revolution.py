@@ -20,8 +20,9 @@ import numpy as np
 from numba import njit
 
 from camtrain.coupled._film_kernel import film_step, table_coefficient
+from camtrain.coupled._lowrank import contact_laws
 from camtrain.coupled._partition import predict_loads
-from camtrain.coupled._step import advance, cam_gap
+from camtrain.coupled._step import advance, cam_gap, gap_of
 from camtrain.coupled.adjuster_step import sample_chambers
 from camtrain.numerics.compile_notice import announce
 
@@ -82,7 +83,7 @@ def _step_friction(s, lob, fric, st, work, at):
 
 
 @njit(cache=True, inline="always")
-def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
+def _passes(s, sys, lob, scheme, st, work, at, pre, torque, laws):
     """Step s: once (monolithic), or staggered passes until the load a pass produces agrees
     with its prediction within ``scheme.step_tol`` of the largest load (at least 1 N), each
     pass again from the step's start with the load the last one produced. Returns the contact
@@ -108,7 +109,7 @@ def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
                 act_c[j], act_s[j] = work.c_s[j], work.s_s[j]
                 work.w_pred[j] = work.w_end[j]
             st.hp[:] = work.hp_s
-        located, over = advance(s, sys, st, work, at, pre, lob, torque, stagger, it == 0)
+        located, over = advance(s, sys, st, work, at, pre, lob, torque, stagger, it == 0, laws)
         if not stagger or iterations == 1:
             break
         gap, top = 0.0, 1.0
@@ -129,18 +130,22 @@ def _passes(s, sys, lob, scheme, st, work, at, pre, torque):
 
 
 @njit(cache=True, inline="always")
-def _end_of_step(s, sys, lob, fric, st, at):
+def _end_of_step(s, sys, lob, fric, st, at, dof, laws):
     """The loads at the accepted step's end (never a pull) and every contact's film, marched
-    at its end load and speed."""
-    dt, lay, uni = sys.step.dt, sys.lay, sys.uni
-    kc, cc, offc = uni.k[0], uni.c[0], uni.off[0]
+    at its end load and speed (``dof`` every lobe's state indices, ``laws`` the contact laws
+    as numbers)."""
+    dt = sys.step.dt
+    kc, cc, offc = laws[0], laws[1], laws[2]
+    q, v = st.q, st.v
     for j in range(st.w_prev.size):
         st.w_older[j] = st.w_prev[j]
     for j in range(st.w_prev.size):
         w = 0.0
         if st.act_c[j]:
-            d, dd = cam_gap(st.q, st.v, j, lay.ix, lay.iy, lay.iphi, lay.ifol, offc, at.b[j],
-                            at.bd[j], at.gx[j], at.gy[j], at.gphi[j])
+            ix, iy, iphi, ifol = dof[j, 0], dof[j, 1], dof[j, 2], dof[j, 3]
+            gx, gy, gphi = at.gx[j], at.gy[j], at.gphi[j]
+            d = gap_of(at.b[j] + offc, gx, gy, gphi, q[ix], q[iy], q[iphi], q[ifol])
+            dd = gap_of(at.bd[j], gx, gy, gphi, v[ix], v[iy], v[iphi], v[ifol])
             w = kc * d + cc * dd
         st.w_prev[j] = w if w > 0.0 else 0.0
         if fric.film:     # the film of the accepted step, at its end load and speed
@@ -189,13 +194,14 @@ def revolution(sys, lob, fric, scheme, st, out, work, at, pre):
     grid = out.load.shape[1]
     substeps = scheme.substeps
     switches_total, cut, missed = 0, 0, 0
+    laws, dof = contact_laws(sys.uni), work.upd.dof
     for s in range(lob.b.shape[1]):
         torque = _step_friction(s, lob, fric, st, work, at)
-        located, over, miss = _passes(s, sys, lob, scheme, st, work, at, pre, torque)
+        located, over, miss = _passes(s, sys, lob, scheme, st, work, at, pre, torque, laws)
         switches_total += located
         cut += over
         missed += miss
-        _end_of_step(s, sys, lob, fric, st, at)
+        _end_of_step(s, sys, lob, fric, st, at, dof, laws)
         if (s + 1) % substeps == 0:
             g = ((s + 1) // substeps) % grid
             for j in range(st.w_prev.size):

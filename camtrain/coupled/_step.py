@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from camtrain.coupled._lowrank import basis_rows, lobe_dofs, width, woodbury
+from camtrain.coupled._lowrank import basis_rows, contact_laws, lobe_dofs, update, width
 from camtrain.coupled._partition import add_shaft_forces, add_shaft_loads, prescribed_inputs
 from camtrain.coupled.adjuster_step import add_chamber_forces, restart_sealed
 from camtrain.coupled.records import LobeAt
@@ -66,10 +66,18 @@ def set_inputs(at, lob, s, frac, dt):
 
 
 @njit(cache=True)
+def gap_of(base, gx, gy, gphi, zx, zy, zphi, zfol):
+    """A cam contact's compression (``base`` = b + offset) or its rate (``base`` = b') from
+    its lobe's coordinates: base - z_fol + gx z_x + gy z_y + gphi z_phi (numbers only, so that
+    the per-lobe loops of every step pass no array)."""
+    return base - zfol + gx * zx + gy * zy + gphi * zphi
+
+
+@njit(cache=True)
 def cam_gap(z, zd, j, ix, iy, iphi, ifol, offc, bj, bdj, gxj, gyj, gphij):
     """Cam contact j's compression delta and its rate for displacements z, velocities zd."""
-    d = bj + offc - z[ifol[j]] + gxj * z[ix[j]] + gyj * z[iy[j]] + gphij * z[iphi[j]]
-    dd = bdj - zd[ifol[j]] + gxj * zd[ix[j]] + gyj * zd[iy[j]] + gphij * zd[iphi[j]]
+    d = gap_of(bj + offc, gxj, gyj, gphij, z[ix[j]], z[iy[j]], z[iphi[j]], z[ifol[j]])
+    dd = gap_of(bdj, gxj, gyj, gphij, zd[ix[j]], zd[iy[j]], zd[iphi[j]], zd[ifol[j]])
     return d, dd
 
 
@@ -91,7 +99,7 @@ def _friction_force(fric, work, lay, lob):
 
 
 @njit(cache=True, inline="always")
-def _substep(tau, sys, st, fric, at, x, stagger):
+def _substep(tau, sys, st, fric, at, x, stagger, upd):
     """A Newmark step of length ``tau`` from the state with the contact states fixed, the
     linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
     shaft carries the predicted contact loads (in ``fric``) and the trains take its motion at
@@ -101,7 +109,7 @@ def _substep(tau, sys, st, fric, at, x, stagger):
     lobes, w = lay.ix.size, width(lay)
     a1 = 2.0 / tau
     x0 = np.empty(n)
-    basis = np.zeros((n, w * lobes))
+    basis = np.zeros((w * lobes, n))     # one row per contact coordinate (Stepper.basis)
     K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
     q, v, acc = st.q, st.v, st.acc
     a0 = 4.0 / (tau * tau)
@@ -133,8 +141,9 @@ def _substep(tau, sys, st, fric, at, x, stagger):
         for c in range(len(cols)):
             col = cols[c][0]
             for i in range(size):
-                basis[lo + i, col] = S[i, 1 + c]
+                basis[col, lo + i] = S[i, 1 + c]
     z = np.zeros(w * lobes)     # friction is in the right-hand side already
+    ends = at       # the contacts' inputs at the sub-step's end
     if stagger:     # the shaft's part of x0 is final: no contact column reaches it
         v0 = np.empty(n)
         for i in range(n):
@@ -142,9 +151,9 @@ def _substep(tau, sys, st, fric, at, x, stagger):
         pre = LobeAt(np.empty(lobes), np.empty(lobes), np.zeros(lobes), np.zeros(lobes),
                      np.zeros(lobes))
         prescribed_inputs(x0, v0, at, lay, pre)
-        woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, pre, a1, x, sys.hla)
-        return
-    woodbury(x0, basis, basis_rows(basis, lay), z, lay, sys.uni, st, at, a1, x, sys.hla)
+        ends = pre
+    update(x0, basis, basis_rows(basis, lay), z, x, q, v, st.act_c, st.act_s, st.hp,
+           st.hp_end, ends, a1, upd, contact_laws(sys.uni), sys.hla)
 
 
 @njit(cache=True, inline="always")
@@ -272,7 +281,7 @@ def _split(sys, st, work, at, lob, s, stagger):
         if h <= 1e-12 * dt:
             break
         if switches > 0:   # the full step with the start's states is x, v1 already
-            _substep(h, sys, st, fric, at, x, stagger)
+            _substep(h, sys, st, fric, at, x, stagger, work.upd)
             for i in range(n):
                 work.v1[i] = (2.0 / h) * (x[i] - q[i]) - v[i]
         first, seat, alpha = _first_crossing(sys, st, work, at, lob, s, tau, h)
@@ -288,7 +297,7 @@ def _split(sys, st, work, at, lob, s, stagger):
         hs = alpha * h
         set_inputs(at, lob, s, (tau + hs) / dt, dt)
         if hs > 1e-12 * dt:
-            _substep(hs, sys, st, fric, at, x, stagger)
+            _substep(hs, sys, st, fric, at, x, stagger, work.upd)
             for i in range(n):
                 v[i] = (2.0 / hs) * (x[i] - q[i]) - v[i]
                 q[i] = x[i]
@@ -305,7 +314,7 @@ def _split(sys, st, work, at, lob, s, stagger):
 
 
 @njit(cache=True, inline="always")
-def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
+def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh, laws):
     """Step s of the revolution (:func:`camtrain.coupled._revolution.revolution`): the state
     ``st`` advanced in place, ``at`` every lobe's inputs at the step's end, ``torque`` the
     summed lobe torque of the last step (the belt's pull). ``stagger``: the shaft under the
@@ -314,7 +323,8 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
     contact and friction forces, P = A^-1 M, Q = A^-1 C) is still that of the same start, from
     the step's previous pass. The drive's angular acceleration at the step's end
     (``lob.drive_acc``) loads the twist, measured from the drive, with -J theta''. Returns the
-    contact changes located and whether the step had more than MAX_SWITCHES."""
+    contact changes located and whether the step had more than MAX_SWITCHES. ``laws``: the
+    contact laws as numbers (:func:`contact_laws`)."""
     step, drive, lay = sys.step, sys.drive, sys.lay
     q, v, acc = st.q, st.v, st.acc
     base, hub, zf, x, v1 = work.base, work.hub, work.zf, work.x, work.v1
@@ -345,21 +355,24 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
         zf[w * j] = -work.tang[j] * lob.sina[j]
         zf[w * j + 1] = work.tang[j] * lob.cosa[j]
         zf[w * j + 2] = -work.fr[j] * work.arm[j]
+    ends = at       # the contacts' inputs at the step's end
     if stagger:     # the shaft first, under the predicted loads; the trains on its motion
         add_shaft_loads(zf, work.w_pred, at)
         for i in range(n):
-            total_x = base[i]
-            for c in range(w * lobes):
-                total_x += step.basis[i, c] * zf[c]
-            x[i] = total_x
+            x[i] = base[i]
+        for c in range(w * lobes):
+            zc = zf[c]
+            for i in range(n):
+                x[i] += step.basis[c, i] * zc
+        for i in range(n):
             v1[i] = a1 * (x[i] - q[i]) - v[i]
         prescribed_inputs(x, v1, at, lay, pre)
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, pre, a1, x, sys.hla)
-    else:
-        woodbury(base, step.basis, step.G, zf, lay, sys.uni, st, at, a1, x, sys.hla)
+        ends = pre
+    update(base, step.basis, step.G, zf, x, q, v, st.act_c, st.act_s, st.hp, st.hp_end, ends,
+           a1, work.upd, laws, sys.hla)
     for i in range(n):
         v1[i] = a1 * (x[i] - q[i]) - v[i]
-    if _changes(lay, sys.uni, st, x, v1, at):
+    if _changes(x, v1, st.act_c, st.act_s, work.upd.dof, at, laws):
         return _split(sys, st, work, at, lob, s, stagger)
     for i in range(n):
         acc[i] = a0 * (x[i] - q[i]) - (4.0 / dt) * v[i] - acc[i]
@@ -370,13 +383,18 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh):
 
 
 @njit(cache=True)
-def _changes(lay, uni, st, x, v1, at):
-    """Whether any contact's state differs at the trial step's end (x, v1) from its start."""
-    ix, iy, iphi, ifol, ival = lay.ix, lay.iy, lay.iphi, lay.ifol, lay.ival
-    for j in range(ix.size):
-        pc, _d, _dd, ps, _ds, _dds = _indicators(x, v1, j, ix, iy, iphi, ifol, ival, uni,
-                                                 at.b[j], at.bd[j], at.gx[j], at.gy[j],
-                                                 at.gphi[j])
-        if (pc > 0.0) != st.act_c[j] or (ps > 0.0) != st.act_s[j]:
+def _changes(x, v1, act_c, act_s, dof, at, laws):
+    """Whether any contact's state (``act_c``, ``act_s``) differs at the trial step's end
+    (x, v1) from its start: every lobe's indicators as :func:`_indicators` forms them, from
+    its state indices ``dof`` and the contact laws ``laws`` (:func:`contact_laws`)."""
+    kc, cc, offc, ks, cs, offs = laws
+    for j in range(act_c.size):
+        ix, iy, iphi, ifol, ival = dof[j, 0], dof[j, 1], dof[j, 2], dof[j, 3], dof[j, 4]
+        gx, gy, gphi = at.gx[j], at.gy[j], at.gphi[j]
+        d = gap_of(at.b[j] + offc, gx, gy, gphi, x[ix], x[iy], x[iphi], x[ifol])
+        dd = gap_of(at.bd[j], gx, gy, gphi, v1[ix], v1[iy], v1[iphi], v1[ifol])
+        if (_psi(kc, cc, d, dd) > 0.0) != act_c[j]:
+            return True
+        if (_psi(ks, cs, offs - x[ival], -v1[ival]) > 0.0) != act_s[j]:
             return True
     return False

@@ -121,28 +121,29 @@ def _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R):
 
 
 @njit(cache=True)
-def solve_chambers(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
+def solve_chambers(xc, G, z, coef, lobe_of, small, m, q, v, hp, dof, hla, a1, hp_end):
     """Every lobe's chamber force solved against its contact-corrected extension (the
     module's docstring): ``xc`` the coordinates' values A^-1 r, ``G`` the rows of A^-1 there,
     the closed contacts' rows (``coef``, ``lobe_of``, their small system ``small``, ``m`` of
-    them), the state ``st`` at the step's start, a1 = 2 / step; the forces R F on (plunger,
-    follower) added to ``z``, every chamber's end state into ``hp_end``."""
-    lobes, w, R = lay.ix.size, WIDTH, hla.ratio
+    them), (q, v) and the chambers' states ``hp`` at the step's start, every lobe's state
+    indices ``dof`` (lobes, WIDTH: the follower fourth, the plunger sixth), a1 = 2 / step; the
+    forces R F on (plunger, follower) added to ``z``, every chamber's end state into
+    ``hp_end``."""
+    lobes, w, R = dof.shape[0], WIDTH, hla.ratio
     h = 2.0 / a1
     Sinv = np.linalg.inv(small) if m > 0 else small
     base, _y = _corrected(xc, G, z, coef, lobe_of, Sinv, m, w)
     E = _extension_responses(G, coef, lobe_of, Sinv, m, lobes, R)
-    q, v = st.q, st.v
     X, Xd, x0 = np.empty(lobes), np.empty(lobes), np.empty(lobes)
     for k in range(lobes):
-        f, p = lay.ifol[k], lay.ipl[k]
+        f, p = dof[k, 3], dof[k, 5]
         X[k] = extension(base[w * k + 3], base[w * k + 5], hla)
         vf, vp = a1 * (base[w * k + 3] - q[f]) - v[f], a1 * (base[w * k + 5] - q[p]) - v[p]
         Xd[k] = -R * (vf - vp)
         x0[k] = extension(q[f], q[p], hla)
     F = np.empty(lobes)     # the sweeps start from every chamber's force predicted at the
     for k in range(lobes):  # step's end (its last pressure rate carried over the step), not 0
-        F[k] = plunger_force(st.hp[k, 0] + st.hp[k, 3] * h, x0[k], hla)
+        F[k] = plunger_force(hp[k, 0] + hp[k, 3] * h, x0[k], hla)
     for _ in range(HLA_SWEEPS):
         change, top = 0.0, 0.0
         for j in range(lobes):
@@ -151,12 +152,12 @@ def solve_chambers(xc, G, z, coef, lobe_of, small, m, st, lay, hla, a1, hp_end):
                 if k != j:
                     xj += E[j, k] * F[k]
                     xdj += a1 * E[j, k] * F[k]
-            p1, fj, qin, qout = chamber_step(hla, st.hp[j], x0[j], xj, xdj, E[j, j], h)
+            p1, fj, qin, qout = chamber_step(hla, hp[j], x0[j], xj, xdj, E[j, j], h)
             change = max(change, abs(fj - F[j]))
             top = max(top, abs(fj))
             F[j] = fj
             hp_end[j, 0], hp_end[j, 1], hp_end[j, 2] = p1, qin, qout
-            hp_end[j, 3] = (p1 - st.hp[j, 0]) / h
+            hp_end[j, 3] = (p1 - hp[j, 0]) / h
         if change <= HLA_TOL * max(top, 1.0) or lobes == 1:
             break
     for j in range(lobes):

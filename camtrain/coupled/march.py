@@ -201,19 +201,20 @@ def _revolutions(sysm, lob, path, scheme, state, cycles_max, period_tol):
     With lash adjusters every revolution is followed by the secant rule on every chamber's
     oil content (:func:`.adjusters.accelerate_chambers`), and two revolutions agree when the
     plungers' extensions do as well as the loads (:func:`_change`)."""
+    from ._lowrank import dof_table
     from ._revolution import revolution
     from .adjusters import accelerate_chambers, chamber_contents
 
     n_lobes, grid = lob.b.shape[0], path.theta_grid.size
     out = Samples(np.zeros((n_lobes, grid)), np.zeros((n_lobes, grid)),
                   np.zeros((n_lobes, grid)), np.zeros((n_lobes, 2, grid)))
-    width = 6 if sysm.hla.on else 5
+    dof = dof_table(sysm.lay)
     contents = chamber_contents(sysm.hla, state, sysm.lay) if sysm.hla.on else None
     series = None if contents is None else (contents, None)
     counts = (0, 0, 0)
     previous, change, cycle = None, math.inf, 0
     for cycle in range(1, int(cycles_max) + 1):
-        work, at, pre = workspace(state.q.size, n_lobes, width)
+        work, at, pre = workspace(state.q.size, dof)
         counts = revolution(sysm, lob, path.record(), scheme, state, out, work, at, pre)
         path.after(out.load, out.film)
         if series is not None:
@@ -268,12 +269,12 @@ def _system(asm, train, drive, dt):
     # the plunger, where an adjuster's chamber pushes)
     lay = Layout(asm.ix, asm.iy, asm.iphi, asm.ifol, asm.ival, asm.valve, asm.blocks, ipl)
     width = 6 if hla.on else 5
-    ainv_basis = np.empty((n, width * n_lobes))
+    ainv_basis = np.empty((width * n_lobes, n))      # one row per coordinate (see Stepper)
     for j in range(n_lobes):
         dofs = (asm.ix[j], asm.iy[j], asm.iphi[j], asm.ifol[j], asm.ival[j], ipl[j] if hla.on
                 else -1)
         for k in range(width):
-            ainv_basis[:, width * j + k] = Ainv[:, dofs[k]]
+            ainv_basis[width * j + k, :] = Ainv[:, dofs[k]]
     hub_basis = (np.ascontiguousarray(Ainv[:, [hub_x, hub_y]]) if hub_x >= 0
                  else np.zeros((n, 2)))
     drive_j = np.zeros(n)      # J 1 on the twist coordinates: the drive's inertia load

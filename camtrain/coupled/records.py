@@ -13,8 +13,9 @@ Set once per march:
 
 Set once per revolution: :data:`Friction` (the tables and their correction).
 Carried from step to step: :data:`State`. Written: :data:`Samples`.
-Workspace of one revolution: :data:`Work` and two :data:`LobeAt` (every lobe's inputs at an
-instant of the step, and the staggered step's prescribed inputs).
+Workspace of one revolution: :data:`Work` (with the contact update's :data:`Update`) and two
+:data:`LobeAt` (every lobe's inputs at an instant of the step, and the staggered step's
+prescribed inputs).
 
 A new term of the march is a new field of the record of its lifetime.
 """
@@ -32,8 +33,10 @@ Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks ipl")
 #: the linear part: K, C, M, the block-diagonal inverse of M, the constant forces f0
 Matrices = namedtuple("Matrices", "K C M Minv f0")
 
-#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, A^-1 at
-#: every lobe's five contact coordinates (basis) and its rows there (G)
+#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, the
+#: columns of A^-1 at every lobe's contact coordinates stored as rows (basis, W L x n: the
+#: update's x0 + basis^T z runs along contiguous rows, which the compiler vectorises) and
+#: their entries at those coordinates (G)
 Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 P Q basis G")
 
 #: the drive: hub-load coordinates (x, y; -1 without), direction (cos, sin), pitch radius,
@@ -71,18 +74,29 @@ Samples = namedtuple("Samples", "load acc film hla")
 #: every lobe's inputs at an instant: b, bd, gx, gy, gphi (arrays over the lobes)
 LobeAt = namedtuple("LobeAt", "b bd gx gy gphi")
 
-#: work arrays of a revolution (n: state size, L: lobes)
+#: the low-rank contact update's workspace (:mod:`._lowrank`; W coordinates per lobe, 5 or 6
+#: with lash adjusters): every lobe's state indices ``dof`` (L, W), the closed contacts'
+#: gradients ``coef`` (2 L, W), lobes ``lobe_of`` and stiffnesses ``kk`` (2 L), their small
+#: system ``small`` (flat, (2 L)^2) and its right-hand side ``rhs`` (2 L), the coordinates'
+#: values ``xc`` (W L)
+Update = namedtuple("Update", "dof coef lobe_of kk small xc rhs")
+
+#: work arrays of a revolution (n: state size, L: lobes) and the contact update's (``upd``)
 Work = namedtuple("Work", "rhs_w rhs_c base x v1 a1v fric zf hub fr tang arm b0 bd0 w_pred "
-                          "w_end q_s v_s acc_s c_s s_s hp_s")
+                          "w_end q_s v_s acc_s c_s s_s hp_s upd")
 
 
-def workspace(n: int, lobes: int, width: int = 5):
-    """(Work, the inputs at the step's end, the staggered step's prescribed inputs); ``width``
-    coordinates per lobe in the contact update (6 with lash adjusters)."""
+def workspace(n: int, dof: np.ndarray):
+    """(Work, the inputs at the step's end, the staggered step's prescribed inputs); ``dof``
+    every lobe's state indices in the contact update (lobes, width: 5 coordinates per lobe,
+    6 with lash adjusters)."""
     e, z = np.empty, np.zeros
+    lobes, width = dof.shape
+    upd = Update(dof, z((2 * lobes, width)), z(2 * lobes, dtype=np.int64), z(2 * lobes),
+                 z(4 * lobes * lobes), z(width * lobes), z(2 * lobes))
     work = Work(e(n), e(n), e(n), e(n), e(n), e(n), z(n), z(width * lobes), z(2), z(lobes),
                 z(lobes), z(lobes), e(lobes), e(lobes), z(lobes), z(lobes), e(n), e(n), e(n),
-                e(lobes, dtype=np.bool_), e(lobes, dtype=np.bool_), z((lobes, 4)))
+                e(lobes, dtype=np.bool_), e(lobes, dtype=np.bool_), z((lobes, 4)), upd)
     at = LobeAt(e(lobes), e(lobes), e(lobes), e(lobes), e(lobes))
     pre = LobeAt(e(lobes), e(lobes), z(lobes), z(lobes), z(lobes))
     return work, at, pre
