@@ -239,10 +239,10 @@ def test_kink_stop_projects_only_film_fraction_nodes():
     assert _stopped_at_kink(s, new).tolist() == [0.0, -0.7, 0.0, 0.5, -0.2, 0.4]
 
 
-def test_kink_stop_changes_the_iterations_not_the_films(monkeypatch):
+def _flank_front_with_and_without(monkeypatch, name, replacement):
     """Eight steps of the Goecmen flank's starved outlet front (docs/ehl.md "Where the Newton
-    iterations grow"), 512 points, matrix-free: without the kink stop the same films, to the
-    Newton tolerance (1e-6 on the scaled residual; 1e-5 relative), and more Newton iterations."""
+    iterations grow"), 512 points, matrix-free: marched as shipped, then with ``ehl_step.name``
+    replaced. Returns both cycle results."""
     from dataclasses import replace
 
     from camtrain.lubrication import ehl_step
@@ -250,14 +250,25 @@ def test_kink_stop_changes_the_iterations_not_the_films(monkeypatch):
     full = goecmen_cycle(720)
     part = replace(full, **{k: getattr(full, k)[282:290] for k in ("t", "w", "R", "u", "u_s")})
     res = CycleResolution(nodes=512, linear_solver="krylov")
-    stopped = march_ehl_cycle(part, res)
-    monkeypatch.setattr(ehl_step, "_stopped_at_kink", lambda s, s_new: s_new)
-    crossing = march_ehl_cycle(part, res)
-    assert stopped.split_steps == crossing.split_steps
+    shipped = march_ehl_cycle(part, res)
+    monkeypatch.setattr(ehl_step, name, replacement)
+    return shipped, march_ehl_cycle(part, res)
+
+
+def _same_films_more_iterations(shipped, other):
+    """The same films to the Newton tolerance (1e-6 on the scaled residual; 1e-5 relative) and
+    the same split steps, with more Newton iterations for ``other``."""
+    assert shipped.split_steps == other.split_steps
     for name in ("h_central", "h_min", "p_max"):
-        a, b = getattr(stopped, name), getattr(crossing, name)
+        a, b = getattr(shipped, name), getattr(other, name)
         assert np.abs(a / b - 1.0).max() < 1e-5, name
-    assert stopped.iterations.sum() < crossing.iterations.sum()
+    assert shipped.iterations.sum() < other.iterations.sum()
+
+
+def test_kink_stop_changes_the_iterations_not_the_films(monkeypatch):
+    """Without the kink stop: the same films and more Newton iterations."""
+    _same_films_more_iterations(*_flank_front_with_and_without(
+        monkeypatch, "_stopped_at_kink", lambda s, s_new: s_new))
 
 
 def test_pressure_led_update_moves_film_fraction_nodes_along_the_linear_pressure():
@@ -282,23 +293,9 @@ def test_pressure_led_update_moves_film_fraction_nodes_along_the_linear_pressure
 
 
 def test_pressure_led_update_changes_the_iterations_not_the_films(monkeypatch):
-    """The eight steps of the kink stop's test: updated in s everywhere, the same films to the
-    Newton tolerance (1e-5 relative) and more Newton iterations."""
-    from dataclasses import replace
-
-    from camtrain.lubrication import ehl_step
-
-    full = goecmen_cycle(720)
-    part = replace(full, **{k: getattr(full, k)[282:290] for k in ("t", "w", "R", "u", "u_s")})
-    res = CycleResolution(nodes=512, linear_solver="krylov")
-    led = march_ehl_cycle(part, res)
-    monkeypatch.setattr(ehl_step, "PRESSURE_LED", False)
-    plain = march_ehl_cycle(part, res)
-    assert led.split_steps == plain.split_steps
-    for name in ("h_central", "h_min", "p_max"):
-        a, b = getattr(led, name), getattr(plain, name)
-        assert np.abs(a / b - 1.0).max() < 1e-5, name
-    assert led.iterations.sum() < plain.iterations.sum()
+    """Updated in s everywhere: the same films and more Newton iterations."""
+    _same_films_more_iterations(*_flank_front_with_and_without(monkeypatch, "PRESSURE_LED",
+                                                               False))
 
 
 def test_radius_jump_balance_is_the_row_tolerance_not_the_transfer():
