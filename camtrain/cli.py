@@ -14,6 +14,7 @@ import click
 from camtrain import __version__
 from camtrain.errors import EXIT_INTERNAL, CamtrainError
 from camtrain.interrupts import Terminated, interruptible, terminable
+from camtrain.lazy import resolve
 
 #: --units of the commands that write tables: the deck's units (default) or SI for pipelines
 UNITS_OPTION = dict(type=click.Choice(["deck", "si"]), default="deck", show_default=True,
@@ -68,10 +69,7 @@ class _Group(click.Group):
 
     def get_command(self, ctx, name: str):
         if name in LAZY_COMMANDS and name not in self.commands:
-            import importlib
-
-            module, attribute = LAZY_COMMANDS[name].split(":")
-            command = getattr(importlib.import_module(module), attribute)
+            command = resolve(LAZY_COMMANDS[name])
             assert command.name == name, (name, command.name)   # the table names it right
             self.add_command(command)
         return super().get_command(ctx, name)

@@ -9,7 +9,6 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import functools
-import importlib
 import math
 import types
 import typing
@@ -18,6 +17,7 @@ from dataclasses import dataclass
 from typing import Any, Literal, get_args, get_origin
 
 from camtrain.errors import Problem
+from camtrain.lazy import resolve
 from camtrain.units import UNITS
 
 
@@ -181,8 +181,7 @@ class Shape:
     def section(self) -> type | None:
         """The section's class (a deferred one is imported now), None for a leaf field."""
         if isinstance(self.schema, str):
-            module, name = self.schema.split(":")
-            return getattr(importlib.import_module(module), name)
+            return resolve(self.schema)
         return self.schema
 
 

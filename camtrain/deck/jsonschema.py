@@ -10,7 +10,6 @@ state (equal list lengths, a fit that must converge) is left to camtrain.
 from __future__ import annotations
 
 import dataclasses
-import importlib
 
 from camtrain import __version__
 from camtrain.catalogue import DEFAULT_KIND, KINDS
@@ -24,6 +23,7 @@ from camtrain.deck.fields import (
     deck_key,
     section_fields,
 )
+from camtrain.lazy import resolve
 from camtrain.units import UNITS
 
 #: where a template's ``#:schema`` line points (written by ``camtrain schema --out``)
@@ -150,8 +150,7 @@ def section_schema(cls: type) -> dict:
 
 def kind_schema(name: str) -> dict:
     """The schema of one deck kind (its top-level section, with its ``kind`` key)."""
-    module, cls = KINDS[name].schema.split(":")
-    schema = section_schema(getattr(importlib.import_module(module), cls))
+    schema = section_schema(resolve(KINDS[name].schema))
     kind = {"enum": [name], "description": f"Deck kind ({', '.join(KINDS)})"}
     if name == DEFAULT_KIND:
         kind["default"] = name

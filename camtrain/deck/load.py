@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
-import importlib
 import math
 import tomllib
 from dataclasses import dataclass
@@ -16,6 +15,7 @@ from camtrain.catalogue import DEFAULT_KIND, KINDS
 from camtrain.deck.fields import SchemaPaths, build_section
 from camtrain.deck.schema import Deck
 from camtrain.errors import InputError, Problem
+from camtrain.lazy import resolve
 
 MAX_DECK_BYTES = 20 * 1024 * 1024
 
@@ -82,8 +82,7 @@ def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
     if not isinstance(kind, str) or kind not in KINDS:
         raise InputError(Problem("kind", "is not a known deck kind", kind,
                                  " or ".join(repr(k) for k in KINDS)), source=name)
-    module, cls = KINDS[kind].schema.split(":")
-    schema = getattr(importlib.import_module(module), cls)
+    schema = resolve(KINDS[kind].schema)
     if "kind" in raw and not any(f.name == "kind" for f in dataclasses.fields(schema)):
         raw = {k: v for k, v in raw.items() if k != "kind"}  # a schema without its own kind key
     problems: list[Problem] = []
@@ -92,9 +91,9 @@ def validate(raw: dict, name: str = "", base_dir: Path | None = None) -> Deck:
         raise InputError(problems or [Problem("", "invalid deck")], source=name)
     if isinstance(deck, Deck):
         deck = _resolve_lift_table(deck, base_dir or Path.cwd(), name)
-    resolve = getattr(deck, "resolve_paths", None)
-    if resolve is not None:  # a schema that names other files (an engine's valve-train decks)
-        deck = resolve(base_dir or Path.cwd(), name)
+    resolve_paths = getattr(deck, "resolve_paths", None)
+    if resolve_paths is not None:  # a schema that names other files (an engine's valve-train decks)
+        deck = resolve_paths(base_dir or Path.cwd(), name)
     return deck
 
 

@@ -30,6 +30,7 @@ from camtrain.deck.schema_tribology import (  # noqa: F401
     Tribology,
 )
 from camtrain.errors import Problem
+from camtrain.lazy import resolve
 from camtrain.units import from_si, mm_text
 
 if TYPE_CHECKING:   # deferred sections (fields.section(schema=...)): imported when a deck has them
@@ -55,10 +56,7 @@ DEFERRED = {name: f"camtrain.deck.{module}:{name}" for module, names in (
 
 def __getattr__(name: str):
     if name in DEFERRED:
-        import importlib
-
-        module, attribute = DEFERRED[name].split(":")
-        return getattr(importlib.import_module(module), attribute)
+        return resolve(DEFERRED[name])
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 MECHANISMS = ("flat", "domed", "finger", "rocker", "pushrod", "desmodromic")

@@ -5,6 +5,7 @@ a ``LiftCurve`` (lift, d1, d2, d3 per radian) for any cam angles, periodic over 
 the angle convention of ``camtrain.lift.base``. ``REGISTRY`` maps the deck's form names to the
 classes. Each law's module is imported when its class is first asked for.
 """
+from camtrain.lazy import package_attribute
 from camtrain.lift.base import (
     DEG,
     MM,
@@ -39,16 +40,10 @@ FORMS = {
 
 
 def __getattr__(name: str):
-    if name in _LAZY:
-        import importlib
-
-        value = getattr(importlib.import_module(f"camtrain.lift.{_LAZY[name]}"), name)
-    elif name == "REGISTRY":    # every law's class: imports them all
-        value = {form: __getattr__(cls) for form, cls in FORMS.items()}
-    else:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    globals()[name] = value
-    return value
+    if name == "REGISTRY":      # every law's class: imports them all
+        globals()[name] = {form: __getattr__(cls) for form, cls in FORMS.items()}
+        return globals()[name]
+    return package_attribute(__name__, _LAZY, name, globals())
 
 
 __all__ = [

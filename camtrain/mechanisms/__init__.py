@@ -4,6 +4,7 @@ One module per follower family; every builder returns a :class:`Kinematics` (SI 
 raises :class:`camtrain.errors.GeometryError` when the geometry cannot work. A family's module is
 imported when one of its names is first asked for.
 """
+from camtrain.lazy import package_attribute
 from camtrain.mechanisms.base import ANTICLOCKWISE, CLOCKWISE, Kinematics, TrainKinematics, analyse
 
 # `pivoted` and `desmodromic` name a module and the builder in it: importing the module (from
@@ -25,13 +26,7 @@ _LAZY = {
 
 
 def __getattr__(name: str):
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    import importlib
-
-    value = getattr(importlib.import_module(f"camtrain.mechanisms.{_LAZY[name]}"), name)
-    globals()[name] = value
-    return value
+    return package_attribute(__name__, _LAZY, name, globals())
 
 
 __all__ = [

@@ -129,7 +129,7 @@ def test_the_walk_sees_imports():
 FLOORS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("base", ("__init__", "formulas", "numerics", "progress", "interrupts", "errors", "units",
               "components", "identity_cache", "output_lock", "data", "catalogue", "plan",
-              "display_units", "metric_rows")),
+              "display_units", "metric_rows", "lazy")),
     ("physics", ("lift", "mechanisms", "loads", "dynamics", "contact", "camshaft", "bearings",
                  "engine", "lubrication", "piston", "coupled", "roller")),
     ("deck", ("deck",)),
