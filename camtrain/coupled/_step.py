@@ -13,7 +13,8 @@ uncoupled but for the contacts), again with the contacts as a low-rank update. S
 shaft under the predicted contact loads first, the trains on its motion after
 (:mod:`._partition`). The data come as the records of :mod:`.records`.
 The step's functions that take the whole ``System`` are inlined where they are called
-(``inline="always"``; why: :mod:`._revolution`)."""
+(``inline="always"``), but for the contact change's (:func:`_split`, :func:`_substep`), which
+stay calls (why: :mod:`._revolution`)."""
 from __future__ import annotations
 
 import numpy as np
@@ -99,6 +100,41 @@ def _friction_force(fric, work, lay, lob):
 
 
 @njit(cache=True, inline="always")
+def _block_matrix(mats, lo, hi, a0, a1):
+    """A = K + a1 C + a0 M on the block [lo, hi), in Fortran order: built as A^T row by row
+    from the transposes (:data:`.records.Matrices`; unsigned indices, so the compiler
+    vectorises the rows), which LAPACK reads as A without a transposing copy."""
+    KT, CT, MT = mats.KT, mats.CT, mats.MT
+    ulo, size = np.uint64(lo), np.uint64(hi - lo)
+    AT = np.empty((size, size))
+    for e in range(size):
+        ge = ulo + e
+        for i in range(size):
+            AT[e, i] = KT[ge, ulo + i] + a1 * CT[ge, ulo + i] + a0 * MT[ge, ulo + i]
+    return AT.T
+
+
+@njit(cache=True, inline="always")
+def _block_rhs(mats, fric, wv, cv, lo, hi, columns):
+    """The block [lo, hi)'s right-hand sides: f0 + friction + M wv + C cv in the first column
+    (every row summing its terms in column order), ``columns`` more left zero."""
+    CT, MT, f0 = mats.CT, mats.MT, mats.f0
+    ulo, size = np.uint64(lo), np.uint64(hi - lo)
+    r = np.empty(size)
+    for i in range(size):
+        r[i] = f0[ulo + i] + fric[ulo + i]
+    for e in range(size):
+        ge = ulo + e
+        we, ce = wv[ge], cv[ge]
+        for i in range(size):
+            r[i] += MT[ge, ulo + i] * we + CT[ge, ulo + i] * ce
+    R = np.zeros((size, 1 + columns))
+    for i in range(size):
+        R[i, 0] = r[i]
+    return R
+
+
+@njit(cache=True)
 def _substep(tau, sys, st, fric, at, x, stagger, upd):
     """A Newmark step of length ``tau`` from the state with the contact states fixed, the
     linear part solved block by block (inputs ``at`` at the sub-step's end). ``stagger``: the
@@ -110,9 +146,13 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
     a1 = 2.0 / tau
     x0 = np.empty(n)
     basis = np.zeros((w * lobes, n))     # one row per contact coordinate (Stepper.basis)
-    K, C, M, f0, blocks = sys.mats.K, sys.mats.C, sys.mats.M, sys.mats.f0, lay.blocks
+    blocks = lay.blocks
     q, v, acc = st.q, st.v, st.acc
     a0 = 4.0 / (tau * tau)
+    wv, cv = np.empty(n), np.empty(n)       # what M and C multiply in the right-hand side
+    for i in range(n):
+        wv[i] = a0 * q[i] + (4.0 / tau) * v[i] + acc[i]
+        cv[i] = a1 * q[i] + v[i]
     for k in range(blocks.size - 1):
         lo, hi = blocks[k], blocks[k + 1]
         size = hi - lo
@@ -122,20 +162,10 @@ def _substep(tau, sys, st, fric, at, x, stagger, upd):
             for e in range(w):
                 if lo <= dofs[e] < hi:
                     cols.append((w * j + e, dofs[e]))
-        A = np.empty((size, size))
-        R = np.zeros((size, 1 + len(cols)))
-        for i in range(size):
-            gi = lo + i
-            r = f0[gi] + fric[gi]
-            for e in range(size):
-                ge = lo + e
-                A[i, e] = K[gi, ge] + a1 * C[gi, ge] + a0 * M[gi, ge]
-                r += M[gi, ge] * (a0 * q[ge] + (4.0 / tau) * v[ge] + acc[ge]) \
-                    + C[gi, ge] * (a1 * q[ge] + v[ge])
-            R[i, 0] = r
+        R = _block_rhs(sys.mats, fric, wv, cv, lo, hi, len(cols))
         for c in range(len(cols)):
             R[cols[c][1] - lo, 1 + c] = 1.0
-        S = np.linalg.solve(A, R)
+        S = np.linalg.solve(_block_matrix(sys.mats, lo, hi, a0, a1), R)
         for i in range(size):
             x0[lo + i] = S[i, 0]
         for c in range(len(cols)):
@@ -162,7 +192,7 @@ def _equilibrium(sys, st, fric, at, stagger):
     block-diagonal inverse of M); a sealed incompressible adjuster's chamber restarted
     consistently with it (:mod:`camtrain.coupled.adjuster_step`)."""
     lay, mats, uni = sys.lay, sys.mats, sys.uni
-    K, C, Minv, blocks = mats.K, mats.C, mats.Minv, lay.blocks
+    KT, CT, MinvT, blocks = mats.KT, mats.CT, mats.MinvT, lay.blocks
     q, v, acc = st.q, st.v, st.acc
     kc, cc, ks, cs, offs = uni.k[0], uni.c[0], uni.k[1], uni.c[1], uni.off[1]
     n = q.size
@@ -184,20 +214,22 @@ def _equilibrium(sys, st, fric, at, stagger):
             r[lay.ival[j]] += ks * (offs - q[lay.ival[j]]) - cs * v[lay.ival[j]]
     if sys.hla.on:     # the adjusters' chambers at their pressures: body and plunger apart
         add_chamber_forces(sys.hla, st.hp, q, lay.ifol, lay.ipl, r)
-    for k in range(blocks.size - 1):
-        lo, hi = blocks[k], blocks[k + 1]
+    for k in range(blocks.size - 1):     # row by row of the transposes (see _block_matrix)
+        lo, hi = np.uint64(blocks[k]), np.uint64(blocks[k + 1])
         for i in range(lo, hi):
-            s = r[i]
-            for e in range(lo, hi):
-                s -= K[i, e] * q[e] + C[i, e] * v[e]
-            rb[i] = s
+            rb[i] = r[i]
+        for e in range(lo, hi):
+            qe, ve = q[e], v[e]
+            for i in range(lo, hi):
+                rb[i] -= KT[e, i] * qe + CT[e, i] * ve
         for i in range(lo, hi):
-            s = 0.0
-            for e in range(lo, hi):
-                s += Minv[i, e] * rb[e]
-            acc[i] = s
+            acc[i] = 0.0
+        for e in range(lo, hi):
+            rbe = rb[e]
+            for i in range(lo, hi):
+                acc[i] += MinvT[e, i] * rbe
     if sys.hla.on:      # a sealed incompressible chamber: its pressure is the constraint's
-        restart_sealed(sys.hla, st.hp, acc, Minv, lay.ifol, lay.ipl)
+        restart_sealed(sys.hla, st.hp, acc, mats.Minv, lay.ifol, lay.ipl)
 
 
 @njit(cache=True)
@@ -255,7 +287,7 @@ def _first_crossing(sys, st, work, at, lob, s, tau, h):
     return first, seat, alpha
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _split(sys, st, work, at, lob, s, stagger):
     """The step split at every contact change inside it (at most MAX_SWITCHES): returns the
     changes located and whether there were more. The sub-steps carry friction, the belt's
@@ -335,13 +367,15 @@ def advance(s, sys, st, work, at, pre, lob, torque, stagger, fresh, laws):
         for i in range(n):
             rhs_w[i] = a0 * q[i] + (4.0 / dt) * v[i] + acc[i]
             rhs_c[i] = a1 * q[i] + v[i]
+        PT, QT, x_f0 = step.PT, step.QT, step.x_f0
         for k in range(blocks.size - 1):
-            lo, hi = blocks[k], blocks[k + 1]
+            lo, hi = np.uint64(blocks[k]), np.uint64(blocks[k + 1])
             for i in range(lo, hi):
-                total = step.x_f0[i]
-                for e in range(lo, hi):
-                    total += step.P[i, e] * rhs_w[e] + step.Q[i, e] * rhs_c[e]
-                base[i] = total
+                base[i] = x_f0[i]
+            for e in range(lo, hi):
+                rw, rc = rhs_w[e], rhs_c[e]
+                for i in range(lo, hi):
+                    base[i] += PT[e, i] * rw + QT[e, i] * rc
         if drive.x >= 0:      # the belt's torque-dependent pull at the drive station
             pull = abs(torque) / drive.radius
             hub[0], hub[1] = pull * drive.cos, pull * drive.sin

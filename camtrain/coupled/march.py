@@ -279,10 +279,12 @@ def _system(asm, train, drive, dt):
                  else np.zeros((n, 2)))
     drive_j = np.zeros(n)      # J 1 on the twist coordinates: the drive's inertia load
     drive_j[asm.t0:asm.tr0] = M[asm.t0:asm.tr0, asm.t0:asm.tr0].sum(axis=1)
-    step = Stepper(dt, a0, a1, x_f0, P, Q, ainv_basis, basis_rows(ainv_basis, lay))
+    tr = np.ascontiguousarray      # the step's products run along rows of the transposes
+    step = Stepper(dt, a0, a1, x_f0, tr(P.T), tr(Q.T), ainv_basis, basis_rows(ainv_basis, lay))
     hub = Drive(hub_x, hub_y, hub_dir[0], hub_dir[1], hub_radius, hub_basis, drive_j,
                 Ainv @ drive_j)
-    sysm = System(lay, Matrices(K, C, M, Minv, f0), step, hub, unilateral(train), hla)
+    sysm = System(lay, Matrices(tr(K.T), tr(C.T), tr(M.T), Minv, tr(Minv.T), f0), step, hub,
+                  unilateral(train), hla)
     return sysm, f0, None if hub_x < 0 else (hub_radius, hub_dir, f0[hub_x], f0[hub_y])
 
 

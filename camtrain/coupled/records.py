@@ -30,14 +30,18 @@ import numpy as np
 #: lobe's lash-adjuster plunger (ipl; empty without adjusters)
 Layout = namedtuple("Layout", "ix iy iphi ifol ival valve blocks ipl")
 
-#: the linear part: K, C, M, the block-diagonal inverse of M, the constant forces f0
-Matrices = namedtuple("Matrices", "K C M Minv f0")
+#: the linear part: K, C, M transposed (KT, CT, MT), the block-diagonal inverse of M (Minv)
+#: and its transpose (MinvT), the constant forces f0. The step's block products run along
+#: rows of the transposes (contiguous, so the compiler vectorises them); every entry of a
+#: product sums its terms in the same order as a row of the matrix would
+Matrices = namedtuple("Matrices", "KT CT MT Minv MinvT f0")
 
-#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M, Q = A^-1 C, the
+#: the full Newmark step: dt, a0 = 4/dt^2, a1 = 2/dt, A^-1 f0, P = A^-1 M and Q = A^-1 C
+#: transposed (PT, QT: see Matrices), the
 #: columns of A^-1 at every lobe's contact coordinates stored as rows (basis, W L x n: the
 #: update's x0 + basis^T z runs along contiguous rows, which the compiler vectorises) and
 #: their entries at those coordinates (G)
-Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 P Q basis G")
+Stepper = namedtuple("Stepper", "dt a0 a1 x_f0 PT QT basis G")
 
 #: the drive: hub-load coordinates (x, y; -1 without), direction (cos, sin), pitch radius,
 #: A^-1 at the two coordinates (basis); J 1 on the twist (j) and A^-1 of it (u)
