@@ -1,4 +1,5 @@
-"""Compile time of the shaft-and-trains revolution alone (docs/performance.md, "First run").
+"""Compile time and warm speed of the shaft-and-trains revolution alone (docs/performance.md,
+"First run" and "Before and after the one-chain redesign").
 
 The arguments of a deck's first revolution are saved once (``save``: the deck runs until the
 march calls :func:`camtrain.coupled._revolution.revolution`), then every ``measure`` runs in a
@@ -8,6 +9,13 @@ code before and after, on the same saved arguments, a new cache per measurement:
 
     PYTHONPATH=. python benchmarks/coupled_compile.py save DECK ARGS
     PYTHONPATH=. python benchmarks/coupled_compile.py measure ARGS [ARGS ...]
+
+``warm`` times the revolution alone with the kernels cached (the disk cache of the checkout
+on ``PYTHONPATH``): one call to load them, then ``CALLS`` calls each on a fresh copy of the
+saved arguments (the revolution changes its state in place); it prints the minimum and median
+CPU time of a call:
+
+    PYTHONPATH=. python benchmarks/coupled_compile.py warm ARGS [CALLS]
 
 The saved arguments are the records of :mod:`camtrain.coupled.records`: code whose records
 changed needs them saved again.
@@ -71,6 +79,24 @@ def _measure_here(paths: list[str]) -> dict:
     return {"runs": rows, "several_signatures": several}
 
 
+def warm(path: str, calls: int = 20) -> None:
+    """The revolution of the saved arguments ``path`` called ``calls`` times, warm."""
+    from camtrain.coupled import _revolution
+
+    with open(path, "rb") as handle:
+        data = handle.read()
+    _revolution.revolution(*pickle.loads(data))
+    times = []
+    for _ in range(calls):
+        args = pickle.loads(data)
+        start = time.process_time()
+        _revolution.revolution(*args)
+        times.append(time.process_time() - start)
+    times.sort()
+    print(f"{os.path.basename(path)}: revolution warm, {calls} calls: min "
+          f"{1e3 * times[0]:.1f} ms, median {1e3 * times[len(times) // 2]:.1f} ms CPU")
+
+
 def measure(paths: list[str]) -> None:
     """Each call in a new process with an empty numba cache of its own."""
     with tempfile.TemporaryDirectory() as cache:
@@ -86,6 +112,8 @@ if __name__ == "__main__":
         save(rest[0], rest[1])
     elif mode == "measure":
         measure(rest)
+    elif mode == "warm":
+        warm(rest[0], int(rest[1]) if len(rest) > 1 else 20)
     elif mode == "_here":
         print(json.dumps(_measure_here(rest)))
     else:
