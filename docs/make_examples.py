@@ -315,16 +315,23 @@ def _num(x: float | None, digits: int = 4) -> str:
     return fmt(x, digits)
 
 
+def _execute(model):
+    """Run a validated deck (tests/golden/test_generated_docs.py hands in the test session's
+    shared runs instead: the decks other tests run too are run once)."""
+    from camtrain import api
+
+    return api.run(model)
+
+
 @functools.cache
 def _run(path: Path, sets: tuple[str, ...] = ()):
-    """(loaded deck, result or None, the error that stopped it or ""), once per deck and sets
-    (tests/golden/test_generated_docs.py hands in the test session's runs instead)."""
+    """(loaded deck, result or None, the error that stopped it or ""), once per deck and sets."""
     from camtrain import api
     from camtrain.errors import CamtrainError
 
     loaded = api.load(path, sets)
     try:
-        return loaded, api.run(loaded), ""
+        return loaded, _execute(loaded.model), ""
     except CamtrainError as exc:
         return loaded, None, str(exc)
 
@@ -437,7 +444,7 @@ def _run_raw(raw: dict, name: str):
 
     from camtrain import api
 
-    return api.run(api.loads(tomli_w.dumps(raw), name))
+    return _execute(api.loads(tomli_w.dumps(raw), name).model)
 
 
 def roller_saving_section(result) -> list[str]:

@@ -31,9 +31,19 @@ def test_each_asker_gets_its_own_copy_of_the_one_run():
     assert np.array_equal(third["lift"], own["lift"])
 
 
-def test_the_runs_warnings_reach_every_asker(tmp_path, monkeypatch):
-    deck = tmp_path / "warns.toml"    # a path of its own: a run no other test shares
-    deck.write_text(FLAT.read_text(encoding="utf-8"), encoding="utf-8")
+def test_equal_models_share_one_run():
+    """The shipped deck (2500 rpm) and the same deck with that speed set are one model, one run;
+    another speed is another run."""
+    _, shipped = run_deck(FLAT)
+    _, same = run_deck(FLAT, ("speed.camshaft=2500",))
+    _, other = run_deck(FLAT, ("speed.camshaft=2400",))
+    assert api.load(FLAT, ("speed.camshaft=2500",)).model == api.load(FLAT).model
+    assert same.timings == shipped.timings      # the same run, its timings too
+    assert other.metrics["power_loss_mean"].value != shipped.metrics["power_loss_mean"].value
+
+
+def test_the_runs_warnings_reach_every_asker(monkeypatch):
+    deck, sets = FLAT, ("speed.camshaft=1234.5",)    # a model no other test runs
     run = api.run
 
     def warning_run(loaded, progress=None):
@@ -42,10 +52,10 @@ def test_the_runs_warnings_reach_every_asker(tmp_path, monkeypatch):
 
     monkeypatch.setattr(api, "run", warning_run)
     with pytest.warns(UserWarning, match="a run that warns"):
-        run_deck(deck)
+        run_deck(deck, sets)
     with pytest.warns(UserWarning, match="a run that warns"):
-        run_deck(deck)      # from the cache
+        run_deck(deck, sets)      # from the cache
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         with pytest.raises(UserWarning, match="a run that warns"):
-            run_deck(deck)
+            run_deck(deck, sets)

@@ -19,7 +19,7 @@ import pytest
 from camtrain import api
 from camtrain.deck.load import validate
 from tests.conftest import DECKS
-from tests.shared_runs import run_deck
+from tests.shared_runs import run_model
 
 ZETA = DECKS / "zeta_engine.toml"
 #: Yang Table 7.1 [kW]: bearings, valve train, piston assembly, accessories, total
@@ -52,20 +52,14 @@ def _raw() -> dict:
 
 @cache
 def run_at(rpm: int):
-    """The deck at ``rpm``: the session's run (tests/shared_runs.py), which
-    docs/piston.md's generated FLAME table (tests/golden/test_generated_docs.py) and
-    tests/engine/test_zeta_correlations.py read too; the model is zeta(speed__engine=rpm)."""
-    return run_deck(ZETA, (f"speed.engine={rpm}",))[1]
+    """The deck at ``rpm``: the session's run of that model (tests/shared_runs.py), which
+    tests/engine/test_zeta_correlations.py and docs/piston.md's generated FLAME table
+    (tests/golden/test_generated_docs.py) read too."""
+    return run_model(zeta(speed__engine=float(rpm)))
 
 
 def kw(rpm: int, name: str) -> float:
     return run_at(rpm).metrics[name].value / 1e3
-
-
-def test_the_speed_set_on_the_deck_is_the_changed_deck():
-    """run_at's deck (speed.engine set as on the command line) is the model zeta() builds."""
-    for rpm in SPEEDS:
-        assert api.load(ZETA, (f"speed.engine={rpm}",)).model == zeta(speed__engine=float(rpm))
 
 
 @pytest.mark.derived

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.shared_runs import run_deck
+from tests.shared_runs import run_model
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -19,21 +19,8 @@ def make_examples():
                                                   ROOT / "docs" / "make_examples.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    module._run = _session_run   # the deck runs other tests make too are made once
+    module._execute = run_model   # the deck runs other tests make too are made once
     return module
-
-
-def _session_run(path: Path, sets: tuple[str, ...] = ()):
-    """make_examples._run on the test session's runs (tests/shared_runs.py): the same
-    (loaded deck, result or None, error) from the same ``api.run(api.load(path, sets))``."""
-    from camtrain import api
-    from camtrain.errors import CamtrainError
-
-    try:
-        loaded, result = run_deck(path, sets)
-    except CamtrainError as exc:
-        return api.load(path, sets), None, str(exc)
-    return loaded, result, ""
 
 
 def _first_difference(page: str, now: str) -> str:
