@@ -315,16 +315,33 @@ def _num(x: float | None, digits: int = 4) -> str:
     return fmt(x, digits)
 
 
+def _execute(model):
+    """Run a validated deck (tests/golden/test_generated_docs.py hands in the test session's
+    shared runs instead: the decks other tests run too are run once)."""
+    from camtrain import api
+
+    return api.run(model)
+
+
 @functools.cache
 def _run(path: Path, sets: tuple[str, ...] = ()):
+    """(loaded deck, result or None, the error that stopped it or ""), once per deck and sets."""
     from camtrain import api
     from camtrain.errors import CamtrainError
 
     loaded = api.load(path, sets)
     try:
-        return loaded, api.run(loaded), ""
+        return loaded, _execute(loaded.model), ""
     except CamtrainError as exc:
         return loaded, None, str(exc)
+
+
+def _metrics(path: Path, sets: tuple[str, ...] = ()) -> dict:
+    """The metrics of a deck run with ``sets``; stops with the deck's error."""
+    _, result, error = _run(path, sets)
+    if error:
+        raise SystemExit(f"{path.stem} {' '.join(sets)}: {error}")
+    return result.metrics
 
 
 def _picks(stem: str) -> list[tuple[str, str, str]]:
@@ -427,18 +444,16 @@ def _run_raw(raw: dict, name: str):
 
     from camtrain import api
 
-    return api.run(api.loads(tomli_w.dumps(raw), name))
+    return _execute(api.loads(tomli_w.dumps(raw), name).model)
 
 
 def roller_saving_section(result) -> list[str]:
     """The friction of Harrison's cam on the flat tappet, the locked roller and the turning
     roller (inertial and quasi-static), and the turning roller's loss by part."""
-    from camtrain import api
-
     deck = ROOT / "decks" / "harrison_roller_needle.toml"
-    flat = api.run(api.load(ROOT / "decks" / "harrison_flat.toml")).metrics
-    locked = api.run(api.load(ROOT / "decks" / "harrison_roller.toml")).metrics
-    quasi = api.run(api.load(deck, ("roller.solver=quasi_static",))).metrics
+    flat = _metrics(ROOT / "decks" / "harrison_flat.toml")
+    locked = _metrics(ROOT / "decks" / "harrison_roller.toml")
+    quasi = _metrics(deck, ("roller.solver=quasi_static",))
     m = result.metrics
     rows = [("flat tappet (decks/harrison_flat.toml)", flat, None),
             ("roller locked: sliding cylinder (decks/harrison_roller.toml)", locked, None),
@@ -478,14 +493,12 @@ def finger_comparison_section(result) -> list[str]:
     35(2):261, 1992): the same deck with the roller turning, locked, and as a sliding pad."""
     import tomllib
 
-    from camtrain import api
-
     deck = ROOT / "decks" / "roller_finger.toml"
     raw = tomllib.loads(deck.read_text(encoding="utf-8"))
     raw.pop("roller")
     sliding = _run_raw(raw, "roller_finger_sliding.toml").metrics
-    locked = api.run(api.load(deck, ("roller.pin=locked",))).metrics
-    inertial = api.run(api.load(deck, ("roller.solver=inertial",))).metrics
+    locked = _metrics(deck, ("roller.pin=locked",))
+    inertial = _metrics(deck, ("roller.solver=inertial",))
     m = result.metrics
     rows = [("sliding pad of the roller's radius (no [roller])", sliding, None),
             ("roller locked (roller.pin = locked)", locked, None),
@@ -668,10 +681,7 @@ def flame_rows() -> dict[int, tuple[float, ...]]:
     """camtrain's FLAME columns [kW] and fmep [kPa] of the Zeta engine at each speed of Table 7.1."""
     rows = {}
     for rpm in YANG_TABLE_7_1:
-        _, result, error = _run(ROOT / "decks" / "zeta_engine.toml", (f"speed.engine={rpm}",))
-        if error:
-            raise SystemExit(f"zeta_engine at {rpm} rpm: {error}")
-        m = result.metrics
+        m = _metrics(ROOT / "decks" / "zeta_engine.toml", (f"speed.engine={rpm}",))
         rows[rpm] = tuple(m[k].value / 1e3 for k in _FLAME) + (m["fmep"].value / 1e3,)
     return rows
 

@@ -22,6 +22,20 @@ SHIPPED = [("harrison_flat.toml", (1.0, 4.0), True),      # symmetric four-power
            ("rover_2300_rocker.toml", (0.5, 3.0), False)]  # asymmetric exponential fit
 
 
+@pytest.fixture(scope="module", autouse=True)
+def _one_blas_thread():
+    """The lift design's SLSQP on one BLAS thread (threadpoolctl; scipy loaded first so that its
+    OpenBLAS is among those limited). Its small dense solves in a loop gain nothing from a second
+    thread, which spins between calls and, on a busy two-core machine, waits for a core: the
+    Rover design below took 19-28 s there for 0.5-1 s of work. The designs are checked for their
+    properties, not pinned numbers, so the thread count cannot change an outcome."""
+    import scipy.optimize  # noqa: F401
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1, user_api="blas"):
+        yield
+
+
 def _deck_with(tmp_path: Path, deck: str, section: dict) -> Path:
     raw = tomllib.loads((DECKS / deck).read_text(encoding="utf-8"))
     raw["design"] = section

@@ -19,6 +19,7 @@ import pytest
 from camtrain import api
 from camtrain.deck.load import validate
 from tests.conftest import DECKS
+from tests.shared_runs import run_model
 
 ZETA = DECKS / "zeta_engine.toml"
 #: Yang Table 7.1 [kW]: bearings, valve train, piston assembly, accessories, total
@@ -51,7 +52,10 @@ def _raw() -> dict:
 
 @cache
 def run_at(rpm: int):
-    return api.run(zeta(speed__engine=float(rpm)))
+    """The deck at ``rpm``: the session's run of that model (tests/shared_runs.py), which
+    tests/engine/test_zeta_correlations.py and docs/piston.md's generated FLAME table
+    (tests/golden/test_generated_docs.py) read too."""
+    return run_model(zeta(speed__engine=float(rpm)))
 
 
 def kw(rpm: int, name: str) -> float:

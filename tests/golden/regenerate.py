@@ -78,11 +78,13 @@ def variant_model(name: str):
     return validate(raw, name, DECKS)
 
 
-def snapshot(path: Path) -> tuple[dict, dict[str, np.ndarray]]:
-    """Run one deck; its readable part (dict) and its per-angle columns (name -> array)."""
+def snapshot(path: Path, result=None) -> tuple[dict, dict[str, np.ndarray]]:
+    """Run one deck (unless its ``result`` is given); its readable part (dict) and its
+    per-angle columns (name -> array)."""
     import camtrain.api as ct
 
-    result = ct.run(variant_model(path.stem) if path.stem in VARIANTS else path)
+    if result is None:
+        result = ct.run(variant_model(path.stem) if path.stem in VARIANTS else path)
     flat = flat_columns(result)
     meta = {
         "deck": path.name,

@@ -16,6 +16,7 @@ from camtrain import api
 from camtrain.catalogue import kind_of
 from camtrain.report.display import fmt
 from tests.conftest import DECKS
+from tests.shared_runs import run_deck
 
 DECK_FILES = sorted(p.name for p in DECKS.glob("*.toml"))
 
@@ -35,8 +36,7 @@ def test_deck_outputs_render_and_parse(name, tmp_path, monkeypatch):
         panels[path.stem] = axes_drawn(fig)
 
     monkeypatch.setattr(canvas, "save_png", checked_save_png)
-    loaded = api.load(DECKS / name)
-    result = api.run(loaded)
+    loaded, result = run_deck(DECKS / name)   # the session's run of the deck (golden, docs)
     written = api.write(result, loaded, tmp_path, 0.0, plots="pdf")
     assert set(problems) == {p.name for p in written if p.suffix == ".png"}
     assert {k: v for k, v in problems.items() if v} == {}
