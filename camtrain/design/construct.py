@@ -38,6 +38,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from camtrain.numerics.blas_threads import one_blas_thread
+
 #: fraction of the ramp's lift over which its velocity rises from zero
 RAMP_RISE = 1.0 / 3.0
 #: collocation points per knot span for the limits, and the margin they keep
@@ -138,6 +140,7 @@ def _basis(t: np.ndarray, x: np.ndarray, nu: int) -> np.ndarray:
     return BSpline(t, np.eye(n), DEGREE, extrapolate=False)(x, nu=nu)
 
 
+@one_blas_thread()     # small dense solves in a loop: see camtrain.numerics.blas_threads
 def design_lift(ev: Events) -> Designed:
     """The least-jerk-energy quintic spline meeting ``ev``; raises DesignInfeasible.
 

@@ -5,11 +5,13 @@ second. OpenBLAS spreads each factorisation over every core and spins its thread
 at these sizes the spinning and the hand-over cost more CPU than the parallel work saves (steady
 line contact on 1,024 points: 0.148 s of CPU on two threads, 0.078 s on one, same result), and a
 sweep or a sensitivity study already keeps every core busy with its own cases. The solvers that
-factor small dense matrices in a loop therefore run inside :func:`one_blas_thread`.
+factor small dense matrices in a loop therefore run inside :func:`one_blas_thread`: the elastic
+film's and the lift design's (its quadratic programmes, through scipy's LAPACK).
 
 The thread pools are found and limited with threadpoolctl (the library scikit-learn and joblib use
 for this; it knows OpenBLAS, MKL and BLIS), not by environment variables, which only act before
-numpy is loaded.
+numpy is loaded. scipy carries an OpenBLAS of its own beside numpy's, and threadpoolctl limits only
+the libraries loaded when its controller is made, so scipy's linear algebra is loaded first.
 """
 from __future__ import annotations
 
@@ -19,6 +21,7 @@ from functools import lru_cache
 
 @lru_cache(maxsize=1)
 def _controller():
+    import scipy.linalg  # noqa: F401  (scipy's own OpenBLAS loaded, so that it is limited too)
     from threadpoolctl import ThreadpoolController
 
     return ThreadpoolController()

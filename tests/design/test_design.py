@@ -22,20 +22,6 @@ SHIPPED = [("harrison_flat.toml", (1.0, 4.0), True),      # symmetric four-power
            ("rover_2300_rocker.toml", (0.5, 3.0), False)]  # asymmetric exponential fit
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _one_blas_thread():
-    """The lift design's SLSQP on one BLAS thread (threadpoolctl; scipy loaded first so that its
-    OpenBLAS is among those limited). Its small dense solves in a loop gain nothing from a second
-    thread, which spins between calls and, on a busy two-core machine, waits for a core: the
-    Rover design below took 19-28 s there for 0.5-1 s of work. The designs are checked for their
-    properties, not pinned numbers, so the thread count cannot change an outcome."""
-    import scipy.optimize  # noqa: F401
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(limits=1, user_api="blas"):
-        yield
-
-
 def _deck_with(tmp_path: Path, deck: str, section: dict) -> Path:
     raw = tomllib.loads((DECKS / deck).read_text(encoding="utf-8"))
     raw["design"] = section
@@ -54,6 +40,36 @@ def designed(request, tmp_path_factory):
     path = _deck_with(tmp_path_factory.mktemp("design"), deck, section)
     out = path.parent / "out"
     return section, ct.design(path, out, plots=False), out
+
+
+def test_the_design_runs_on_one_blas_thread(monkeypatch, tmp_path):
+    """Its small dense solves in a loop gain nothing from a second BLAS thread, which spins
+    between calls and, on a busy two-core machine, waits for a core (the Rover design took
+    19-28 s there for 0.5-1 s of work): inside the design every BLAS library loaded, scipy's own
+    beside numpy's, has one thread, and after it the counts it had before."""
+    import scipy.linalg  # noqa: F401  (its OpenBLAS loaded: the counts before include it)
+    from threadpoolctl import threadpool_info
+
+    from camtrain.design import construct
+    from camtrain.design.command import events_of
+
+    def blas_threads():
+        return [lib["num_threads"] for lib in threadpool_info() if lib["user_api"] == "blas"]
+
+    seen = []
+
+    def look(ev, end_open, end_close):
+        seen.append(blas_threads())
+        raise construct.DesignInfeasible("only a look inside the design")
+
+    section, _ = read_events("harrison_flat.toml", (1.0, 4.0), True)
+    ev = events_of(ct.load(_deck_with(tmp_path, "harrison_flat.toml", section)).model)[0]
+    monkeypatch.setattr(construct, "_design_at", look)
+    before = blas_threads()
+    with pytest.raises(construct.DesignInfeasible):
+        construct.design_lift(ev)
+    assert len(seen[0]) >= 2 and set(seen[0]) == {1}
+    assert blas_threads() == before
 
 
 def test_every_event_met_within_its_tolerance(designed):

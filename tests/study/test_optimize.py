@@ -20,20 +20,6 @@ ROLLER = DECKS / "harrison_roller.toml"
 STEP = 1e-3        # the default finite-difference step, a fraction of each variable's range
 
 
-@pytest.fixture
-def one_blas_thread():
-    """The lift designs on one BLAS thread (threadpoolctl; scipy loaded first so that its
-    OpenBLAS is among those limited), as tests/design/test_design.py's: their small dense solves
-    in a loop gain nothing from a second thread, which on a busy two-core machine waits for a
-    core (this test took 11-13 s there for 2-3 s of work). The optimum is checked against its own
-    rerun in the same process, so the thread count cannot change an outcome."""
-    import scipy.optimize  # noqa: F401
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(limits=1, user_api="blas"):
-        yield
-
-
 @pytest.mark.derived
 def test_base_radius_optimum_is_balls_smallest_radius_for_a_convex_flank():
     """Friction falls with the base radius (Ball 1988 Ch 5), so under "no concave flank" the
@@ -215,7 +201,7 @@ def test_dask_scheduler_gives_the_serial_optimum():
     assert dask.evaluations == serial.evaluations
 
 
-def test_design_events_as_variables_redesign_the_lift(tmp_path, one_blas_thread):
+def test_design_events_as_variables_redesign_the_lift(tmp_path):
     import tomllib
 
     import tomli_w
